@@ -1,0 +1,49 @@
+#pragma once
+// The constant-velocity Kalman filter baseline: a linear KF on position + velocity and an
+// error-state KF on orientation + body-frame angular velocity; it predicts through gaps.
+
+#include "core/estimator.h"
+#include "estimators/cv_kalman_options.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace opf {
+
+class ConstantVelocityKalman final : public Estimator {
+ public:
+  /// Throws std::invalid_argument naming the first option that is not a positive finite number.
+  explicit ConstantVelocityKalman(const CvKalmanOptions& options);
+
+  std::string_view name() const override { return "cvkf"; }
+
+  /// Position and orientation from the measurement with the observation covariance; velocities
+  /// zero with the initial_*_std priors.
+  Estimate initialise(double t, const mrpt::poses::CPose3D& first_measurement) override;
+
+  /// Throws std::logic_error before initialise() and std::invalid_argument when `t` does not
+  /// follow the previous time; the filter is unchanged in both cases.
+  Estimate step(double t, const mrpt::poses::CPose3D* measurement,
+                const EnsembleView& ensemble) override;
+
+ private:
+  using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+  void predict(double dt);
+  void update(const mrpt::poses::CPose3D& measurement);
+  Estimate make_estimate(EstimateMode mode) const;
+
+  CvKalmanOptions options_;
+  bool initialised_ = false;
+  double t_ = 0.0;
+
+  Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
+  Matrix6 translation_covariance_ = Matrix6::Identity();  ///< over (position, velocity)
+
+  Eigen::Quaterniond orientation_ = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d angular_velocity_ = Eigen::Vector3d::Zero();  ///< body frame
+  Matrix6 rotation_covariance_ = Matrix6::Identity();  ///< over the error state (dtheta, dw)
+};
+
+}  // namespace opf

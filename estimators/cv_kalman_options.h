@@ -1,0 +1,19 @@
+#pragma once
+// Options of the constant-velocity Kalman filter baseline.
+
+namespace opf {
+
+struct CvKalmanOptions {
+  /// White-noise acceleration densities (continuous-time, per axis): m/s^2/sqrt(Hz) and
+  /// rad/s^2/sqrt(Hz). They set how fast the covariance grows while predicting through a gap.
+  double acceleration_noise = 0.5;
+  double angular_acceleration_noise = 1.0;
+  /// Observation noise standard deviation per axis, m and rad (tangent space).
+  double observation_noise_translation = 0.01;
+  double observation_noise_rotation = 0.05;
+  /// Prior standard deviation of the (unknown) velocities at the first detection.
+  double initial_velocity_std = 0.5;
+  double initial_angular_velocity_std = 1.0;
+};
+
+}  // namespace opf

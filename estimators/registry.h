@@ -1,0 +1,19 @@
+#pragma once
+// Builds any estimator by its registry name ("pf", "cvkf", ...) with its options.
+
+#include "core/tracker.h"
+#include "estimators/estimator_settings.h"
+
+#include <string>
+#include <vector>
+
+namespace opf {
+
+/// The names `make_estimator_factory` accepts, in the order tables list them.
+std::vector<std::string> estimator_names();
+
+/// A factory for the Tracker. Throws std::invalid_argument naming the known estimators when
+/// `name` is unknown.
+EstimatorFactory make_estimator_factory(const std::string& name, const EstimatorSettings& settings);
+
+}  // namespace opf

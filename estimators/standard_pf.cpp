@@ -1,0 +1,46 @@
+#include "estimators/standard_pf.h"
+
+#include "core/pose_conversion.h"
+
+#include <sstream>
+#include <stdexcept>
+
+namespace opf {
+
+StandardParticleFilter::StandardParticleFilter(const PoseParticleFilterOptions& options,
+                                               std::uint64_t seed)
+    : filter_(options, seed) {}
+
+Estimate StandardParticleFilter::initialise(double t, const mrpt::poses::CPose3D& first) {
+  filter_.initialise(translation_of(first), orientation_of(first));
+  last_t_ = t;
+  initialised_ = true;
+  last_report_ = {};
+  return make_estimate(t, EstimateMode::kMeasured);
+}
+
+Estimate StandardParticleFilter::step(double t, const mrpt::poses::CPose3D* measurement,
+                                      const EnsembleView& /*ensemble*/) {
+  if (!initialised_) throw std::logic_error("StandardParticleFilter::step before initialise");
+  if (!(t > last_t_)) {
+    std::ostringstream msg;
+    msg << "StandardParticleFilter: time " << t << " s does not follow " << last_t_ << " s";
+    throw std::invalid_argument(msg.str());
+  }
+  filter_.predict(t - last_t_);
+  last_t_ = t;
+  if (measurement) filter_.reweight(translation_of(*measurement), orientation_of(*measurement));
+  last_report_ = filter_.normalise_and_resample();
+  return make_estimate(t, measurement ? EstimateMode::kMeasured : EstimateMode::kPredicted);
+}
+
+Estimate StandardParticleFilter::make_estimate(double t, EstimateMode mode) const {
+  Estimate estimate;
+  estimate.t = t;
+  estimate.pose = filter_.estimate();
+  estimate.observation_trace = filter_.observation_trace();
+  estimate.mode = mode;
+  return estimate;
+}
+
+}  // namespace opf

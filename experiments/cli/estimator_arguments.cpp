@@ -1,0 +1,29 @@
+#include "estimator_arguments.h"
+
+#include "estimators/estimator_settings_yaml.h"
+
+namespace opf::cli {
+
+std::vector<OptionSpec> estimator_option_specs() {
+  return {
+      {"config", "FILE.yaml", "estimator options (see experiments/configs/estimators.yaml)"},
+      {"particles", "N", "particles per portion (translation and rotation); default 5000"},
+      {"seed", "S", "seed of every random draw; the same seed gives identical output (default 1)"},
+  };
+}
+
+EstimatorSettings settings_from(const Arguments& args) {
+  EstimatorSettings settings;
+  if (const auto path = args.get("config")) settings = load_estimator_settings(*path);
+  if (const auto particles = args.get_count("particles")) {
+    if (*particles == 0) throw UsageError{"option '--particles' must be at least 1"};
+    settings.pf.translation_particles = settings.pf.rotation_particles = *particles;
+  }
+  return settings;
+}
+
+std::uint64_t seed_from(const Arguments& args) {
+  return args.get_count("seed").value_or(kDefaultSeed);
+}
+
+}  // namespace opf::cli

@@ -1,0 +1,12 @@
+#pragma once
+// `opf evaluate`: replays a measurement log through every estimator over several seeds and prints
+// the error table against a ground-truth file (the main job until `opf reproduce` lands).
+
+#include <string>
+#include <vector>
+
+namespace opf::cli {
+
+int evaluate_command(const std::vector<std::string>& args);
+
+}  // namespace opf::cli

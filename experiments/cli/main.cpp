@@ -1,0 +1,48 @@
+// The `opf` command-line program: `opf <command> [options]`, `opf <command> --help`.
+
+#include "arguments.h"
+#include "evaluate_command.h"
+#include "track_command.h"
+
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* kHelp =
+    "Usage: opf <command> [options]\n"
+    "\n"
+    "Object Permanence Filter toolkit.\n"
+    "\n"
+    "Commands:\n"
+    "  track      replay a measurement log through one estimator and write its estimates\n"
+    "  evaluate   compare every estimator against ground truth over several seeds\n"
+    "\n"
+    "Run 'opf <command> --help' for a command's options.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> all(argv + 1, argv + argc);
+  if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
+    std::cout << kHelp;
+    return all.empty() ? 2 : 0;
+  }
+  const std::string& command = all[0];
+  const std::vector<std::string> rest(all.begin() + 1, all.end());
+  try {
+    if (command == "track") return opf::cli::track_command(rest);
+    if (command == "evaluate") return opf::cli::evaluate_command(rest);
+    std::cerr << "opf: unknown command '" << command << "'\n\n" << kHelp;
+    return 2;
+  } catch (const opf::cli::UsageError& error) {
+    std::cerr << "opf " << command << ": " << error.message << " (see 'opf " << command
+              << " --help')\n";
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << "opf " << command << ": error: " << error.what() << "\n";
+    return 1;
+  }
+}

@@ -1,0 +1,11 @@
+#pragma once
+// `opf track`: replays a measurement log through one estimator and writes its estimates.
+
+#include <string>
+#include <vector>
+
+namespace opf::cli {
+
+int track_command(const std::vector<std::string>& args);
+
+}  // namespace opf::cli

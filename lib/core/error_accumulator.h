@@ -1,0 +1,38 @@
+#pragma once
+// Accumulates an estimator's per-frame errors against ground truth over one run and returns the
+// paper's "error distance" (mean over frames), overall and over the frames without a measurement.
+
+#include "core/estimate.h"
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <cstddef>
+
+namespace opf {
+
+struct RunErrors {
+  double translation = 0.0;        ///< m, mean over frames
+  double rotation_paper = 0.0;     ///< rad, Euler-angle difference norm (paper Sec. IV-A)
+  double rotation_geodesic = 0.0;  ///< rad, angle of R_est^T R_true
+  /// Mean translation error over the frames whose estimate had no real measurement (0 if none).
+  double translation_unobserved = 0.0;
+  std::size_t frames = 0;
+  std::size_t unobserved_frames = 0;
+};
+
+class ErrorAccumulator {
+ public:
+  void add(const Estimate& estimate, const mrpt::poses::CPose3D& truth);
+  /// Throws std::logic_error when nothing was added.
+  RunErrors result() const;
+
+ private:
+  double translation_ = 0.0;
+  double rotation_paper_ = 0.0;
+  double rotation_geodesic_ = 0.0;
+  double translation_unobserved_ = 0.0;
+  std::size_t frames_ = 0;
+  std::size_t unobserved_frames_ = 0;
+};
+
+}  // namespace opf

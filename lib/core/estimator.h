@@ -1,0 +1,39 @@
+#pragma once
+// The interface every estimator implements (standard PF, OPF, constant-velocity Kalman, ...).
+// A Tracker owns one estimator per object and steps them frame by frame.
+
+#include "core/estimate.h"
+#include "core/frame.h"
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <span>
+#include <string_view>
+
+namespace opf {
+
+/// Read-only view of the whole ensemble at the frame being processed: the current detections of
+/// every object and every object's estimate from the previous frame. Estimators that reason about
+/// other objects (the OPF's occluder module) read it; the others ignore it.
+struct EnsembleView {
+  const Frame& frame;
+  std::span<const Estimate> previous_estimates;
+};
+
+class Estimator {
+ public:
+  virtual ~Estimator() = default;
+
+  /// The registry name, e.g. "pf" or "cvkf".
+  virtual std::string_view name() const = 0;
+
+  /// Starts the estimate at the object's first detection and returns the estimate for that frame.
+  virtual Estimate initialise(double t, const mrpt::poses::CPose3D& first_measurement) = 0;
+
+  /// Advances to time `t` (seconds, later than the previous call) and returns the estimate.
+  /// `measurement` is nullptr when the object is unobserved in this frame.
+  virtual Estimate step(double t, const mrpt::poses::CPose3D* measurement,
+                        const EnsembleView& ensemble) = 0;
+};
+
+}  // namespace opf

@@ -1,0 +1,31 @@
+#pragma once
+// A Frame: the pose detections of one time instant. Objects absent from it are unobserved.
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace opf {
+
+/// One object's measured 6-DoF pose at a frame's time.
+struct Detection {
+  std::string object;
+  mrpt::poses::CPose3D pose;
+};
+
+/// The detections that share one timestamp (seconds). An object with no detection is unobserved.
+struct Frame {
+  double t = 0.0;
+  std::vector<Detection> detections;
+
+  /// The detection of `object`, or nullptr when the object is unobserved in this frame.
+  const Detection* find(std::string_view object) const {
+    for (const auto& d : detections)
+      if (d.object == object) return &d;
+    return nullptr;
+  }
+};
+
+}  // namespace opf

@@ -1,0 +1,46 @@
+#include "core/tracker.h"
+
+#include "particles/random.h"
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+namespace opf {
+
+Tracker::Tracker(EstimatorFactory factory, std::uint64_t seed)
+    : factory_(std::move(factory)), seed_(seed) {
+  if (!factory_) throw std::invalid_argument("Tracker: no estimator factory");
+}
+
+const std::vector<Estimate>& Tracker::step(const Frame& frame) {
+  if (has_stepped_ && !(frame.t > last_t_)) {
+    std::ostringstream msg;
+    msg << "Tracker: frame time " << frame.t << " s does not follow the previous frame at "
+        << last_t_ << " s";
+    throw std::invalid_argument(msg.str());
+  }
+  has_stepped_ = true;
+  last_t_ = frame.t;
+
+  // Every estimator sees the same, previous-frame picture of the others, whatever the order.
+  const std::vector<Estimate> previous = estimates_;
+  const EnsembleView view{frame, previous};
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    const Detection* detection = frame.find(objects_[i]);
+    estimates_[i] = estimators_[i]->step(frame.t, detection ? &detection->pose : nullptr, view);
+  }
+  for (const Detection& detection : frame.detections) {
+    if (std::find(objects_.begin(), objects_.end(), detection.object) != objects_.end()) continue;
+    const std::uint64_t object_seed = derive_seed(seed_, objects_.size());
+    objects_.push_back(detection.object);
+    estimators_.push_back(factory_(detection.object, object_seed));
+    Estimate first = estimators_.back()->initialise(frame.t, detection.pose);
+    first.object = detection.object;
+    estimates_.push_back(std::move(first));
+  }
+  for (std::size_t i = 0; i < objects_.size(); ++i) estimates_[i].object = objects_[i];
+  return estimates_;
+}
+
+}  // namespace opf

@@ -1,0 +1,41 @@
+#pragma once
+// The Tracker: one estimator per object, created at the object's first detection, stepped frame by
+// frame. Objects are kept in order of first appearance, which makes runs deterministic.
+
+#include "core/estimate.h"
+#include "core/estimator.h"
+#include "core/frame.h"
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace opf {
+
+/// Builds the estimator of one object. `seed` is derived per object from the tracker's seed.
+using EstimatorFactory =
+    std::function<std::unique_ptr<Estimator>(const std::string& object, std::uint64_t seed)>;
+
+class Tracker {
+ public:
+  Tracker(EstimatorFactory factory, std::uint64_t seed);
+
+  /// Steps every known object through `frame` (timestamps must increase) and returns one estimate
+  /// per object seen so far, in order of first appearance.
+  const std::vector<Estimate>& step(const Frame& frame);
+
+  const std::vector<Estimate>& estimates() const { return estimates_; }
+
+ private:
+  EstimatorFactory factory_;
+  std::uint64_t seed_;
+  std::vector<std::string> objects_;
+  std::vector<std::unique_ptr<Estimator>> estimators_;
+  std::vector<Estimate> estimates_;
+  bool has_stepped_ = false;
+  double last_t_ = 0.0;
+};
+
+}  // namespace opf

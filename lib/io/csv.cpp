@@ -1,0 +1,187 @@
+#include "io/csv.h"
+
+#include "io/input_error.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+namespace opf::csv {
+
+namespace {
+
+constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
+
+bool is_blank(char c) {
+  return c == ' ' || c == '\t';
+}
+
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
+  while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+std::string join_quoted(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "'" : ", '") + name + "'";
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> split_line(std::string_view text, const std::string& source,
+                                    std::size_t line) {
+  std::vector<std::string> fields;
+  std::size_t i = 0;
+  while (true) {
+    while (i < text.size() && is_blank(text[i])) ++i;
+    std::string field;
+    if (i < text.size() && text[i] == '"') {
+      const std::size_t open = i++;
+      bool closed = false;
+      while (i < text.size() && !closed) {
+        if (text[i] != '"') {
+          field += text[i++];
+        } else if (i + 1 < text.size() && text[i + 1] == '"') {
+          field += '"';
+          i += 2;
+        } else {
+          ++i;
+          closed = true;
+        }
+      }
+      if (!closed)
+        throw InputError(source, line, "",
+                         "field " + std::to_string(fields.size() + 1) +
+                             ": unterminated double quote opened at character " +
+                             std::to_string(open + 1));
+      while (i < text.size() && is_blank(text[i])) ++i;
+      if (i < text.size() && text[i] != ',')
+        throw InputError(source, line, "",
+                         "field " + std::to_string(fields.size() + 1) +
+                             ": expected a comma after the closing quote, got '" + text[i] + "'");
+    } else {
+      const std::size_t comma = std::min(text.find(',', i), text.size());
+      field = trim(text.substr(i, comma - i));
+      i = comma;
+    }
+    fields.push_back(std::move(field));
+    if (i >= text.size()) return fields;
+    ++i;  // past the comma
+  }
+}
+
+std::optional<double> parse_double(std::string_view text) {
+  // from_chars rejects a leading '+', which some exporters write.
+  if (text.size() > 1 && text.front() == '+' && text[1] != '-') text.remove_prefix(1);
+  double value = 0.0;
+  const char* const end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end) return std::nullopt;
+  return value;
+}
+
+std::string format_double(double value) {
+  char buffer[64];
+  const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
+  if (ec != std::errc()) throw std::logic_error("format_double: buffer too small");
+  return std::string(buffer, ptr);
+}
+
+std::string quote_if_needed(std::string_view text) {
+  if (text.find_first_of("\r\n") != std::string_view::npos)
+    throw std::invalid_argument("a CSV field cannot hold a line break: \"" + std::string(text) +
+                                "\"");
+  const bool needs_quotes = text.find_first_of(",\"") != std::string_view::npos ||
+                            (!text.empty() && (is_blank(text.front()) || is_blank(text.back())));
+  if (!needs_quotes) return std::string(text);
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+Reader::Reader(std::istream& in, std::string source,
+               std::span<const std::string_view> required_columns)
+    : in_(in), source_(std::move(source)) {
+  std::vector<std::string> required(required_columns.begin(), required_columns.end());
+  if (!read_line(header_)) {
+    std::string names;
+    for (const auto& name : required) names += (names.empty() ? "" : ",") + name;
+    throw InputError(source_, 0, "",
+                     "empty file: expected a header line with the columns " + names);
+  }
+  header_line_ = line_;
+
+  std::vector<std::string> missing;
+  for (const auto& name : required) {
+    const auto count = std::count(header_.begin(), header_.end(), name);
+    if (count == 0) missing.push_back(name);
+    if (count > 1) fail("column '" + name + "' appears more than once in the header");
+  }
+  if (!missing.empty()) {
+    // A log without a header has numbers where the names should be: say so.
+    const bool none_found = missing.size() == required.size();
+    fail("missing required column" + std::string(missing.size() > 1 ? "s " : " ") +
+         join_quoted(missing) + " (the header has " + join_quoted(header_) + ")" +
+         (none_found ? "; is the header line missing?" : ""));
+  }
+}
+
+std::size_t Reader::column(std::string_view name) const {
+  const auto it = std::find(header_.begin(), header_.end(), name);
+  if (it == header_.end())
+    throw std::out_of_range("csv::Reader: no column '" + std::string(name) + "' in " + source_);
+  return static_cast<std::size_t>(it - header_.begin());
+}
+
+bool Reader::next() {
+  if (!read_line(fields_)) return false;
+  if (fields_.size() != header_.size())
+    fail("expected " + std::to_string(header_.size()) + " fields as in the header (line " +
+         std::to_string(header_line_) + "), got " + std::to_string(fields_.size()));
+  return true;
+}
+
+double Reader::number(std::size_t column) const {
+  const double value = number_or_non_finite(column);
+  if (!std::isfinite(value))
+    fail(column, "expected a finite number, got \"" + field(column) + "\"");
+  return value;
+}
+
+double Reader::number_or_non_finite(std::size_t column) const {
+  const auto value = parse_double(field(column));
+  if (!value) fail(column, "expected a number, got \"" + field(column) + "\"");
+  return *value;
+}
+
+void Reader::fail(std::size_t column, const std::string& message) const {
+  throw InputError(source_, line_, header_.at(column), message);
+}
+
+void Reader::fail(const std::string& message) const {
+  throw InputError(source_, line_, "", message);
+}
+
+bool Reader::read_line(std::vector<std::string>& fields) {
+  std::string text;
+  while (std::getline(in_, text)) {
+    ++lines_read_;
+    std::string_view view = text;
+    if (lines_read_ == 1 && view.starts_with(kUtf8Bom)) view.remove_prefix(kUtf8Bom.size());
+    if (view.ends_with('\r')) view.remove_suffix(1);
+    if (trim(view).empty()) continue;
+    line_ = lines_read_;
+    fields = split_line(view, source_, line_);
+    return true;
+  }
+  if (in_.bad())
+    throw InputError(source_, 0, "", "read error after line " + std::to_string(lines_read_));
+  return false;
+}
+
+}  // namespace opf::csv

@@ -1,0 +1,89 @@
+#include "io/estimate_csv.h"
+
+#include "core/pose_conversion.h"
+#include "io/csv.h"
+#include "io/input_error.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+#include <utility>
+
+namespace opf {
+
+namespace {
+
+constexpr std::array<std::string_view, 11> kReadColumns = {
+    "t", "object", "x", "y", "z", "qx", "qy", "qz", "qw", "trace", "mode"};
+// Written quaternions are unit to rounding; the log reader's tolerance still catches edited files.
+constexpr double kQuaternionNormTolerance = 0.01;
+
+}  // namespace
+
+void write_estimate_header(std::ostream& out) {
+  out << "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll\n";
+}
+
+void write_estimate_row(std::ostream& out, const Estimate& estimate) {
+  const mrpt::poses::CPose3D& mean = estimate.pose.mean;
+  Eigen::Quaterniond q = orientation_of(mean);
+  // q and -q are the same rotation; one sign makes files comparable. Adding 0.0 turns -0 into 0.
+  if (q.w() < 0.0) q.coeffs() = -q.coeffs();
+  const double qw = q.w() + 0.0;
+
+  std::string row = csv::format_double(estimate.t);
+  row += ',' + csv::quote_if_needed(estimate.object);
+  for (const double value :
+       {mean.x(), mean.y(), mean.z(), q.x(), q.y(), q.z(), qw, estimate.observation_trace})
+    row += ',' + csv::format_double(value);
+  row += ',';
+  row += to_string(estimate.mode);
+  for (int i = 0; i < 6; ++i) row += ',' + csv::format_double(std::sqrt(estimate.pose.cov(i, i)));
+  out << row << '\n';
+}
+
+std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path) {
+  // Reading a directory "succeeds" with no content, which would read as an empty file.
+  std::error_code ignored;
+  if (std::filesystem::is_directory(path, ignored))
+    throw InputError(path.string(), 0, "", "expected an estimate file, got a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(path.string(), 0, "",
+                     std::string("cannot open the estimate file: ") + std::strerror(errno));
+  csv::Reader reader(in, path.string(), kReadColumns);
+  std::array<std::size_t, kReadColumns.size()> column{};
+  for (std::size_t i = 0; i < kReadColumns.size(); ++i) column[i] = reader.column(kReadColumns[i]);
+
+  std::vector<EstimateRecord> records;
+  while (reader.next()) {
+    EstimateRecord record;
+    record.t = reader.number(column[0]);
+    record.object = reader.field(column[1]);
+    if (record.object.empty())
+      reader.fail(column[1], "expected an object name, got an empty field");
+    std::array<double, 7> pose{};
+    for (std::size_t i = 0; i < pose.size(); ++i) pose[i] = reader.number(column[2 + i]);
+    const Eigen::Quaterniond q(pose[6], pose[3], pose[4], pose[5]);
+    if (!(std::abs(q.norm() - 1.0) <= kQuaternionNormTolerance))
+      throw InputError(reader.source(), reader.line(), "qx,qy,qz,qw",
+                       "expected a unit quaternion, got norm " + csv::format_double(q.norm()));
+    record.pose = make_pose(Eigen::Vector3d(pose[0], pose[1], pose[2]), q);
+    // Non-finite traces are legitimate output (e.g. an estimator with no observation model).
+    record.trace = reader.number_or_non_finite(column[9]);
+    record.mode = reader.field(column[10]);
+    if (record.mode.empty())
+      reader.fail(column[10], "expected an estimate mode, got an empty field");
+    records.push_back(std::move(record));
+  }
+  return records;
+}
+
+}  // namespace opf

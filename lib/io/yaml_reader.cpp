@@ -1,0 +1,229 @@
+#include "io/yaml_reader.h"
+
+#include "io/input_error.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <optional>
+#include <system_error>
+#include <utility>
+
+namespace opf {
+
+namespace {
+
+constexpr auto kKey = InputError::FieldKind::kKey;
+
+std::size_t line_of(const YAML::Node& node) {
+  const YAML::Mark mark = node.Mark();
+  return mark.is_null() || mark.line < 0 ? 0 : static_cast<std::size_t>(mark.line) + 1;
+}
+
+/// How the value reads in a message: the scalar as written, or what kind of node it is.
+std::string describe(const YAML::Node& node) {
+  if (node.IsScalar()) return "\"" + node.Scalar() + "\"";
+  if (node.IsMap()) return "a mapping";
+  if (node.IsSequence()) return "a sequence";
+  return "nothing";
+}
+
+std::string_view without_plus(std::string_view text) {
+  if (text.size() > 1 && text.front() == '+' && text[1] != '-') text.remove_prefix(1);
+  return text;
+}
+
+/// A finite number in C-locale syntax, the whole text consumed; YAML's .inf and .nan are refused.
+std::optional<double> to_number(std::string_view text) {
+  text = without_plus(text);
+  double value = 0.0;
+  const char* const end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+std::optional<std::size_t> to_count(std::string_view text) {
+  text = without_plus(text);
+  std::size_t value = 0;
+  const char* const end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (ec != std::errc() || ptr != end) return std::nullopt;
+  return value;
+}
+
+/// Optimal-string-alignment distance: insertions, deletions, substitutions and swaps of two
+/// neighbours, the usual typos, each cost 1.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + substitution});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+}  // namespace
+
+YamlReader YamlReader::parse(const std::string& text, const std::string& source) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    const std::size_t line = e.mark.is_null() ? 0 : static_cast<std::size_t>(e.mark.line) + 1;
+    throw InputError(source, line, "", "invalid YAML: " + e.msg);
+  }
+  if (root.IsDefined() && !root.IsNull() && !root.IsMap())
+    throw InputError(source, line_of(root), "",
+                     "expected a mapping of settings at the top level, got " + describe(root));
+  return YamlReader(root, "", source);
+}
+
+YamlReader::YamlReader(const YAML::Node& node, std::string key_path, std::string source)
+    : key_path_(std::move(key_path)), source_(std::move(source)) {
+  if (!node.IsDefined() || node.IsNull()) return;
+  line_ = line_of(node);
+  if (!node.IsMap())
+    throw InputError(source_, line_, key_path_, "expected a mapping, got " + describe(node), kKey);
+  for (const auto& pair : node) {
+    const std::size_t line = line_of(pair.first);
+    if (!pair.first.IsScalar())
+      throw InputError(source_, line, key_path_, "expected a key name, got " + describe(pair.first),
+                       kKey);
+    const std::string& key = pair.first.Scalar();
+    for (const auto& entry : entries_)
+      if (entry.key == key)
+        throw InputError(source_, line, this->key_path(key),
+                         "key given twice (first on line " + std::to_string(entry.line) + ")",
+                         kKey);
+    entries_.push_back({key, pair.second, line, false});
+  }
+}
+
+void YamlReader::get(std::string_view key, double& out) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  const auto value = to_number(scalar(*entry, "a number"));
+  if (!value) fail(key, "expected a finite number, got " + describe(entry->value));
+  out = *value;
+}
+
+void YamlReader::get(std::string_view key, std::size_t& out) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  const auto value = to_count(scalar(*entry, "a non-negative integer"));
+  if (!value) fail(key, "expected a non-negative integer, got " + describe(entry->value));
+  out = *value;
+}
+
+void YamlReader::get(std::string_view key, bool& out) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  scalar(*entry, "true or false");
+  bool value = false;
+  if (!YAML::convert<bool>::decode(entry->value, value))
+    fail(key, "expected true or false, got " + describe(entry->value));
+  out = value;
+}
+
+void YamlReader::get(std::string_view key, std::string& out) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  out = scalar(*entry, "a string");
+}
+
+void YamlReader::get_positive(std::string_view key, double& out) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  const auto value = to_number(scalar(*entry, "a positive number"));
+  if (!value || !(*value > 0.0))
+    fail(key, "expected a positive number, got " + describe(entry->value));
+  out = *value;
+}
+
+void YamlReader::get_positive(std::string_view key, std::size_t& out) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  const auto value = to_count(scalar(*entry, "a positive integer"));
+  if (!value || *value < 1) fail(key, "expected a positive integer, got " + describe(entry->value));
+  out = *value;
+}
+
+void YamlReader::require(std::string_view key, bool ok, const std::string& expectation) const {
+  const Entry* entry = peek(key);
+  if (entry != nullptr && !ok)
+    fail(key, "expected " + expectation + ", got " + describe(entry->value));
+}
+
+YamlReader& YamlReader::child(std::string_view key) {
+  const std::string path = key_path(key);
+  for (const auto& existing : children_)
+    if (existing->key_path_ == path) return *existing;
+  const Entry* entry = find(key);
+  children_.push_back(
+      std::make_unique<YamlReader>(entry ? entry->value : YAML::Node(), path, source_));
+  return *children_.back();
+}
+
+void YamlReader::finish() const {
+  for (const auto& entry : entries_) {
+    if (entry.read) continue;
+    std::string message = "unknown key";
+    const auto closest = std::min_element(
+        known_keys_.begin(), known_keys_.end(), [&](const std::string& a, const std::string& b) {
+          return edit_distance(entry.key, a) < edit_distance(entry.key, b);
+        });
+    // Only a near miss is worth suggesting; otherwise list what would have been understood.
+    if (closest != known_keys_.end() &&
+        edit_distance(entry.key, *closest) <= std::max<std::size_t>(2, closest->size() / 3)) {
+      message += "; did you mean '" + *closest + "'?";
+    } else if (!known_keys_.empty()) {
+      message += "; expected one of ";
+      for (const auto& known : known_keys_)
+        message.append(&known == &known_keys_.front() ? "'" : ", '").append(known).append("'");
+    }
+    throw InputError(source_, entry.line, key_path(entry.key), message, kKey);
+  }
+  for (const auto& child : children_) child->finish();
+}
+
+void YamlReader::fail(std::string_view key, const std::string& message) const {
+  const Entry* entry = peek(key);
+  throw InputError(source_, entry ? entry->line : line_, key_path(key), message, kKey);
+}
+
+std::string YamlReader::key_path(std::string_view key) const {
+  return key_path_.empty() ? std::string(key) : key_path_ + "." + std::string(key);
+}
+
+const YamlReader::Entry* YamlReader::find(std::string_view key) {
+  if (std::find(known_keys_.begin(), known_keys_.end(), key) == known_keys_.end())
+    known_keys_.emplace_back(key);
+  for (auto& entry : entries_) {
+    if (entry.key == key) {
+      entry.read = true;
+      return &entry;
+    }
+  }
+  return nullptr;
+}
+
+const YamlReader::Entry* YamlReader::peek(std::string_view key) const {
+  for (const auto& entry : entries_)
+    if (entry.key == key) return &entry;
+  return nullptr;
+}
+
+std::string YamlReader::scalar(const Entry& entry, const std::string& expectation) const {
+  if (!entry.value.IsScalar())
+    fail(entry.key, "expected " + expectation + ", got " + describe(entry.value));
+  return entry.value.Scalar();
+}
+
+}  // namespace opf

@@ -1,0 +1,81 @@
+#pragma once
+// Reads a YAML mapping into an options struct with precise errors: wrong types, out-of-range values
+// and misspelt keys are reported with the full key path, the line and a suggestion.
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace opf {
+
+/// Usage: read every key the struct knows with get() (only keys present in the file are
+/// assigned, so defaults stay), descend with child(), then call finish() on the top-level reader to
+/// reject the keys nobody read. Every error is an InputError naming `source`, the line and the key
+/// path, e.g. `pf.resampling.scheme`.
+class YamlReader {
+ public:
+  /// Parses a document whose top level is a mapping; an empty document is an empty mapping.
+  /// Throws InputError with the line on a YAML syntax error or another kind of top level.
+  static YamlReader parse(const std::string& text, const std::string& source);
+
+  /// Wraps `node`, found at `key_path` ("" for the top level) of `source`. A null node reads as an
+  /// empty mapping; any other non-mapping, or a key given twice, throws InputError.
+  YamlReader(const YAML::Node& node, std::string key_path, std::string source);
+
+  /// Assigns `out` when `key` is present. Throws InputError when the value is not of the type:
+  /// a finite number, a non-negative integer, a boolean (true/false, yes/no, on/off), a scalar.
+  void get(std::string_view key, double& out);
+  void get(std::string_view key, std::size_t& out);
+  void get(std::string_view key, bool& out);
+  void get(std::string_view key, std::string& out);
+
+  /// get() that also requires out > 0 (for counts: out >= 1).
+  void get_positive(std::string_view key, double& out);
+  void get_positive(std::string_view key, std::size_t& out);
+
+  /// For checks get() cannot express: when `key` is present and `ok` is false, throws InputError
+  /// "expected <expectation>, got <the value as written>".
+  void require(std::string_view key, bool ok, const std::string& expectation) const;
+
+  /// The nested mapping at `key` (an empty one when absent). Owned by this reader, which checks it
+  /// in finish().
+  YamlReader& child(std::string_view key);
+
+  /// Throws InputError for the first key present in the file but never read here or in a child,
+  /// suggesting the closest known key by edit distance ("did you mean 'scheme'?").
+  void finish() const;
+
+  /// Throws InputError at `key`'s line (the mapping's when absent) naming its full path.
+  [[noreturn]] void fail(std::string_view key, const std::string& message) const;
+
+  /// `key` prefixed with this mapping's path: "pf.resampling" + "scheme" -> "pf.resampling.scheme".
+  std::string key_path(std::string_view key) const;
+
+ private:
+  struct Entry {
+    std::string key;
+    YAML::Node value;
+    std::size_t line = 0;  ///< 1-based line of the key
+    bool read = false;
+  };
+
+  /// The entry of `key` (marked read), or nullptr when absent; `key` becomes a known key either
+  /// way.
+  const Entry* find(std::string_view key);
+  const Entry* peek(std::string_view key) const;
+  /// The scalar text of a present key, InputError when it is a mapping, sequence or null.
+  std::string scalar(const Entry& entry, const std::string& expectation) const;
+
+  std::string key_path_;
+  std::string source_;
+  std::size_t line_ = 0;  ///< of the mapping itself; 0 when absent from the file
+  std::vector<Entry> entries_;
+  std::vector<std::string> known_keys_;
+  std::vector<std::unique_ptr<YamlReader>> children_;
+};
+
+}  // namespace opf

@@ -1,0 +1,19 @@
+#pragma once
+// The measurement update of paper Eq. 4-5: each particle's weight is multiplied by the Gaussian
+// likelihood of the measurement, N(y; g(x), Q), with g the identity on the pose and Q = variance I
+// per portion (rotation residuals in the particle's tangent space). The normalising constant is
+// the same for every particle, so only the exponent is added to the log-weights.
+
+#include "particles/particle_portion.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace opf {
+
+void reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                       double variance);
+void reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
+                       double variance);
+
+}  // namespace opf

@@ -1,0 +1,125 @@
+#include "particles/pose_particle_filter.h"
+
+#include "core/pose_conversion.h"
+#include "particles/gaussian_likelihood.h"
+#include "particles/random_walk_model.h"
+#include "particles/resampling.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace opf {
+namespace {
+
+void require_positive(double value, const char* name) {
+  if (!(value > 0.0) || !std::isfinite(value))
+    throw std::invalid_argument(std::string("particle filter option ") + name +
+                                " must be a positive number, got " + std::to_string(value));
+}
+
+template <int Dim>
+bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted,
+                                  const ResamplingOptions& options, Random& random, double& ess,
+                                  bool& resampled) {
+  const bool usable = portion.weights.normalise();
+  ess = portion.weights.effective_sample_fraction();
+  resampled = false;
+  if (reweighted && should_resample(options, ess)) {
+    portion.resample(
+        resample_indices(portion.weights.linear(), portion.size(), options.scheme, random));
+    resampled = true;
+  }
+  return usable;
+}
+
+}  // namespace
+
+void validate(const PoseParticleFilterOptions& options) {
+  if (options.translation_particles == 0 || options.rotation_particles == 0)
+    throw std::invalid_argument("particle filter options: particle counts must be at least 1");
+  require_positive(options.process_noise_translation, "process_noise.translation");
+  require_positive(options.process_noise_rotation, "process_noise.rotation");
+  require_positive(options.observation_noise_translation, "observation_noise.translation");
+  require_positive(options.observation_noise_rotation, "observation_noise.rotation");
+  if (!(options.resampling.ess_threshold > 0.0 && options.resampling.ess_threshold <= 1.0))
+    throw std::invalid_argument(
+        "particle filter option resampling.ess_threshold must be in (0, 1]");
+}
+
+PoseParticleFilter::PoseParticleFilter(const PoseParticleFilterOptions& options, std::uint64_t seed)
+    : options_(options), random_(seed) {
+  validate(options_);
+  translation_.resize(options_.translation_particles);
+  rotation_.resize(options_.rotation_particles);
+}
+
+void PoseParticleFilter::initialise(const Eigen::Vector3d& position,
+                                    const Eigen::Quaterniond& orientation) {
+  scatter_around(translation_, position, options_.observation_noise_translation, random_);
+  scatter_around(rotation_, orientation, options_.observation_noise_rotation, random_);
+  translation_reweighted_ = rotation_reweighted_ = false;
+}
+
+void PoseParticleFilter::predict(double dt) {
+  predict_translation(dt);
+  predict_rotation(dt);
+}
+
+void PoseParticleFilter::predict_translation(double dt) {
+  if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
+  predict_random_walk(translation_, options_.process_noise_translation * std::sqrt(dt), random_);
+}
+
+void PoseParticleFilter::predict_rotation(double dt) {
+  if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
+  predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), random_);
+}
+
+void PoseParticleFilter::reweight(const Eigen::Vector3d& position,
+                                  const Eigen::Quaterniond& orientation, double covariance_scale) {
+  reweight_translation(position, covariance_scale);
+  reweight_rotation(orientation, covariance_scale);
+}
+
+void PoseParticleFilter::reweight_translation(const Eigen::Vector3d& position,
+                                              double covariance_scale) {
+  const double sigma = options_.observation_noise_translation;
+  reweight_gaussian(translation_, position, covariance_scale * sigma * sigma);
+  translation_reweighted_ = true;
+}
+
+void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation,
+                                           double covariance_scale) {
+  const double sigma = options_.observation_noise_rotation;
+  reweight_gaussian(rotation_, orientation, covariance_scale * sigma * sigma);
+  rotation_reweighted_ = true;
+}
+
+ResampleReport PoseParticleFilter::normalise_and_resample() {
+  ResampleReport report;
+  const bool translation_ok =
+      normalise_and_maybe_resample(translation_, translation_reweighted_, options_.resampling,
+                                   random_, report.ess_translation, report.resampled_translation);
+  const bool rotation_ok =
+      normalise_and_maybe_resample(rotation_, rotation_reweighted_, options_.resampling, random_,
+                                   report.ess_rotation, report.resampled_rotation);
+  report.weights_recovered = !translation_ok || !rotation_ok;
+  translation_reweighted_ = translation_reweighted_ && !report.resampled_translation;
+  rotation_reweighted_ = rotation_reweighted_ && !report.resampled_rotation;
+  return report;
+}
+
+mrpt::poses::CPose3DPDFGaussian PoseParticleFilter::estimate() const {
+  const TranslationMoments t = translation_moments();
+  const RotationMoments r = rotation_moments();
+  return make_pose_pdf(t.mean, t.covariance, r.mean, r.tangent_covariance);
+}
+
+double PoseParticleFilter::observation_trace(double covariance_scale) const {
+  const double t_sigma = options_.observation_noise_translation;
+  const double r_sigma = options_.observation_noise_rotation;
+  return covariance_scale * 3.0 * (t_sigma * t_sigma + r_sigma * r_sigma);
+}
+
+}  // namespace opf

@@ -1,0 +1,82 @@
+#pragma once
+// The 6-DoF pose particle filter of paper Sec. III-A, as composable steps (predict, reweight,
+// normalise and resample, moments): a translation portion and a rotation portion, each with its
+// own particles and weights, one seeded generator. Estimators (standard PF, OPF) drive the steps.
+
+#include "particles/particle_filter_options.h"
+#include "particles/particle_portion.h"
+#include "particles/particle_statistics.h"
+#include "particles/random.h"
+
+#include <mrpt/poses/CPose3DPDFGaussian.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+
+namespace opf {
+
+/// What the last normalise-and-resample step saw and did, per portion (MRPT's
+/// TParticleFilterStats, extended).
+struct ResampleReport {
+  double ess_translation = 1.0;  ///< ESS/N before resampling
+  double ess_rotation = 1.0;
+  bool resampled_translation = false;
+  bool resampled_rotation = false;
+  /// True when every weight of a portion vanished (a measurement far from every particle) and
+  /// the weights were reset to uniform instead of becoming NaN.
+  bool weights_recovered = false;
+};
+
+class PoseParticleFilter {
+ public:
+  /// Throws std::invalid_argument naming the option when an option is out of range.
+  PoseParticleFilter(const PoseParticleFilterOptions& options, std::uint64_t seed);
+
+  /// Scatters the particles around the first measurement with the observation noise.
+  void initialise(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation);
+
+  /// Random-walk prediction over `dt` seconds (per-step sigma = density * sqrt(dt)).
+  void predict(double dt);
+  void predict_translation(double dt);
+  void predict_rotation(double dt);
+
+  /// Weights the particles by the likelihood of a (real or virtual) measurement with observation
+  /// covariance covariance_scale * Q (the OPF's Q~ = alpha Q, paper Eq. 11).
+  void reweight(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                double covariance_scale = 1.0);
+  void reweight_translation(const Eigen::Vector3d& position, double covariance_scale = 1.0);
+  void reweight_rotation(const Eigen::Quaterniond& orientation, double covariance_scale = 1.0);
+
+  /// Normalises each portion and resamples it per the options. A portion whose weights were not
+  /// changed since its last resampling is left alone (uniform weights gain nothing from it).
+  ResampleReport normalise_and_resample();
+
+  TranslationMoments translation_moments() const { return opf::translation_moments(translation_); }
+  RotationMoments rotation_moments() const { return opf::rotation_moments(rotation_); }
+  /// The weighted mean pose and its covariance, MRPT's Gaussian pose.
+  mrpt::poses::CPose3DPDFGaussian estimate() const;
+  /// trace(covariance_scale * Q) for the 6-DoF observation covariance Q (paper Eq. 11).
+  double observation_trace(double covariance_scale = 1.0) const;
+
+  const PoseParticleFilterOptions& options() const { return options_; }
+  TranslationParticles& translation() { return translation_; }
+  const TranslationParticles& translation() const { return translation_; }
+  RotationParticles& rotation() { return rotation_; }
+  const RotationParticles& rotation() const { return rotation_; }
+  Random& random() { return random_; }
+
+ private:
+  PoseParticleFilterOptions options_;
+  Random random_;
+  TranslationParticles translation_;
+  RotationParticles rotation_;
+  bool translation_reweighted_ = false;
+  bool rotation_reweighted_ = false;
+};
+
+/// Throws std::invalid_argument naming the first option that is out of range.
+void validate(const PoseParticleFilterOptions& options);
+
+}  // namespace opf

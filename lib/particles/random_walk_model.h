@@ -1,0 +1,23 @@
+#pragma once
+// The particles' motion model: a Gaussian random walk, x' = x + e with e ~ N(0, sigma^2 I) for
+// translation (paper Eq. 3 with f the identity) and q' = q * exp(e) in the tangent space for
+// rotation, so rotation particles stay unit quaternions on SO(3).
+
+#include "particles/particle_portion.h"
+#include "particles/random.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace opf {
+
+void predict_random_walk(TranslationParticles& particles, double sigma, Random& random);
+void predict_random_walk(RotationParticles& particles, double sigma, Random& random);
+
+/// Places every particle at `centre` perturbed by the same kind of noise (initialisation).
+void scatter_around(TranslationParticles& particles, const Eigen::Vector3d& centre, double sigma,
+                    Random& random);
+void scatter_around(RotationParticles& particles, const Eigen::Quaterniond& centre, double sigma,
+                    Random& random);
+
+}  // namespace opf

@@ -1,0 +1,149 @@
+// End-to-end tests of the `opf` program: runs the built binary on the bundled example log.
+
+#include "io/estimate_csv.h"
+#include "io/measurement_log.h"
+
+#include "core/metrics.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace opf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kOpf = OPF_CLI_PATH;
+const std::string kData = std::string(OPF_SOURCE_DIR) + "/experiments/data/";
+
+class OpfProgram : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ =
+        fs::temp_directory_path() /
+        ("opf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Runs `opf ARGS`, stdout and stderr to files; returns the exit status.
+  int run(const std::string& args) {
+    const std::string command =
+        kOpf + " " + args + " >" + (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string();
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string read(const fs::path& path) const {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  std::string out() const { return read(dir_ / "stdout"); }
+  std::string err() const { return read(dir_ / "stderr"); }
+
+  fs::path dir_;
+};
+
+TEST_F(OpfProgram, TrackRoundTripsTheExampleLog) {
+  const fs::path est = dir_ / "est.csv";
+  ASSERT_EQ(run("track --in " + kData + "example_log.csv --out " + est.string() +
+                " --particles 2000 --seed 3"),
+            0)
+      << err();
+  const MeasurementLog log = read_measurement_log(kData + "example_log.csv");
+  const MeasurementLog truth = read_measurement_log(kData + "example_truth.csv");
+  const auto rows = read_estimate_csv(est);
+
+  // One row per object per frame from its first detection on, t copied from the input.
+  std::size_t expected_rows = 0;
+  std::map<std::string, bool> seen;
+  for (const Frame& frame : log.frames) {
+    for (const Detection& d : frame.detections) seen[d.object] = true;
+    expected_rows += seen.size();
+  }
+  ASSERT_EQ(rows.size(), expected_rows);
+
+  std::map<std::pair<double, std::string>, mrpt::poses::CPose3D> truth_at;
+  for (const Frame& f : truth.frames)
+    for (const Detection& d : f.detections) truth_at[{f.t, d.object}] = d.pose;
+  std::size_t row = 0, predicted = 0;
+  double measured_error = 0.0;
+  std::size_t measured = 0;
+  for (const Frame& frame : log.frames) {
+    for (std::size_t k = 0; k < seen.size() && row < rows.size() && rows[row].t == frame.t; ++k) {
+      const auto& r = rows[row++];
+      const bool observed = frame.find(r.object) != nullptr;
+      EXPECT_EQ(r.mode, observed ? "measured" : "predicted") << r.object << " t=" << r.t;
+      if (observed) {
+        measured_error += translation_error(r.pose, truth_at.at({r.t, r.object}));
+        ++measured;
+      } else {
+        ++predicted;
+      }
+    }
+  }
+  EXPECT_EQ(row, rows.size()) << "rows out of frame order";
+  EXPECT_GT(predicted, 30u);  // the ball's one-second occlusion, and the mug's dropped frames
+  // Measurement noise is 5 mm per axis (E||n|| = 8 mm): the filtered estimate must beat it.
+  EXPECT_LT(measured_error / static_cast<double>(measured), 0.008);
+}
+
+TEST_F(OpfProgram, SameSeedGivesByteIdenticalOutputDifferentSeedDoesNot) {
+  for (const char* estimator : {"pf", "cvkf"}) {
+    const std::string common =
+        "track --in " + kData + "example_log.csv --particles 500 --estimator " + estimator;
+    ASSERT_EQ(run(common + " --seed 8 --out " + (dir_ / "a.csv").string()), 0) << err();
+    ASSERT_EQ(run(common + " --seed 8 --out " + (dir_ / "b.csv").string()), 0) << err();
+    ASSERT_EQ(run(common + " --seed 9 --out " + (dir_ / "c.csv").string()), 0) << err();
+    EXPECT_EQ(read(dir_ / "a.csv"), read(dir_ / "b.csv")) << estimator;
+    if (std::string(estimator) == "pf") {
+      EXPECT_NE(read(dir_ / "a.csv"), read(dir_ / "c.csv"));
+    }
+  }
+}
+
+TEST_F(OpfProgram, EverySubcommandHasHelp) {
+  for (const char* command : {"track", "evaluate"}) {
+    ASSERT_EQ(run(std::string(command) + " --help"), 0);
+    EXPECT_NE(out().find("Usage: opf " + std::string(command)), std::string::npos) << out();
+    EXPECT_NE(out().find("--seed"), std::string::npos);
+  }
+  ASSERT_EQ(run("--help"), 0);
+  EXPECT_NE(out().find("track"), std::string::npos);
+}
+
+TEST_F(OpfProgram, BadCommandLinesFailWithAMessageOnStderr) {
+  EXPECT_EQ(run("track --out " + (dir_ / "x.csv").string()), 2);
+  EXPECT_NE(err().find("'--in' is required"), std::string::npos) << err();
+  EXPECT_EQ(run("track --in a --out b --bogus 1"), 2);
+  EXPECT_NE(err().find("unknown option '--bogus'"), std::string::npos) << err();
+  EXPECT_EQ(run("frobnicate"), 2);
+  EXPECT_EQ(run("track --in " + kData + "example_log.csv --out x --estimator nope"), 1);
+  EXPECT_NE(err().find("unknown estimator 'nope'"), std::string::npos) << err();
+}
+
+TEST_F(OpfProgram, MissingInputFileFailsWithoutWritingOutput) {
+  const fs::path est = dir_ / "est.csv";
+  EXPECT_EQ(run("track --in " + (dir_ / "missing.csv").string() + " --out " + est.string()), 1);
+  EXPECT_NE(err().find("missing.csv"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(est));
+}
+
+TEST_F(OpfProgram, EvaluatePrintsOneRowPerEstimator) {
+  ASSERT_EQ(run("evaluate --seeds 2 --particles 500"), 0) << err();
+  const std::string table = out();
+  EXPECT_NE(table.find("\npf "), std::string::npos) << table;
+  EXPECT_NE(table.find("\ncvkf "), std::string::npos) << table;
+  EXPECT_NE(table.find("translation [m]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace opf

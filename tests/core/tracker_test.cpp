@@ -1,0 +1,88 @@
+#include "core/tracker.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace opf {
+namespace {
+
+// A recording estimator: echoes its measurement (or holds the last one) and records what the
+// tracker showed it, so the tracker's bookkeeping can be checked exactly.
+class RecordingEstimator final : public Estimator {
+ public:
+  struct Log {
+    std::vector<std::size_t> ensemble_sizes;
+    std::uint64_t seed = 0;
+  };
+  RecordingEstimator(std::uint64_t seed, Log& log) : log_(log) { log_.seed = seed; }
+  std::string_view name() const override { return "recording"; }
+  Estimate initialise(double t, const mrpt::poses::CPose3D& z) override {
+    last_ = z;
+    return make(t, EstimateMode::kMeasured);
+  }
+  Estimate step(double t, const mrpt::poses::CPose3D* z, const EnsembleView& view) override {
+    log_.ensemble_sizes.push_back(view.previous_estimates.size());
+    if (z) last_ = *z;
+    return make(t, z ? EstimateMode::kMeasured : EstimateMode::kPredicted);
+  }
+
+ private:
+  Estimate make(double t, EstimateMode mode) const {
+    Estimate e;
+    e.t = t;
+    e.pose = mrpt::poses::CPose3DPDFGaussian(last_);
+    e.mode = mode;
+    return e;
+  }
+  Log& log_;
+  mrpt::poses::CPose3D last_;
+};
+
+Frame frame(double t, std::vector<std::pair<std::string, double>> detections) {
+  Frame f{t, {}};
+  for (auto& [name, x] : detections)
+    f.detections.push_back({name, mrpt::poses::CPose3D(x, 0, 0, 0, 0, 0)});
+  return f;
+}
+
+TEST(Tracker, CreatesEstimatorsAtFirstDetectionInOrderOfAppearance) {
+  std::map<std::string, RecordingEstimator::Log> logs;
+  Tracker tracker(
+      [&](const std::string& object, std::uint64_t seed) {
+        return std::make_unique<RecordingEstimator>(seed, logs[object]);
+      },
+      99);
+  EXPECT_EQ(tracker.step(frame(0.0, {{"mug", 1.0}})).size(), 1u);
+  const auto& second = tracker.step(frame(0.1, {{"ball", 2.0}}));
+  ASSERT_EQ(second.size(), 2u);
+  EXPECT_EQ(second[0].object, "mug");
+  EXPECT_EQ(second[0].mode, EstimateMode::kPredicted);
+  EXPECT_DOUBLE_EQ(second[0].pose.mean.x(), 1.0);
+  EXPECT_EQ(second[1].object, "ball");
+  EXPECT_EQ(second[1].mode, EstimateMode::kMeasured);
+  const auto& third = tracker.step(frame(0.2, {{"ball", 3.0}, {"mug", 4.0}}));
+  EXPECT_DOUBLE_EQ(third[0].pose.mean.x(), 4.0);
+  EXPECT_DOUBLE_EQ(third[1].pose.mean.x(), 3.0);
+  EXPECT_DOUBLE_EQ(third[1].t, 0.2);
+  // Each estimator saw the previous frame's estimates of the whole ensemble.
+  EXPECT_EQ(logs["mug"].ensemble_sizes, (std::vector<std::size_t>{1, 2}));
+  EXPECT_EQ(logs["ball"].ensemble_sizes, (std::vector<std::size_t>{2}));
+  // Seeds differ per object and are reproducible.
+  EXPECT_NE(logs["mug"].seed, logs["ball"].seed);
+}
+
+TEST(Tracker, RejectsFramesThatDoNotAdvanceInTime) {
+  std::map<std::string, RecordingEstimator::Log> logs;
+  Tracker tracker(
+      [&](const std::string& object, std::uint64_t seed) {
+        return std::make_unique<RecordingEstimator>(seed, logs[object]);
+      },
+      1);
+  tracker.step(frame(1.0, {{"a", 0.0}}));
+  EXPECT_THROW(tracker.step(frame(1.0, {{"a", 0.0}})), std::invalid_argument);
+  EXPECT_THROW(tracker.step(frame(0.5, {{"a", 0.0}})), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace opf

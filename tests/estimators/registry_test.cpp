@@ -1,0 +1,37 @@
+#include "estimators/registry.h"
+
+#include <gtest/gtest.h>
+
+namespace opf {
+namespace {
+
+TEST(Registry, BuildsEveryRegisteredEstimatorUnderItsName) {
+  const EstimatorSettings settings;
+  ASSERT_EQ(estimator_names(), (std::vector<std::string>{"pf", "cvkf"}));
+  for (const auto& name : estimator_names()) {
+    const auto estimator = make_estimator_factory(name, settings)("ball", 1);
+    ASSERT_NE(estimator, nullptr);
+    EXPECT_EQ(estimator->name(), name);
+  }
+}
+
+TEST(Registry, UnknownNameListsTheKnownOnes) {
+  try {
+    make_estimator_factory("opff", EstimatorSettings{});
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "unknown estimator 'opff' (known: pf, cvkf)");
+  }
+}
+
+TEST(Registry, ValidatesOptionsWhenTheFactoryIsMade) {
+  EstimatorSettings settings;
+  settings.pf.observation_noise_translation = 0.0;
+  EXPECT_THROW(make_estimator_factory("pf", settings), std::invalid_argument);
+  settings = {};
+  settings.cvkf.acceleration_noise = -1.0;
+  EXPECT_THROW(make_estimator_factory("cvkf", settings), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace opf

@@ -1,0 +1,161 @@
+#include "io/estimate_csv.h"
+
+#include "core/pose_conversion.h"
+#include "io/csv.h"
+#include "io/input_error.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace opf {
+namespace {
+
+constexpr const char* kHeader =
+    "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll\n";
+
+Estimate make_estimate(double t, const std::string& object, const mrpt::poses::CPose3D& mean) {
+  mrpt::math::CMatrixDouble66 cov;
+  cov.setZero();
+  for (int i = 0; i < 6; ++i) cov(i, i) = 0.01 * (i + 1) * (i + 1);
+  Estimate estimate;
+  estimate.t = t;
+  estimate.object = object;
+  estimate.pose = mrpt::poses::CPose3DPDFGaussian(mean, cov);
+  estimate.observation_trace = 3e-4;
+  return estimate;
+}
+
+std::vector<std::string> split_row(const std::string& row) {
+  return csv::split_line(row.substr(0, row.find('\n')), "row", 1);
+}
+
+class EstimateCsv : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("opf_estimate_csv_test_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::filesystem::path write(const std::vector<Estimate>& estimates) {
+    const auto path = dir_ / "estimates.csv";
+    std::ofstream out(path, std::ios::binary);
+    write_estimate_header(out);
+    for (const auto& estimate : estimates) write_estimate_row(out, estimate);
+    return path;
+  }
+  std::filesystem::path write_text(const std::string& text) {
+    const auto path = dir_ / "edited.csv";
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST(EstimateCsvFormat, HeaderListsTheColumns) {
+  std::ostringstream out;
+  write_estimate_header(out);
+  EXPECT_EQ(out.str(), kHeader);
+}
+
+TEST(EstimateCsvFormat, RowUsesShortestNumbersModeAndStandardDeviations) {
+  Estimate estimate =
+      make_estimate(0.033333, "ball", mrpt::poses::CPose3D(0.5, -0.25, 0.1, 0, 0, 0));
+  estimate.mode = EstimateMode::kPredicted;
+  std::ostringstream out;
+  write_estimate_row(out, estimate);
+  std::string expected = "0.033333,ball,0.5,-0.25,0.1,0,0,0,1,0.0003,predicted";
+  expected.replace(expected.find("0.0003"), 6, csv::format_double(3e-4));
+  for (int i = 0; i < 6; ++i)
+    expected.append(",").append(csv::format_double(std::sqrt(estimate.pose.cov(i, i))));
+  EXPECT_EQ(out.str(), expected + "\n");
+  EXPECT_EQ(split_row(out.str())[11], "0.1");  // sqrt(0.01)
+
+  std::ostringstream third;
+  estimate.t = 1.0 / 3.0;
+  write_estimate_row(third, estimate);
+  EXPECT_EQ(split_row(third.str())[0], "0.3333333333333333");
+}
+
+TEST(EstimateCsvFormat, QuaternionHasNonNegativeW) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> angle(-3.14, 3.14);
+  int flipped = 0;
+  for (int i = 0; i < 200; ++i) {
+    const mrpt::poses::CPose3D pose(0, 0, 0, angle(rng), angle(rng) / 2, angle(rng));
+    if (orientation_of(pose).w() < 0) ++flipped;
+    std::ostringstream out;
+    write_estimate_row(out, make_estimate(0, "x", pose));
+    const auto fields = split_row(out.str());
+    const double qw = *csv::parse_double(fields[8]);
+    EXPECT_GE(qw, 0.0);
+    EXPECT_NE(fields[8][0], '-');
+    const Eigen::Quaterniond written(qw, *csv::parse_double(fields[5]),
+                                     *csv::parse_double(fields[6]), *csv::parse_double(fields[7]));
+    EXPECT_LT(written.angularDistance(orientation_of(pose)), 1e-9);
+  }
+  // The check above only means something if some orientations needed the sign flip.
+  EXPECT_GT(flipped, 0);
+}
+
+TEST_F(EstimateCsv, RoundTripsExactly) {
+  std::vector<Estimate> estimates = {
+      make_estimate(0.033333, "ball", mrpt::poses::CPose3D(0.1, 0.2, 0.3, 0.4, -0.5, 3.0)),
+      make_estimate(1.0 / 30.0, "red, mug", mrpt::poses::CPose3D(-1e-7, 12345.678, 0, -3, 1.2, 0)),
+      make_estimate(0.1 + 0.2, "ball", mrpt::poses::CPose3D(0, 0, 0, 0, 0, 0))};
+  estimates[1].mode = EstimateMode::kPredicted;
+  estimates[1].observation_trace = 1.0 / 7.0;
+
+  const auto records = read_estimate_csv(write(estimates));
+  ASSERT_EQ(records.size(), estimates.size());
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    SCOPED_TRACE(i);
+    EXPECT_EQ(records[i].t, estimates[i].t);
+    EXPECT_EQ(records[i].object, estimates[i].object);
+    EXPECT_EQ(translation_of(records[i].pose), translation_of(estimates[i].pose.mean));
+    EXPECT_LT(
+        orientation_of(records[i].pose).angularDistance(orientation_of(estimates[i].pose.mean)),
+        1e-12);
+    EXPECT_EQ(records[i].trace, estimates[i].observation_trace);
+    EXPECT_EQ(records[i].mode, to_string(estimates[i].mode));
+  }
+}
+
+TEST_F(EstimateCsv, WritingIsDeterministic) {
+  const std::vector<Estimate> estimates = {
+      make_estimate(0.5, "ball", mrpt::poses::CPose3D(0.1, 0.2, 0.3, 0.4, -0.5, 3.0))};
+  std::ostringstream a, b;
+  write_estimate_row(a, estimates[0]);
+  write_estimate_row(b, estimates[0]);
+  EXPECT_EQ(a.str(), b.str());
+}
+
+TEST_F(EstimateCsv, ReaderReportsBadFields) {
+  const std::string header = kHeader;
+  try {
+    read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,1,0.1,measured,1,1,1,1,1,1\n" +
+                                 "0.1,ball,1,2,oops,0,0,0,1,0.1,measured,1,1,1,1,1,1\n"));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "z");
+  }
+  EXPECT_THROW(read_estimate_csv(write_text("t,object,x\n")), InputError);
+  EXPECT_THROW(
+      read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,2,0.1,measured,1,1,1,1,1,1\n")),
+      InputError);
+  EXPECT_THROW(read_estimate_csv(dir_ / "missing.csv"), InputError);
+}
+
+}  // namespace
+}  // namespace opf
