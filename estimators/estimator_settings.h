@@ -2,13 +2,20 @@
 // Every estimator's options in one place: what a YAML config file sets and the registry reads.
 
 #include "estimators/cv_kalman_options.h"
+#include "estimators/oapf_options.h"
+#include "estimators/opf_options.h"
 #include "particles/particle_filter_options.h"
 
 namespace opf {
 
 struct EstimatorSettings {
-  PoseParticleFilterOptions pf;  ///< standard PF (and, later, the particle part of the OPF)
+  /// The particle filter every particle estimator runs on: the standard PF itself, and the
+  /// particle part of the OPF and of the occlusion-aware PF. The registry copies it over
+  /// opf.particles and oapf.particles, so the three are always compared on the same filter.
+  PoseParticleFilterOptions pf;
   CvKalmanOptions cvkf;
+  OpfOptions opf;                ///< the Object Permanence update's modules
+  OcclusionAwarePfOptions oapf;  ///< random-walk occlusion-aware PF baseline
 };
 
 }  // namespace opf

@@ -52,6 +52,99 @@ void read_cvkf(YamlReader& yaml, CvKalmanOptions& options) {
   yaml.get_positive("initial_angular_velocity_std", options.initial_angular_velocity_std);
 }
 
+void read_oapf(YamlReader& yaml, OcclusionAwarePfOptions& options) {
+  yaml.get_positive("occlusion_rate", options.occlusion_rate);
+  yaml.get_positive("reappearance_rate", options.reappearance_rate);
+  yaml.get("miss_probability", options.miss_probability);
+  yaml.require("miss_probability",
+               options.miss_probability > 0.0 && options.miss_probability <= 1.0,
+               "a number in (0, 1]");
+  yaml.get_positive("occluded_likelihood_sigmas", options.occluded_likelihood_sigmas);
+  yaml.get("spread_growth", options.spread_growth);
+  yaml.require("spread_growth", options.spread_growth >= 0.0, "a number >= 0");
+}
+
+RobustLoss parse_loss(YamlReader& yaml, RobustLoss loss) {
+  std::string name = loss == RobustLoss::kSquared ? "squared"
+                     : loss == RobustLoss::kHuber ? "huber"
+                                                  : "cauchy";
+  yaml.get("loss", name);
+  if (name == "squared") return RobustLoss::kSquared;
+  if (name == "huber") return RobustLoss::kHuber;
+  if (name == "cauchy") return RobustLoss::kCauchy;
+  yaml.fail("loss", "expected squared, huber or cauchy, got \"" + name + "\"");
+}
+
+OccluderPlane parse_plane(YamlReader& yaml, OccluderPlane plane) {
+  std::string name = plane == OccluderPlane::kLineOfSight ? "line_of_sight"
+                     : plane == OccluderPlane::kXY        ? "xy"
+                                                          : "3d";
+  yaml.get("plane", name);
+  if (name == "line_of_sight") return OccluderPlane::kLineOfSight;
+  if (name == "xy") return OccluderPlane::kXY;
+  if (name == "3d") return OccluderPlane::k3D;
+  yaml.fail("plane", "expected line_of_sight, xy or 3d, got \"" + name + "\"");
+}
+
+void read_order(YamlReader& yaml, std::string_view key, int& order) {
+  std::size_t value = static_cast<std::size_t>(order);
+  yaml.get(key, value);
+  yaml.require(key, value <= 5, "a polynomial order from 0 to 5");
+  order = static_cast<int>(value);
+}
+
+void read_opf(YamlReader& yaml, OpfOptions& options) {
+  YamlReader& modules = yaml.child("modules");
+  modules.get("dynamics", options.modules.dynamics);
+  modules.get("occluder", options.modules.occluder);
+  modules.get("uncertainty", options.modules.uncertainty);
+
+  yaml.get("history_length", options.history_length);
+  yaml.require("history_length", options.history_length >= 2, "an integer H >= 2");
+  yaml.get("history_reset_gap", options.history_reset_gap);
+  yaml.require("history_reset_gap", options.history_reset_gap >= 0.0, "a number of seconds >= 0");
+  yaml.get("carry_particles", options.carry_particles);
+
+  YamlReader& motion = yaml.child("motion_thresholds");
+  motion.get("translation", options.motion.translation);
+  motion.require("translation", options.motion.translation >= 0.0, "a distance in m >= 0");
+  motion.get("rotation", options.motion.rotation);
+  motion.require("rotation", options.motion.rotation >= 0.0, "an angle in rad >= 0");
+
+  YamlReader& trajectory = yaml.child("trajectory");
+  read_order(trajectory, "translation_order", options.trajectory.translation_order);
+  read_order(trajectory, "rotation_order", options.trajectory.rotation_order);
+  options.trajectory.loss = parse_loss(trajectory, options.trajectory.loss);
+  trajectory.get_positive("translation_loss_scale", options.trajectory.translation_loss_scale);
+  trajectory.get_positive("rotation_loss_scale", options.trajectory.rotation_loss_scale);
+  std::size_t iterations = static_cast<std::size_t>(options.trajectory.max_iterations);
+  trajectory.get_positive("max_iterations", iterations);
+  trajectory.require("max_iterations", iterations <= 10000, "an integer from 1 to 10000");
+  options.trajectory.max_iterations = static_cast<int>(iterations);
+
+  YamlReader& occluder = yaml.child("occluder");
+  occluder.get("epsilon_occ", options.occluder.epsilon_occ);
+  occluder.require("epsilon_occ", options.occluder.epsilon_occ >= 0.0, "a number >= 0");
+  options.occluder.plane = parse_plane(occluder, options.occluder.plane);
+  std::vector<double> camera;
+  occluder.get("camera_position", camera, 3);
+  if (!camera.empty())
+    options.occluder.camera_position = Eigen::Vector3d(camera[0], camera[1], camera[2]);
+  occluder.get("keep_offset", options.occluder.keep_offset);
+
+  YamlReader& uncertainty = yaml.child("uncertainty");
+  uncertainty.get("kappa", options.uncertainty.kappa);
+  uncertainty.require("kappa", options.uncertainty.kappa > 1.0, "a number kappa > 1");
+  uncertainty.get_positive("reference_speed", options.uncertainty.reference_speed);
+  uncertainty.get_positive("reference_period", options.uncertainty.reference_period);
+  uncertainty.get("speed_window", options.uncertainty.speed_window);
+  uncertainty.require("speed_window", options.uncertainty.speed_window >= 0.0, "seconds >= 0");
+  uncertainty.get("max_scale", options.uncertainty.max_scale);
+  uncertainty.require("max_scale", options.uncertainty.max_scale >= 1.0, "a number >= 1");
+
+  yaml.child("feedback").get_positive("epsilon_safe", options.feedback.epsilon_safe);
+}
+
 }  // namespace
 
 EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
@@ -60,6 +153,8 @@ EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
   YamlReader yaml = YamlReader::parse(yaml_text, source_name);
   read_pf(yaml.child("pf"), settings.pf);
   read_cvkf(yaml.child("cvkf"), settings.cvkf);
+  read_opf(yaml.child("opf"), settings.opf);
+  read_oapf(yaml.child("oapf"), settings.oapf);
   yaml.finish();
   return settings;
 }

@@ -16,6 +16,13 @@
 //     observation_noise: {translation: 0.01, rotation: 0.05}   # > 0
 //     initial_velocity_std: 0.5                                # > 0
 //     initial_angular_velocity_std: 1.0                        # > 0
+//   oapf:
+//     particles: {...}                   # the keys of pf:, same defaults
+//     occlusion_rate: 0.5                # > 0, 1/s, visible -> occluded
+//     reappearance_rate: 1.0             # > 0, 1/s, occluded -> visible
+//     miss_probability: 0.1              # in (0, 1]
+//     occluded_likelihood_sigmas: 6.0    # > 0
+//     spread_growth: 2.0                 # >= 0, 1/s
 //
 // scheme is one of multinomial, residual, stratified, systematic; ess_threshold is in (0, 1]. An
 // empty file gives all defaults.

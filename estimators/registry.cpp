@@ -1,6 +1,8 @@
 #include "estimators/registry.h"
 
 #include "estimators/cv_kalman.h"
+#include "estimators/object_permanence_filter.h"
+#include "estimators/random_walk_oapf.h"
 #include "estimators/standard_pf.h"
 
 #include <stdexcept>
@@ -8,21 +10,39 @@
 namespace opf {
 
 std::vector<std::string> estimator_names() {
-  return {"pf", "cvkf"};
+  return {"opf", "pf", "cvkf", "oapf"};
 }
 
 EstimatorFactory make_estimator_factory(const std::string& name,
                                         const EstimatorSettings& settings) {
+  // Options are validated here, when the factory is made, so a bad config fails at start-up and
+  // not at the first detection.
+  if (name == "opf") {
+    OpfOptions options = settings.opf;
+    options.particles = settings.pf;
+    validate(options);
+    return [options](const std::string& object, std::uint64_t seed) {
+      return std::make_unique<ObjectPermanenceFilter>(options, object, seed);
+    };
+  }
   if (name == "pf") {
-    validate(settings.pf);  // fail at start-up, not at the first detection
+    validate(settings.pf);
     return [options = settings.pf](const std::string&, std::uint64_t seed) {
       return std::make_unique<StandardParticleFilter>(options, seed);
     };
   }
   if (name == "cvkf") {
-    ConstantVelocityKalman probe(settings.cvkf);  // validates the options now
+    const ConstantVelocityKalman probe(settings.cvkf);  // its constructor validates
     return [options = settings.cvkf](const std::string&, std::uint64_t) {
       return std::make_unique<ConstantVelocityKalman>(options);
+    };
+  }
+  if (name == "oapf") {
+    OcclusionAwarePfOptions options = settings.oapf;
+    options.particles = settings.pf;
+    validate(options);
+    return [options](const std::string&, std::uint64_t seed) {
+      return std::make_unique<OcclusionAwareParticleFilter>(options, seed);
     };
   }
   std::string known;

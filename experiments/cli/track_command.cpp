@@ -17,7 +17,7 @@ std::vector<OptionSpec> specs() {
   std::vector<OptionSpec> s = {
       {"in", "LOG.csv", "measurement log: CSV with columns t,object,x,y,z,qx,qy,qz,qw (required)"},
       {"out", "EST.csv", "estimates: t,object,x,y,z,qx,qy,qz,qw,trace,mode,... (required)"},
-      {"estimator", "NAME", "estimator to run: pf (default) or cvkf"},
+      {"estimator", "NAME", "estimator to run: opf (default), pf, cvkf or oapf"},
   };
   for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
   return s;
@@ -27,7 +27,10 @@ constexpr const char* kSummary =
     "Replays a log of pose detections (AprilTag, motion capture, a pose tracker) through one\n"
     "estimator per object and writes one row per object and frame, from the object's first\n"
     "detection on. A frame is a distinct t; an object with no row (or empty pose fields) at a\n"
-    "frame's t is unobserved there, and the mode column says what the estimator did instead.\n"
+    "frame's t is unobserved there, and the mode column says what the estimator did instead\n"
+    "(predicted, dynamics, occluder, random_walk). The OPF treats every object in the log as a\n"
+    "possible occluder of every other. Further hypotheses (two equally likely occluders) follow\n"
+    "as extra rows with hypothesis >= 1; alert is 1 when trace(Q~) >= epsilon_safe.\n"
     "The output is written only when the whole run succeeded.";
 
 }  // namespace
@@ -41,7 +44,7 @@ int track_command(const std::vector<std::string>& raw) {
   }
   const std::string in = args.require("in");
   const std::string out = args.require("out");
-  const std::string estimator = args.get("estimator").value_or("pf");
+  const std::string estimator = args.get("estimator").value_or("opf");
   const EstimatorSettings settings = settings_from(args);
 
   const MeasurementLog log = read_measurement_log(in);
@@ -52,6 +55,11 @@ int track_command(const std::vector<std::string>& raw) {
     for (const Frame& frame : log.frames) {
       for (const Estimate& estimate : tracker.step(frame)) {
         write_estimate_row(os, estimate);
+        ++rows;
+      }
+      // Further hypotheses (the OPF's virtual objects) follow as extra rows, hypothesis >= 1.
+      for (const Estimate& hypothesis : tracker.hypotheses()) {
+        write_estimate_row(os, hypothesis);
         ++rows;
       }
     }

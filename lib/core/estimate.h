@@ -5,6 +5,7 @@
 
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 
+#include <optional>
 #include <string>
 
 namespace opf {
@@ -14,9 +15,16 @@ struct Estimate {
   double t = 0.0;
   /// Mean pose and its 6x6 covariance over (x, y, z, yaw, pitch, roll), MRPT's convention.
   mrpt::poses::CPose3DPDFGaussian pose;
-  /// trace of the observation covariance used at this step (paper Eq. 11, U = trace(Q~)).
+  /// trace of the observation covariance used at this step (paper Eq. 15, U = trace(Q~)).
   double observation_trace = 0.0;
   EstimateMode mode = EstimateMode::kMeasured;
+  /// 0 for an object's main estimate; 1, 2, ... for the further hypotheses an estimator keeps
+  /// (the OPF's virtual object O_i' when two occluders are equally likely, paper Sec. III-B.2).
+  int hypothesis = 0;
+  /// The feedback module's safety alert: observation_trace >= epsilon_safe (paper Sec. III-C).
+  bool alert = false;
+  /// Probability that the object is occluded, for estimators that model it (occlusion-aware PF).
+  std::optional<double> occlusion_probability;
 };
 
 }  // namespace opf

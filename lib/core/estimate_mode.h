@@ -6,8 +6,11 @@
 namespace opf {
 
 enum class EstimateMode {
-  kMeasured,   ///< updated with a real measurement
-  kPredicted,  ///< propagated by the motion model only (measurement missing)
+  kMeasured,    ///< updated with a real measurement
+  kPredicted,   ///< propagated by the motion model only (measurement missing)
+  kDynamics,    ///< OPF: updated with the fitted trajectory's extrapolation (dynamics module)
+  kOccluder,    ///< OPF: updated with the occluder's measurement (occluder module)
+  kRandomWalk,  ///< occlusion-aware PF: occluded particles random-walk in a widening search
 };
 
 constexpr std::string_view to_string(EstimateMode mode) {
@@ -16,6 +19,12 @@ constexpr std::string_view to_string(EstimateMode mode) {
       return "measured";
     case EstimateMode::kPredicted:
       return "predicted";
+    case EstimateMode::kDynamics:
+      return "dynamics";
+    case EstimateMode::kOccluder:
+      return "occluder";
+    case EstimateMode::kRandomWalk:
+      return "random_walk";
   }
   return "unknown";
 }

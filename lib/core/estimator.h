@@ -9,6 +9,7 @@
 
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace opf {
 
@@ -34,6 +35,11 @@ class Estimator {
   /// `measurement` is nullptr when the object is unobserved in this frame.
   virtual Estimate step(double t, const mrpt::poses::CPose3D* measurement,
                         const EnsembleView& ensemble) = 0;
+
+  /// The further hypotheses of the same object after the last step (hypothesis ids 1, 2, ...),
+  /// e.g. the OPF's virtual object following a second, equally likely occluder. Most estimators
+  /// keep none.
+  virtual std::vector<Estimate> extra_hypotheses() const { return {}; }
 };
 
 }  // namespace opf

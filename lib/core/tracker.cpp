@@ -39,7 +39,14 @@ const std::vector<Estimate>& Tracker::step(const Frame& frame) {
     first.object = detection.object;
     estimates_.push_back(std::move(first));
   }
-  for (std::size_t i = 0; i < objects_.size(); ++i) estimates_[i].object = objects_[i];
+  hypotheses_.clear();
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    estimates_[i].object = objects_[i];
+    for (Estimate& extra : estimators_[i]->extra_hypotheses()) {
+      extra.object = objects_[i];
+      hypotheses_.push_back(std::move(extra));
+    }
+  }
   return estimates_;
 }
 

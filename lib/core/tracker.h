@@ -27,6 +27,9 @@ class Tracker {
   const std::vector<Estimate>& step(const Frame& frame);
 
   const std::vector<Estimate>& estimates() const { return estimates_; }
+  /// The further hypotheses (hypothesis >= 1) the estimators held after the last step, in object
+  /// order. They are not shown to the other estimators: a hypothesis is not an object.
+  const std::vector<Estimate>& hypotheses() const { return hypotheses_; }
 
  private:
   EstimatorFactory factory_;
@@ -34,6 +37,7 @@ class Tracker {
   std::vector<std::string> objects_;
   std::vector<std::unique_ptr<Estimator>> estimators_;
   std::vector<Estimate> estimates_;
+  std::vector<Estimate> hypotheses_;
   bool has_stepped_ = false;
   double last_t_ = 0.0;
 };

@@ -7,11 +7,13 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <string_view>
 #include <system_error>
 #include <utility>
@@ -28,7 +30,8 @@ constexpr double kQuaternionNormTolerance = 0.01;
 }  // namespace
 
 void write_estimate_header(std::ostream& out) {
-  out << "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll\n";
+  out << "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
+         "hypothesis,alert,occlusion_probability\n";
 }
 
 void write_estimate_row(std::ostream& out, const Estimate& estimate) {
@@ -46,6 +49,10 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate) {
   row += ',';
   row += to_string(estimate.mode);
   for (int i = 0; i < 6; ++i) row += ',' + csv::format_double(std::sqrt(estimate.pose.cov(i, i)));
+  row += ',' + std::to_string(estimate.hypothesis);
+  row += estimate.alert ? ",1," : ",0,";
+  // Empty for estimators that do not model occlusion.
+  if (estimate.occlusion_probability) row += csv::format_double(*estimate.occlusion_probability);
   out << row << '\n';
 }
 
@@ -61,6 +68,16 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
   csv::Reader reader(in, path.string(), kReadColumns);
   std::array<std::size_t, kReadColumns.size()> column{};
   for (std::size_t i = 0; i < kReadColumns.size(); ++i) column[i] = reader.column(kReadColumns[i]);
+
+  // Optional columns, written by this toolkit since the OPF landed.
+  const auto optional_column = [&](std::string_view name) -> std::optional<std::size_t> {
+    const auto& header = reader.header();
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) return std::nullopt;
+    return static_cast<std::size_t>(it - header.begin());
+  };
+  const auto hypothesis_column = optional_column("hypothesis");
+  const auto alert_column = optional_column("alert");
 
   std::vector<EstimateRecord> records;
   while (reader.next()) {
@@ -81,6 +98,17 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
     record.mode = reader.field(column[10]);
     if (record.mode.empty())
       reader.fail(column[10], "expected an estimate mode, got an empty field");
+    if (hypothesis_column) {
+      const double h = reader.number(*hypothesis_column);
+      if (h < 0 || h != static_cast<int>(h))
+        reader.fail(*hypothesis_column, "expected a hypothesis number 0, 1, ...");
+      record.hypothesis = static_cast<int>(h);
+    }
+    if (alert_column) {
+      const std::string& a = reader.field(*alert_column);
+      if (a != "0" && a != "1") reader.fail(*alert_column, "expected 0 or 1");
+      record.alert = a == "1";
+    }
     records.push_back(std::move(record));
   }
   return records;

@@ -2,10 +2,14 @@
 // The estimator output file: one CSV row per object per frame, byte-deterministic, and a reader for
 // it (tests and evaluation).
 //
-// Columns: t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll
+// Columns: t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,
+// hypothesis,alert,occlusion_probability
 // Numbers are the shortest text that reads back exactly; the quaternion has qw >= 0; trace is the
-// observation-covariance trace used at the step; mode is `measured` or `predicted`; std_* are the
-// square roots of the covariance diagonal over MRPT's (x, y, z, yaw, pitch, roll).
+// observation-covariance trace used at the step; mode says what produced the estimate (see
+// EstimateMode); std_* are the square roots of the covariance diagonal over MRPT's (x, y, z, yaw,
+// pitch, roll); hypothesis is 0 for the object's main estimate and 1, 2, ... for further
+// hypotheses (extra rows); alert is 1 when trace >= epsilon_safe; occlusion_probability is empty
+// unless the estimator models it.
 
 #include "core/estimate.h"
 
@@ -28,6 +32,8 @@ struct EstimateRecord {
   mrpt::poses::CPose3D pose;
   double trace = 0.0;
   std::string mode;
+  int hypothesis = 0;  ///< 0 when the file has no hypothesis column
+  bool alert = false;  ///< false when the file has no alert column
 };
 
 /// Reads an estimate file in row order. Throws InputError naming file, line and column.

@@ -122,6 +122,21 @@ void YamlReader::get(std::string_view key, std::size_t& out) {
   out = *value;
 }
 
+void YamlReader::get(std::string_view key, std::vector<double>& out, std::size_t size) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  const std::string expectation = "a sequence of " + std::to_string(size) + " numbers";
+  if (!entry->value.IsSequence() || entry->value.size() != size)
+    fail(key, "expected " + expectation + ", got " + describe(entry->value));
+  std::vector<double> values;
+  for (const YAML::Node& item : entry->value) {
+    const auto value = item.IsScalar() ? to_number(item.Scalar()) : std::nullopt;
+    if (!value) fail(key, "expected " + expectation + ", got " + describe(entry->value));
+    values.push_back(*value);
+  }
+  out = std::move(values);
+}
+
 void YamlReader::get(std::string_view key, bool& out) {
   const Entry* entry = find(key);
   if (entry == nullptr) return;

@@ -32,6 +32,8 @@ class YamlReader {
   void get(std::string_view key, std::size_t& out);
   void get(std::string_view key, bool& out);
   void get(std::string_view key, std::string& out);
+  /// A sequence of exactly `size` finite numbers, e.g. `camera_position: [0.55, 0, 0.49]`.
+  void get(std::string_view key, std::vector<double>& out, std::size_t size);
 
   /// get() that also requires out > 0 (for counts: out >= 1).
   void get_positive(std::string_view key, double& out);

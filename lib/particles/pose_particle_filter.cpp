@@ -76,6 +76,16 @@ void PoseParticleFilter::predict_rotation(double dt) {
   predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), random_);
 }
 
+void PoseParticleFilter::shift(const Eigen::Vector3d& translation,
+                               const Eigen::Quaterniond& rotation) {
+  translation_.states.colwise() += translation;
+  const Eigen::Quaterniond r = rotation.normalized();
+  for (Eigen::Index i = 0; i < rotation_.states.cols(); ++i) {
+    Eigen::Map<Eigen::Quaterniond> q(rotation_.states.col(i).data());
+    q = (r * q).normalized();
+  }
+}
+
 void PoseParticleFilter::reweight(const Eigen::Vector3d& position,
                                   const Eigen::Quaterniond& orientation, double covariance_scale) {
   reweight_translation(position, covariance_scale);
@@ -114,6 +124,16 @@ mrpt::poses::CPose3DPDFGaussian PoseParticleFilter::estimate() const {
   const TranslationMoments t = translation_moments();
   const RotationMoments r = rotation_moments();
   return make_pose_pdf(t.mean, t.covariance, r.mean, r.tangent_covariance);
+}
+
+double PoseParticleFilter::translation_log_evidence(const Eigen::Vector3d& position) const {
+  const double sigma = options_.observation_noise_translation;
+  const Eigen::VectorXd log_terms =
+      translation_.weights.log() -
+      (translation_.states.colwise() - position).colwise().squaredNorm().transpose() *
+          (0.5 / (sigma * sigma));
+  const double max_term = log_terms.maxCoeff();
+  return max_term + std::log((log_terms.array() - max_term).exp().sum());
 }
 
 double PoseParticleFilter::observation_trace(double covariance_scale) const {

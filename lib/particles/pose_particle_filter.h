@@ -42,8 +42,13 @@ class PoseParticleFilter {
   void predict_translation(double dt);
   void predict_rotation(double dt);
 
+  /// Moves every particle rigidly: translation particles by `translation`, rotation particles by
+  /// the world-frame rotation `rotation` (q <- rotation * q). The motion model f of paper Eq. 3
+  /// when the object is carried by a known motion.
+  void shift(const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
+
   /// Weights the particles by the likelihood of a (real or virtual) measurement with observation
-  /// covariance covariance_scale * Q (the OPF's Q~ = alpha Q, paper Eq. 11).
+  /// covariance covariance_scale * Q (the OPF's Q~ = alpha Q, paper Eq. 14).
   void reweight(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 double covariance_scale = 1.0);
   void reweight_translation(const Eigen::Vector3d& position, double covariance_scale = 1.0);
@@ -57,7 +62,15 @@ class PoseParticleFilter {
   RotationMoments rotation_moments() const { return opf::rotation_moments(rotation_); }
   /// The weighted mean pose and its covariance, MRPT's Gaussian pose.
   mrpt::poses::CPose3DPDFGaussian estimate() const;
-  /// trace(covariance_scale * Q) for the 6-DoF observation covariance Q (paper Eq. 11).
+  /// log p(z | particles) = log sum_i w_i N(z; x_i, Q) of a position measurement under the
+  /// translation portion (up to a constant shared by every filter with the same Q): how well this
+  /// filter explains z, used to pick the surviving hypothesis when an object reappears.
+  double translation_log_evidence(const Eigen::Vector3d& position) const;
+
+  /// Restarts the generator (a copied filter must not replay its original's random draws).
+  void reseed(std::uint64_t seed) { random_ = Random(seed); }
+
+  /// trace(covariance_scale * Q) for the 6-DoF observation covariance Q (paper Eq. 15).
   double observation_trace(double covariance_scale = 1.0) const;
 
   const PoseParticleFilterOptions& options() const { return options_; }

@@ -46,6 +46,35 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.cvkf.observation_noise_rotation, d.cvkf.observation_noise_rotation);
   EXPECT_EQ(s.cvkf.initial_velocity_std, d.cvkf.initial_velocity_std);
   EXPECT_EQ(s.cvkf.initial_angular_velocity_std, d.cvkf.initial_angular_velocity_std);
+  EXPECT_EQ(s.opf.modules.dynamics, d.opf.modules.dynamics);
+  EXPECT_EQ(s.opf.modules.occluder, d.opf.modules.occluder);
+  EXPECT_EQ(s.opf.modules.uncertainty, d.opf.modules.uncertainty);
+  EXPECT_EQ(s.opf.history_length, d.opf.history_length);
+  EXPECT_EQ(s.opf.history_reset_gap, d.opf.history_reset_gap);
+  EXPECT_EQ(s.opf.carry_particles, d.opf.carry_particles);
+  EXPECT_EQ(s.opf.motion.translation, d.opf.motion.translation);
+  EXPECT_EQ(s.opf.motion.rotation, d.opf.motion.rotation);
+  EXPECT_EQ(s.opf.trajectory.translation_order, d.opf.trajectory.translation_order);
+  EXPECT_EQ(s.opf.trajectory.rotation_order, d.opf.trajectory.rotation_order);
+  EXPECT_EQ(s.opf.trajectory.loss, d.opf.trajectory.loss);
+  EXPECT_EQ(s.opf.trajectory.translation_loss_scale, d.opf.trajectory.translation_loss_scale);
+  EXPECT_EQ(s.opf.trajectory.rotation_loss_scale, d.opf.trajectory.rotation_loss_scale);
+  EXPECT_EQ(s.opf.trajectory.max_iterations, d.opf.trajectory.max_iterations);
+  EXPECT_EQ(s.opf.occluder.epsilon_occ, d.opf.occluder.epsilon_occ);
+  EXPECT_EQ(s.opf.occluder.plane, d.opf.occluder.plane);
+  EXPECT_EQ(s.opf.occluder.camera_position.has_value(), d.opf.occluder.camera_position.has_value());
+  EXPECT_EQ(s.opf.occluder.keep_offset, d.opf.occluder.keep_offset);
+  EXPECT_EQ(s.opf.uncertainty.kappa, d.opf.uncertainty.kappa);
+  EXPECT_EQ(s.opf.uncertainty.reference_speed, d.opf.uncertainty.reference_speed);
+  EXPECT_EQ(s.opf.uncertainty.reference_period, d.opf.uncertainty.reference_period);
+  EXPECT_EQ(s.opf.uncertainty.speed_window, d.opf.uncertainty.speed_window);
+  EXPECT_EQ(s.opf.uncertainty.max_scale, d.opf.uncertainty.max_scale);
+  EXPECT_EQ(s.opf.feedback.epsilon_safe, d.opf.feedback.epsilon_safe);
+  EXPECT_EQ(s.oapf.occlusion_rate, d.oapf.occlusion_rate);
+  EXPECT_EQ(s.oapf.reappearance_rate, d.oapf.reappearance_rate);
+  EXPECT_EQ(s.oapf.miss_probability, d.oapf.miss_probability);
+  EXPECT_EQ(s.oapf.occluded_likelihood_sigmas, d.oapf.occluded_likelihood_sigmas);
+  EXPECT_EQ(s.oapf.spread_growth, d.oapf.spread_growth);
 }
 
 TEST(EstimatorSettingsYaml, EmptyTextGivesDefaults) {
@@ -87,6 +116,77 @@ TEST(EstimatorSettingsYaml, EveryKeyOverrides) {
   EXPECT_EQ(s.cvkf.initial_angular_velocity_std, 0.75);
 }
 
+TEST(EstimatorSettingsYaml, EveryOapfKeyOverrides) {
+  const EstimatorSettings s = parse_estimator_settings(
+      "oapf:\n"
+      "  occlusion_rate: 0.25\n"
+      "  reappearance_rate: 3\n"
+      "  miss_probability: 1\n"
+      "  occluded_likelihood_sigmas: 4.5\n"
+      "  spread_growth: 0\n",
+      "settings.yaml");
+  EXPECT_EQ(s.oapf.occlusion_rate, 0.25);
+  EXPECT_EQ(s.oapf.reappearance_rate, 3.0);
+  EXPECT_EQ(s.oapf.miss_probability, 1.0);
+  EXPECT_EQ(s.oapf.occluded_likelihood_sigmas, 4.5);
+  EXPECT_EQ(s.oapf.spread_growth, 0.0);
+}
+
+TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
+  const EstimatorSettings s = parse_estimator_settings(
+      "opf:\n"
+      "  modules: {dynamics: false, occluder: false, uncertainty: false}\n"
+      "  history_length: 30\n"
+      "  history_reset_gap: 1.5\n"
+      "  carry_particles: false\n"
+      "  motion_thresholds: {translation: 0.02, rotation: 0.25}\n"
+      "  trajectory: {translation_order: 2, rotation_order: 0, loss: cauchy,\n"
+      "               translation_loss_scale: 0.03, rotation_loss_scale: 0.1, max_iterations: 20}\n"
+      "  occluder: {epsilon_occ: 0.5, plane: xy, camera_position: [0.55, 0, 0.8], keep_offset: "
+      "true}\n"
+      "  uncertainty: {kappa: 1.1, reference_speed: 0.2, reference_period: 0.01,\n"
+      "                speed_window: 0.5, max_scale: 100}\n"
+      "  feedback: {epsilon_safe: 0.5}\n",
+      "settings.yaml");
+  const OpfOptions& o = s.opf;
+  EXPECT_FALSE(o.modules.dynamics || o.modules.occluder || o.modules.uncertainty);
+  EXPECT_EQ(o.history_length, 30u);
+  EXPECT_EQ(o.history_reset_gap, 1.5);
+  EXPECT_FALSE(o.carry_particles);
+  EXPECT_EQ(o.motion.translation, 0.02);
+  EXPECT_EQ(o.motion.rotation, 0.25);
+  EXPECT_EQ(o.trajectory.translation_order, 2);
+  EXPECT_EQ(o.trajectory.rotation_order, 0);
+  EXPECT_EQ(o.trajectory.loss, RobustLoss::kCauchy);
+  EXPECT_EQ(o.trajectory.translation_loss_scale, 0.03);
+  EXPECT_EQ(o.trajectory.rotation_loss_scale, 0.1);
+  EXPECT_EQ(o.trajectory.max_iterations, 20);
+  EXPECT_EQ(o.occluder.epsilon_occ, 0.5);
+  EXPECT_EQ(o.occluder.plane, OccluderPlane::kXY);
+  ASSERT_TRUE(o.occluder.camera_position.has_value());
+  EXPECT_EQ(*o.occluder.camera_position, Eigen::Vector3d(0.55, 0, 0.8));
+  EXPECT_TRUE(o.occluder.keep_offset);
+  EXPECT_EQ(o.uncertainty.kappa, 1.1);
+  EXPECT_EQ(o.uncertainty.reference_speed, 0.2);
+  EXPECT_EQ(o.uncertainty.reference_period, 0.01);
+  EXPECT_EQ(o.uncertainty.speed_window, 0.5);
+  EXPECT_EQ(o.uncertainty.max_scale, 100.0);
+  EXPECT_EQ(o.feedback.epsilon_safe, 0.5);
+}
+
+TEST(EstimatorSettingsYaml, ParticleOptionsAreSharedNotPerEstimator) {
+  // One `pf:` section configures the particle filter of pf, opf and oapf alike; a per-estimator
+  // `particles:` key would let paired comparisons drift apart silently, so it is unknown.
+  const InputError e = error_of("oapf:\n  particles:\n    translation_particles: 10\n");
+  EXPECT_EQ(e.field(), "oapf.particles");
+  EXPECT_EQ(e.line(), 2u);
+}
+
+TEST(EstimatorSettingsYaml, ShippedConfigDocumentsTheDefaults) {
+  expect_defaults(load_estimator_settings(std::filesystem::path(OPF_SOURCE_DIR) / "experiments" /
+                                          "configs" / "estimators.yaml"));
+}
+
 TEST(EstimatorSettingsYaml, PartialOverrideKeepsOtherDefaults) {
   const EstimatorSettings s =
       parse_estimator_settings("pf:\n  resampling:\n    scheme: residual\n", "settings.yaml");
@@ -112,6 +212,11 @@ TEST(EstimatorSettingsYaml, UnknownKeyNamesPathLineAndSuggestion) {
   EXPECT_EQ(particles.line(), 2u);
   EXPECT_TRUE(contains(particles.message(), "did you mean 'translation_particles'?"))
       << particles.what();
+
+  const InputError opf = error_of("opf:\n  uncertainty:\n    kapa: 1.1\n");
+  EXPECT_EQ(opf.line(), 3u);
+  EXPECT_EQ(opf.field(), "opf.uncertainty.kapa");
+  EXPECT_TRUE(contains(opf.message(), "did you mean 'kappa'?")) << opf.what();
 
   const InputError section = error_of("kf:\n  acceleration_noise: 1\n");
   EXPECT_EQ(section.line(), 1u);
@@ -147,6 +252,21 @@ TEST(EstimatorSettingsYaml, OutOfRangeValuesAreRejected) {
            Case{"cvkf:\n  initial_velocity_std: 0\n", "cvkf.initial_velocity_std", 2},
            Case{"cvkf:\n  observation_noise: {translation: -1}\n",
                 "cvkf.observation_noise.translation", 2},
+           Case{"oapf:\n  occlusion_rate: 0\n", "oapf.occlusion_rate", 2},
+           Case{"oapf:\n  reappearance_rate: -1\n", "oapf.reappearance_rate", 2},
+           Case{"oapf:\n  miss_probability: 0\n", "oapf.miss_probability", 2},
+           Case{"oapf:\n  miss_probability: 1.5\n", "oapf.miss_probability", 2},
+           Case{"oapf:\n  occluded_likelihood_sigmas: 0\n", "oapf.occluded_likelihood_sigmas", 2},
+           Case{"oapf:\n  spread_growth: -0.5\n", "oapf.spread_growth", 2},
+           Case{"opf:\n  history_length: 1\n", "opf.history_length", 2},
+           Case{"opf:\n  uncertainty: {kappa: 1.0}\n", "opf.uncertainty.kappa", 2},
+           Case{"opf:\n  feedback:\n    epsilon_safe: 0\n", "opf.feedback.epsilon_safe", 3},
+           Case{"opf:\n  trajectory: {translation_order: 6}\n", "opf.trajectory.translation_order",
+                2},
+           Case{"opf:\n  trajectory: {loss: l1}\n", "opf.trajectory.loss", 2},
+           Case{"opf:\n  occluder: {plane: yz}\n", "opf.occluder.plane", 2},
+           Case{"opf:\n  occluder: {camera_position: [1, 2]}\n", "opf.occluder.camera_position", 2},
+           Case{"opf:\n  occluder: {epsilon_occ: -0.1}\n", "opf.occluder.epsilon_occ", 2},
        }) {
     const InputError e = error_of(c.yaml);
     EXPECT_EQ(e.field(), c.field) << c.yaml;

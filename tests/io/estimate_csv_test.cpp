@@ -19,7 +19,8 @@ namespace opf {
 namespace {
 
 constexpr const char* kHeader =
-    "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll\n";
+    "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
+    "hypothesis,alert,occlusion_probability\n";
 
 Estimate make_estimate(double t, const std::string& object, const mrpt::poses::CPose3D& mean) {
   mrpt::math::CMatrixDouble66 cov;
@@ -78,7 +79,7 @@ TEST(EstimateCsvFormat, RowUsesShortestNumbersModeAndStandardDeviations) {
   expected.replace(expected.find("0.0003"), 6, csv::format_double(3e-4));
   for (int i = 0; i < 6; ++i)
     expected.append(",").append(csv::format_double(std::sqrt(estimate.pose.cov(i, i))));
-  EXPECT_EQ(out.str(), expected + "\n");
+  EXPECT_EQ(out.str(), expected + ",0,0,\n");
   EXPECT_EQ(split_row(out.str())[11], "0.1");  // sqrt(0.01)
 
   std::ostringstream third;
@@ -131,6 +132,24 @@ TEST_F(EstimateCsv, RoundTripsExactly) {
   }
 }
 
+TEST_F(EstimateCsv, RoundTripsHypothesisAlertAndOcclusionProbability) {
+  Estimate estimate = make_estimate(2.0, "ball", mrpt::poses::CPose3D(0.1, 0.2, 0.3, 0, 0, 0));
+  estimate.hypothesis = 1;
+  estimate.alert = true;
+  estimate.occlusion_probability = 0.25;
+  std::ostringstream out;
+  write_estimate_row(out, estimate);
+  const auto fields = split_row(out.str());
+  ASSERT_EQ(fields.size(), 20u);
+  EXPECT_EQ(fields[17], "1");
+  EXPECT_EQ(fields[18], "1");
+  EXPECT_EQ(fields[19], "0.25");
+  const auto records = read_estimate_csv(write({estimate}));
+  ASSERT_EQ(records.size(), 1u);
+  EXPECT_EQ(records[0].hypothesis, 1);
+  EXPECT_TRUE(records[0].alert);
+}
+
 TEST_F(EstimateCsv, WritingIsDeterministic) {
   const std::vector<Estimate> estimates = {
       make_estimate(0.5, "ball", mrpt::poses::CPose3D(0.1, 0.2, 0.3, 0.4, -0.5, 3.0))};
@@ -143,17 +162,17 @@ TEST_F(EstimateCsv, WritingIsDeterministic) {
 TEST_F(EstimateCsv, ReaderReportsBadFields) {
   const std::string header = kHeader;
   try {
-    read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,1,0.1,measured,1,1,1,1,1,1\n" +
-                                 "0.1,ball,1,2,oops,0,0,0,1,0.1,measured,1,1,1,1,1,1\n"));
+    read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,1,0.1,measured,1,1,1,1,1,1,0,0,\n" +
+                                 "0.1,ball,1,2,oops,0,0,0,1,0.1,measured,1,1,1,1,1,1,0,0,\n"));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 3u);
     EXPECT_EQ(e.field(), "z");
   }
   EXPECT_THROW(read_estimate_csv(write_text("t,object,x\n")), InputError);
-  EXPECT_THROW(
-      read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,2,0.1,measured,1,1,1,1,1,1\n")),
-      InputError);
+  EXPECT_THROW(read_estimate_csv(
+                   write_text(header + "0,ball,1,2,3,0,0,0,2,0.1,measured,1,1,1,1,1,1,0,0,\n")),
+               InputError);
   EXPECT_THROW(read_estimate_csv(dir_ / "missing.csv"), InputError);
 }
 

@@ -1,0 +1,285 @@
+#include "estimators/object_permanence_filter.h"
+
+#include "core/pose_conversion.h"
+#include "particles/random.h"
+#include "permanence/motion_classifier.h"
+#include "permanence/occluder_selection.h"
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+namespace opf {
+namespace {
+
+const Estimate* find_estimate(const EnsembleView& ensemble, const std::string& object) {
+  for (const Estimate& e : ensemble.previous_estimates)
+    if (e.object == object) return &e;
+  return nullptr;
+}
+
+Eigen::Matrix3d translation_covariance(const Estimate& estimate) {
+  return estimate.pose.cov.asEigen().topLeftCorner<3, 3>();
+}
+
+}  // namespace
+
+void validate(const OpfOptions& options) {
+  validate(options.particles);
+  validate(options.uncertainty);
+  if (options.history_length < 2)
+    throw std::invalid_argument("OPF option history_length (H) must be at least 2");
+  if (!(options.history_reset_gap >= 0.0))
+    throw std::invalid_argument("OPF option history_reset_gap must be >= 0");
+  if (!(options.motion.translation >= 0.0) || !(options.motion.rotation >= 0.0))
+    throw std::invalid_argument("OPF motion thresholds must be >= 0");
+  if (!(options.occluder.epsilon_occ >= 0.0))
+    throw std::invalid_argument("OPF option occluder.epsilon_occ must be >= 0");
+  if (!(options.feedback.epsilon_safe > 0.0))
+    throw std::invalid_argument("OPF option feedback.epsilon_safe must be > 0");
+  if (options.trajectory.translation_order < 0 || options.trajectory.translation_order > 5 ||
+      options.trajectory.rotation_order < 0 || options.trajectory.rotation_order > 5)
+    throw std::invalid_argument("OPF trajectory polynomial orders must be in [0, 5]");
+}
+
+ObjectPermanenceFilter::ObjectPermanenceFilter(const OpfOptions& options, std::string object,
+                                               std::uint64_t seed)
+    : options_(options), object_(std::move(object)), seed_(seed) {
+  validate(options_);
+}
+
+Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D& first) {
+  hypotheses_.clear();
+  hypotheses_.emplace_back(PoseParticleFilter(options_.particles, seed_),
+                           CovarianceInflation(options_.uncertainty));
+  hypotheses_[0].filter.initialise(translation_of(first), orientation_of(first));
+  history_.clear();
+  history_.push_back({t, translation_of(first), orientation_of(first)});
+  t_ = t;
+  hidden_ = false;
+  initialised_ = true;
+  return make_estimate(hypotheses_[0], 0);
+}
+
+Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* measurement,
+                                      const EnsembleView& ensemble) {
+  if (!initialised_) throw std::logic_error("ObjectPermanenceFilter::step before initialise");
+  const double dt = t - t_;
+  if (!(dt > 0.0)) {
+    std::ostringstream msg;
+    msg << "ObjectPermanenceFilter: time " << t << " s does not follow " << t_ << " s";
+    throw std::invalid_argument(msg.str());
+  }
+  const double last_seen = t_;
+  t_ = t;
+  for (Hypothesis& h : hypotheses_) h.filter.predict(dt);
+
+  if (measurement) {
+    const Eigen::Vector3d position = translation_of(*measurement);
+    const Eigen::Quaterniond orientation = orientation_of(*measurement);
+    keep_hypothesis_explaining(position);
+    Hypothesis& h = hypotheses_[0];
+    h.filter.reweight(position, orientation);
+    h.filter.normalise_and_resample();
+    h.inflation.reset();
+    h.source = Source::kMeasurement;
+    h.trajectory.reset();
+    h.occluder.clear();
+    h.last_carrier_position.reset();
+    h.carrier_track.clear();
+    if (hidden_ && t - hidden_since_ > options_.history_reset_gap) history_.clear();
+    hidden_ = false;
+    const TranslationMoments tm = h.filter.translation_moments();
+    history_.push_back({t, tm.mean, h.filter.rotation_moments().mean});
+    while (history_.size() > options_.history_length) history_.pop_front();
+    return make_estimate(h, 0);
+  }
+
+  if (!hidden_) {
+    hidden_ = true;
+    hidden_since_ = last_seen;
+    start_occlusion(last_seen, ensemble);
+  }
+  for (Hypothesis& h : hypotheses_) {
+    const auto virtual_z = virtual_measurement(h, t, ensemble);
+    if (virtual_z && options_.carry_particles)
+      h.filter.shift(virtual_z->carrier_translation, virtual_z->carrier_rotation);
+    // Without the uncertainty module Q~ stays Q; with it Q~ grows every hidden step, also when no
+    // module supplies a virtual measurement, so the feedback module still sees the time hidden.
+    if (options_.modules.uncertainty) h.inflation.step(virtual_z ? virtual_z->speed : 0.0, dt);
+    if (virtual_z)
+      h.filter.reweight(virtual_z->position, virtual_z->orientation, h.inflation.scale());
+    h.filter.normalise_and_resample();
+  }
+  return make_estimate(hypotheses_[0], 0);
+}
+
+void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleView& ensemble) {
+  // A hypothesis per occluder exists only while hidden; at onset there is one.
+  hypotheses_.erase(hypotheses_.begin() + 1, hypotheses_.end());
+  Hypothesis& h = hypotheses_[0];
+  h.source = Source::kNone;
+
+  const std::vector<TrajectorySample> window(history_.begin(), history_.end());
+  const int needed =
+      std::max(options_.trajectory.translation_order, options_.trajectory.rotation_order) + 1;
+  if (options_.modules.dynamics && static_cast<int>(window.size()) >= std::max(needed, 2) &&
+      classify_motion(window, options_.motion) == Motion::kMoving) {
+    try {
+      h.trajectory = fit_trajectory(window, options_.trajectory);
+      h.source = Source::kTrajectory;
+      h.last_carrier_position = h.trajectory->position(last_seen);
+      h.last_carrier_orientation = h.trajectory->orientation(last_seen);
+      return;
+    } catch (const std::exception&) {
+      // A degenerate window (e.g. repeated timestamps after a reset) cannot be fitted: treat the
+      // object as static and let the occluder module try.
+    }
+  }
+  if (!options_.modules.occluder) return;
+
+  std::vector<OccluderCandidate> candidates;
+  std::vector<const Estimate*> candidate_estimates;
+  for (const Estimate& e : ensemble.previous_estimates) {
+    if (e.object == object_) continue;
+    candidates.push_back({e.object, translation_of(e.pose.mean), translation_covariance(e)});
+    candidate_estimates.push_back(&e);
+  }
+  const TranslationMoments own = h.filter.translation_moments();
+  const OccluderChoice choice =
+      choose_occluders(own.mean, own.covariance, candidates, options_.occluder);
+  if (!choice.nearest) return;
+
+  h.position_at_onset = own.mean;
+  h.orientation_at_onset = h.filter.rotation_moments().mean;
+  if (choice.second) {
+    Hypothesis twin = h;  // O_i': a copy of the filter that follows the second occluder
+    twin.filter.reseed(derive_seed(seed_, ++spawned_));
+    follow_occluder(twin, candidates[*choice.second].object, *candidate_estimates[*choice.second],
+                    ensemble);
+    follow_occluder(h, candidates[*choice.nearest].object, *candidate_estimates[*choice.nearest],
+                    ensemble);
+    hypotheses_.push_back(std::move(twin));
+  } else {
+    follow_occluder(h, candidates[*choice.nearest].object, *candidate_estimates[*choice.nearest],
+                    ensemble);
+  }
+}
+
+void ObjectPermanenceFilter::follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
+                                             const Estimate& occluder_estimate,
+                                             const EnsembleView& ensemble) const {
+  hypothesis.source = Source::kOccluder;
+  hypothesis.occluder = occluder;
+  // The offset is taken against what the virtual measurements will be: the occluder's
+  // measurement this frame when it has one (its estimate is a frame old and lags a moving
+  // occluder), else its estimate.
+  const Detection* detection = ensemble.frame.find(occluder);
+  const mrpt::poses::CPose3D& reference = detection ? detection->pose : occluder_estimate.pose.mean;
+  hypothesis.occluder_position_at_onset = translation_of(reference);
+  hypothesis.occluder_orientation_at_onset = orientation_of(reference);
+  hypothesis.last_carrier_position = translation_of(occluder_estimate.pose.mean);
+  hypothesis.last_carrier_orientation = orientation_of(occluder_estimate.pose.mean);
+  hypothesis.carrier_track.clear();
+}
+
+std::optional<ObjectPermanenceFilter::VirtualMeasurement>
+ObjectPermanenceFilter::virtual_measurement(Hypothesis& h, double t, const EnsembleView& ensemble) {
+  VirtualMeasurement z;
+  Eigen::Vector3d carrier_position;
+  Eigen::Quaterniond carrier_orientation;
+  if (h.source == Source::kTrajectory) {
+    z.position = carrier_position = h.trajectory->position(t);
+    z.orientation = carrier_orientation = h.trajectory->orientation(t);
+  } else if (h.source == Source::kOccluder) {
+    // The occluder's measurement this frame (the paper's y_k^j), or its estimate when it is
+    // hidden itself (a chain of occlusions). The carrier is its filtered estimate, so a still
+    // occluder reads as still rather than jittering with its measurement noise.
+    const Estimate* occluder_estimate = find_estimate(ensemble, h.occluder);
+    const Detection* occluder_detection = ensemble.frame.find(h.occluder);
+    if (!occluder_estimate && !occluder_detection) return std::nullopt;
+    const mrpt::poses::CPose3D& occluder_pose =
+        occluder_detection ? occluder_detection->pose : occluder_estimate->pose.mean;
+    const Eigen::Quaterniond carried =
+        orientation_of(occluder_pose) * h.occluder_orientation_at_onset.conjugate();
+    z.position = translation_of(occluder_pose);
+    if (options_.occluder.keep_offset)
+      z.position += carried * (h.position_at_onset - h.occluder_position_at_onset);
+    z.orientation = (carried * h.orientation_at_onset).normalized();
+    const mrpt::poses::CPose3D& carrier =
+        occluder_estimate ? occluder_estimate->pose.mean : occluder_detection->pose;
+    carrier_position = translation_of(carrier);
+    carrier_orientation = orientation_of(carrier);
+  } else {
+    return std::nullopt;
+  }
+  if (h.last_carrier_position) {
+    z.carrier_translation = carrier_position - *h.last_carrier_position;
+    z.carrier_rotation = carrier_orientation * h.last_carrier_orientation.conjugate();
+  }
+  if (h.source == Source::kTrajectory) {
+    z.speed = h.trajectory->velocity(t).norm();
+  } else {
+    h.carrier_track.emplace_back(t, carrier_position);
+    while (h.carrier_track.size() > 2 &&
+           t - h.carrier_track[1].first >= options_.uncertainty.speed_window)
+      h.carrier_track.pop_front();
+    // Divided by at least the window: right after onset the baseline is a frame or two, and a
+    // still occluder's jitter over one frame would read as speed.
+    const auto& [t0, p0] = h.carrier_track.front();
+    z.speed = (carrier_position - p0).norm() /
+              std::max(t - t0, std::max(options_.uncertainty.speed_window, 1e-9));
+  }
+  h.last_carrier_position = carrier_position;
+  h.last_carrier_orientation = carrier_orientation;
+  return z;
+}
+
+void ObjectPermanenceFilter::keep_hypothesis_explaining(const Eigen::Vector3d& position) {
+  if (hypotheses_.size() < 2) return;
+  std::size_t best = 0;
+  double best_evidence = hypotheses_[0].filter.translation_log_evidence(position);
+  for (std::size_t i = 1; i < hypotheses_.size(); ++i) {
+    const double evidence = hypotheses_[i].filter.translation_log_evidence(position);
+    if (evidence > best_evidence) {
+      best = i;
+      best_evidence = evidence;
+    }
+  }
+  if (best != 0) hypotheses_[0] = std::move(hypotheses_[best]);
+  hypotheses_.erase(hypotheses_.begin() + 1, hypotheses_.end());
+}
+
+Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) const {
+  Estimate estimate;
+  estimate.object = object_;
+  estimate.t = t_;
+  estimate.pose = h.filter.estimate();
+  estimate.observation_trace = h.filter.observation_trace(h.inflation.scale());
+  estimate.alert = safety_alert(estimate.observation_trace, options_.feedback);
+  estimate.hypothesis = index;
+  switch (h.source) {
+    case Source::kMeasurement:
+      estimate.mode = EstimateMode::kMeasured;
+      break;
+    case Source::kTrajectory:
+      estimate.mode = EstimateMode::kDynamics;
+      break;
+    case Source::kOccluder:
+      estimate.mode = EstimateMode::kOccluder;
+      break;
+    case Source::kNone:
+      estimate.mode = EstimateMode::kPredicted;
+      break;
+  }
+  return estimate;
+}
+
+std::vector<Estimate> ObjectPermanenceFilter::extra_hypotheses() const {
+  std::vector<Estimate> extras;
+  for (std::size_t i = 1; i < hypotheses_.size(); ++i)
+    extras.push_back(make_estimate(hypotheses_[i], static_cast<int>(i)));
+  return extras;
+}
+
+}  // namespace opf

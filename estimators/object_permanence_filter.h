@@ -1,0 +1,90 @@
+#pragma once
+// The Object Permanence Filter (paper Sec. III): the 6-DoF particle filter whose update, when the
+// measurement is missing, uses a virtual measurement from the Object Permanence update: the
+// fitted trajectory of a moving object (dynamics module) or the measurement of the object hiding
+// a static one (occluder module), with an inflated observation covariance (uncertainty module)
+// whose trace drives the safety alert (feedback module). Two equally likely occluders spawn a
+// second hypothesis; the one that explains the object's reappearance survives.
+
+#include "core/estimator.h"
+#include "estimators/opf_options.h"
+#include "particles/pose_particle_filter.h"
+
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace opf {
+
+class ObjectPermanenceFilter final : public Estimator {
+ public:
+  /// `object` is this filter's own name in the ensemble (so it never picks itself as occluder).
+  ObjectPermanenceFilter(const OpfOptions& options, std::string object, std::uint64_t seed);
+
+  std::string_view name() const override { return "opf"; }
+  Estimate initialise(double t, const mrpt::poses::CPose3D& first_measurement) override;
+  Estimate step(double t, const mrpt::poses::CPose3D* measurement,
+                const EnsembleView& ensemble) override;
+  std::vector<Estimate> extra_hypotheses() const override;
+
+  std::size_t hypothesis_count() const { return hypotheses_.size(); }
+  /// The occluder followed by hypothesis `index`, empty when it follows none.
+  const std::string& occluder_of(std::size_t index) const { return hypotheses_.at(index).occluder; }
+
+ private:
+  enum class Source { kMeasurement, kTrajectory, kOccluder, kNone };
+
+  struct Hypothesis {
+    Hypothesis(PoseParticleFilter f, CovarianceInflation i)
+        : filter(std::move(f)), inflation(std::move(i)) {}
+
+    PoseParticleFilter filter;
+    CovarianceInflation inflation;
+    Source source = Source::kMeasurement;
+    std::optional<TrajectoryModel> trajectory;
+    std::string occluder;
+    // The occluder's pose and this object's pose at occlusion onset: the hidden object is carried
+    // rigidly with the occluder's rotation (and, with keep_offset, at its initial offset).
+    Eigen::Vector3d occluder_position_at_onset = Eigen::Vector3d::Zero();
+    Eigen::Quaterniond occluder_orientation_at_onset = Eigen::Quaterniond::Identity();
+    Eigen::Vector3d position_at_onset = Eigen::Vector3d::Zero();
+    Eigen::Quaterniond orientation_at_onset = Eigen::Quaterniond::Identity();
+    // The carrier's pose at the previous step (the trajectory's, or the occluder's estimate).
+    std::optional<Eigen::Vector3d> last_carrier_position;
+    Eigen::Quaterniond last_carrier_orientation = Eigen::Quaterniond::Identity();
+    // Recent (t, position) of the occluder's estimate, spanning the speed window.
+    std::deque<std::pair<double, Eigen::Vector3d>> carrier_track;
+  };
+
+  struct VirtualMeasurement {
+    Eigen::Vector3d position;
+    Eigen::Quaterniond orientation;
+    double speed = 0.0;  ///< m/s of the carrier, for the uncertainty module
+    // The motion the carrier made since the previous step (world frame), for carry_particles.
+    Eigen::Vector3d carrier_translation = Eigen::Vector3d::Zero();
+    Eigen::Quaterniond carrier_rotation = Eigen::Quaterniond::Identity();
+  };
+
+  void start_occlusion(double last_seen, const EnsembleView& ensemble);
+  void follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
+                       const Estimate& occluder_estimate, const EnsembleView& ensemble) const;
+  std::optional<VirtualMeasurement> virtual_measurement(Hypothesis& hypothesis, double t,
+                                                        const EnsembleView& ensemble);
+  void keep_hypothesis_explaining(const Eigen::Vector3d& position);
+  Estimate make_estimate(const Hypothesis& hypothesis, int index) const;
+
+  OpfOptions options_;
+  std::string object_;
+  std::uint64_t seed_;
+  std::uint64_t spawned_ = 0;
+  std::vector<Hypothesis> hypotheses_;  ///< [0] is the object's main estimate
+  std::deque<TrajectorySample> history_;
+  double t_ = 0.0;
+  double hidden_since_ = 0.0;
+  bool hidden_ = false;
+  bool initialised_ = false;
+};
+
+}  // namespace opf

@@ -1,0 +1,20 @@
+#include "permanence/motion_classifier.h"
+
+#include "core/so3.h"
+
+namespace opf {
+
+Motion classify_motion(std::span<const TrajectorySample> window,
+                       const MotionThresholds& thresholds) {
+  const double t2 = thresholds.translation * thresholds.translation;
+  for (std::size_t p = 0; p < window.size(); ++p) {
+    for (std::size_t q = p + 1; q < window.size(); ++q) {
+      if ((window[p].position - window[q].position).squaredNorm() > t2) return Motion::kMoving;
+      if (so3::angle_between(window[p].orientation, window[q].orientation) > thresholds.rotation)
+        return Motion::kMoving;
+    }
+  }
+  return Motion::kStatic;
+}
+
+}  // namespace opf

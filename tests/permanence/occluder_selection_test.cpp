@@ -1,0 +1,87 @@
+#include "permanence/occluder_selection.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace opf {
+namespace {
+
+const Eigen::Matrix3d kCloud = Eigen::Matrix3d::Identity() * 1e-4;  // 1 cm std per axis
+
+OccluderCandidate at(const std::string& name, double x, double y, double z) {
+  return {name, Eigen::Vector3d(x, y, z), kCloud};
+}
+
+TEST(OccluderSelection, NearestCandidateIsTheOccluder) {
+  const std::vector<OccluderCandidate> candidates = {at("right_mug", 0.4, -0.15, 0.03),
+                                                     at("left_mug", 0.4, 0.09, 0.03),
+                                                     at("tray", 0.55, -0.09, 0.2)};
+  const auto choice = choose_occluders({0.4, 0.06, 0.0}, kCloud, candidates, OccluderOptions{});
+  ASSERT_TRUE(choice.nearest);
+  EXPECT_EQ(candidates[*choice.nearest].object, "left_mug");
+  EXPECT_FALSE(choice.ambiguous());
+}
+
+TEST(OccluderSelection, TwoEquallyCloseCandidatesAreAmbiguous) {
+  const std::vector<OccluderCandidate> candidates = {
+      at("a", 0.4, 0.05, 0.03), at("b", 0.4, -0.05, 0.03), at("far", 0.9, 0.0, 0.03)};
+  const auto choice = choose_occluders({0.4, 0.0, 0.0}, kCloud, candidates, OccluderOptions{});
+  ASSERT_TRUE(choice.ambiguous());
+  EXPECT_NEAR(choice.nearest_distance, choice.second_distance, 1e-9);
+  EXPECT_NE(*choice.nearest, *choice.second);
+  EXPECT_NE(candidates[*choice.nearest].object, "far");
+  EXPECT_NE(candidates[*choice.second].object, "far");
+}
+
+TEST(OccluderSelection, EpsilonOccDecidesBetweenOneAndTwo) {
+  // D_B gap between the two: both clouds are 1 cm, the means 4.0 and 4.2 cm away in x-y:
+  // D_B = d^2 / (8 * 1e-4) -> 2.0 and 2.205, a gap of 0.205.
+  const std::vector<OccluderCandidate> candidates = {at("a", 0.04, 0.0, 0.0),
+                                                     at("b", -0.042, 0.0, 0.0)};
+  OccluderOptions options;
+  options.epsilon_occ = 0.2;
+  EXPECT_FALSE(choose_occluders({0, 0, 0}, kCloud, candidates, options).ambiguous());
+  options.epsilon_occ = 0.21;
+  EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, candidates, options).ambiguous());
+}
+
+TEST(OccluderSelection, LineOfSightIgnoresDepthAlongTheRay) {
+  // A top-down camera: the tray 20 cm above the ball covers it; a mug beside it at the same
+  // height does not, though it is closer in 3-D.
+  const std::vector<OccluderCandidate> candidates = {at("tray", 0.4, 0.0, 0.2),
+                                                     at("mug", 0.4, 0.12, 0.0)};
+  OccluderOptions options;
+  options.camera_position = Eigen::Vector3d(0.4, 0.0, 0.8);
+  const auto sight = choose_occluders({0.4, 0.0, 0.0}, kCloud, candidates, options);
+  EXPECT_EQ(candidates[*sight.nearest].object, "tray");
+  options.plane = OccluderPlane::k3D;
+  const auto full = choose_occluders({0.4, 0.0, 0.0}, kCloud, candidates, options);
+  EXPECT_EQ(candidates[*full.nearest].object, "mug");
+}
+
+TEST(OccluderSelection, ObliqueLineOfSightProjectsAlongTheRay) {
+  // Camera off to the side: the occluder lies on the ray from the camera to the object.
+  const Eigen::Vector3d camera(0.0, 0.0, 1.0), hidden(1.0, 0.0, 0.0);
+  const Eigen::Vector3d on_ray = camera + 0.7 * (hidden - camera);
+  const std::vector<OccluderCandidate> candidates = {
+      at("on_ray", on_ray.x(), on_ray.y(), on_ray.z()), at("above", 1.0, 0.0, 0.25)};
+  OccluderOptions options;
+  options.camera_position = camera;
+  const auto choice = choose_occluders(hidden, kCloud, candidates, options);
+  EXPECT_EQ(candidates[*choice.nearest].object, "on_ray");
+  const Eigen::MatrixXd p = occlusion_plane_projection(hidden, options);
+  EXPECT_LT((p * (hidden - camera)).norm(), 1e-12);
+  EXPECT_LT((p * p.transpose() - Eigen::Matrix2d::Identity()).norm(), 1e-12);
+}
+
+TEST(OccluderSelection, NoCandidateNoOccluderOneCandidateIsIt) {
+  EXPECT_FALSE(choose_occluders({0, 0, 0}, kCloud, {}, OccluderOptions{}).nearest);
+  const std::vector<OccluderCandidate> one = {at("only", 5.0, 5.0, 0.0)};
+  const auto choice = choose_occluders({0, 0, 0}, kCloud, one, OccluderOptions{});
+  EXPECT_EQ(choice.nearest, 0u);
+  EXPECT_FALSE(choice.ambiguous());
+}
+
+}  // namespace
+}  // namespace opf
