@@ -4,6 +4,7 @@
 #include "core/pose_conversion.h"
 #include "core/so3.h"
 #include "estimators/cv_kalman.h"
+#include "estimators/object_permanence_filter.h"
 #include "estimators/standard_pf.h"
 #include "particles/random.h"
 
@@ -54,6 +55,23 @@ BENCHMARK(BM_StandardPfStep)
     ->Range(100, 100000)
     ->Arg(5000)
     ->Unit(benchmark::kMicrosecond);
+
+// An OPF step while the object is hidden: predict, carry along the fitted trajectory, update
+// with the virtual measurement under the inflated Q~, resample. The fit itself happens once at
+// occlusion onset, before the timed loop (see trajectory_fit_bench.cpp for its cost).
+void BM_OpfHiddenStep(benchmark::State& state) {
+  OpfOptions options;
+  options.particles.translation_particles = options.particles.rotation_particles =
+      std::size_t(state.range(0));
+  ObjectPermanenceFilter opf(options, "ball", 7);
+  const auto stream = measurements(60);
+  opf.initialise(0.0, stream[0]);
+  double t = 0.0;
+  for (std::size_t k = 1; k < stream.size(); ++k) opf.step(t += kDt, &stream[k], empty_ensemble());
+  for (auto _ : state) benchmark::DoNotOptimize(opf.step(t += kDt, nullptr, empty_ensemble()));
+  state.SetItemsProcessed(state.iterations() * 2 * state.range(0));
+}
+BENCHMARK(BM_OpfHiddenStep)->Arg(1000)->Arg(5000)->Unit(benchmark::kMicrosecond);
 
 void BM_CvKalmanStep(benchmark::State& state) {
   ConstantVelocityKalman kf(CvKalmanOptions{});

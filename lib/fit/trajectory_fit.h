@@ -1,5 +1,5 @@
 #pragma once
-// The dynamics module's trajectory model (paper Sec. III-B.1, Eq. 10, label eq:polyfit): fitted
+// The dynamics module's trajectory model (paper Sec. III-B.1, Eq. 12, label eq:polyfit): fitted
 // robustly once, at occlusion onset, to the last H estimates, then extrapolated every frame as
 // virtual measurements.
 
@@ -21,11 +21,11 @@ struct TrajectorySample {
 
 enum class RobustLoss { kSquared, kHuber, kCauchy };
 
-/// Options of fit_trajectory. The paper (Eq. 10) fits first-order polynomials with a squared loss;
+/// Options of fit_trajectory. The paper (Eq. 12) fits first-order polynomials with a squared loss;
 /// the robust loss and the higher orders are this toolkit's extensions.
 struct TrajectoryFitOptions {
-  int translation_order = 1;  ///< per axis, in time; Eq. 10 uses 1, ballistic motion needs 2
-  int rotation_order = 1;     ///< of the angle omega(t) about the fixed axis; Eq. 10 uses 1
+  int translation_order = 1;  ///< per axis, in time; Eq. 12 uses 1, ballistic motion needs 2
+  int rotation_order = 1;     ///< of the angle omega(t) about the fixed axis; Eq. 12 uses 1
   RobustLoss loss = RobustLoss::kHuber;  ///< robust to outlier detections
   double translation_loss_scale = 0.01;  ///< m: residual norm where the robust loss turns linear
   double rotation_loss_scale = 0.05;     ///< rad
