@@ -1,15 +1,13 @@
 #include "estimators/estimator_settings_yaml.h"
 
 #include "io/input_error.h"
+#include "io/input_file.h"
 #include "io/yaml_reader.h"
 #include "particles/resampling_scheme_names.h"
 
-#include <cerrno>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <system_error>
 
 namespace opf {
 
@@ -160,14 +158,7 @@ EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
 }
 
 EstimatorSettings load_estimator_settings(const std::filesystem::path& path) {
-  // Reading a directory "succeeds" with no content, which would silently mean all defaults.
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored))
-    throw InputError(path.string(), 0, "", "expected a settings file, got a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path.string(), 0, "",
-                     std::string("cannot open the settings file: ") + std::strerror(errno));
+  std::ifstream in = open_input_file(path, "settings file");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path.string(), 0, "", "read error");

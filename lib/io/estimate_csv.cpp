@@ -3,19 +3,17 @@
 #include "core/pose_conversion.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <optional>
 #include <string_view>
-#include <system_error>
 #include <utility>
 
 namespace opf {
@@ -57,14 +55,7 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate) {
 }
 
 std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path) {
-  // Reading a directory "succeeds" with no content, which would read as an empty file.
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored))
-    throw InputError(path.string(), 0, "", "expected an estimate file, got a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path.string(), 0, "",
-                     std::string("cannot open the estimate file: ") + std::strerror(errno));
+  std::ifstream in = open_input_file(path, "estimate file");
   csv::Reader reader(in, path.string(), kReadColumns);
   std::array<std::size_t, kReadColumns.size()> column{};
   for (std::size_t i = 0; i < kReadColumns.size(); ++i) column[i] = reader.column(kReadColumns[i]);

@@ -3,18 +3,16 @@
 #include "core/pose_conversion.h"
 #include "io/csv.h"
 #include "io/input_error.h"
+#include "io/input_file.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <map>
-#include <system_error>
 #include <utility>
 
 namespace opf {
@@ -91,15 +89,7 @@ MeasurementLog parse_measurement_log(std::istream& in, const std::string& source
 }
 
 MeasurementLog read_measurement_log(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec) && !ec)
-    throw InputError(path.string(), 0, "", "measurement log not found");
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path.string(), 0, "", "expected a measurement log file, got a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(path.string(), 0, "",
-                     std::string("cannot open the measurement log: ") + std::strerror(errno));
+  std::ifstream in = open_input_file(path, "measurement log");
   return parse_measurement_log(in, path.string());
 }
 

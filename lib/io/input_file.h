@@ -1,0 +1,15 @@
+#pragma once
+// Opens an input file for reading with the errors every reader wants: missing file, a directory
+// (which std::ifstream "opens" and reads as empty, i.e. silently as no data), or no permission,
+// each an InputError naming the path and what kind of file was expected.
+
+#include <filesystem>
+#include <fstream>
+#include <string_view>
+
+namespace opf {
+
+/// `what` names the file's role in messages, e.g. "measurement log".
+std::ifstream open_input_file(const std::filesystem::path& path, std::string_view what);
+
+}  // namespace opf
