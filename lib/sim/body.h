@@ -1,0 +1,44 @@
+#pragma once
+// The simulator's vocabulary: a rigid body of the scene (shape, size, colour) and a snapshot of
+// every body's pose at one instant, which the renderer draws and the experiments score against.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace opf::sim {
+
+/// Every shape's origin is its geometric centre; the cylinder's axis is its local z.
+enum class Shape { kSphere, kCylinder, kBox };
+
+struct Colour {
+  std::uint8_t r = 0, g = 0, b = 0;
+};
+
+struct Body {
+  std::string name;
+  Shape shape = Shape::kSphere;
+  /// Sphere: radius in x. Cylinder: radius in x, height in z. Box: full extents x, y, z. Metres.
+  Eigen::Vector3d size = Eigen::Vector3d(0.02, 0.02, 0.02);
+  Colour colour;
+  /// Tracked bodies are detected by colour and estimated; the others (table, robot) only render
+  /// and occlude.
+  bool tracked = true;
+};
+
+struct BodyPose {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+};
+
+/// The scene at one instant: poses[i] is the pose of bodies[i].
+struct SceneSnapshot {
+  double t = 0.0;
+  std::vector<Body> bodies;
+  std::vector<BodyPose> poses;
+};
+
+}  // namespace opf::sim
