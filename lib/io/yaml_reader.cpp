@@ -186,6 +186,24 @@ YamlReader& YamlReader::child(std::string_view key) {
   return *children_.back();
 }
 
+std::vector<YamlReader*> YamlReader::sequence(std::string_view key) {
+  std::vector<YamlReader*> items;
+  const Entry* entry = find(key);
+  if (entry == nullptr || entry->value.IsNull()) return items;
+  if (!entry->value.IsSequence())
+    fail(key, "expected a list, got " + describe(entry->value));
+  std::size_t index = 0;
+  for (const YAML::Node& item : entry->value) {
+    const std::string path = key_path(key).append("[").append(std::to_string(index++)).append("]");
+    if (!item.IsMap())
+      throw InputError(source_, line_of(item), path, "expected a mapping, got " + describe(item),
+                       kKey);
+    children_.push_back(std::make_unique<YamlReader>(item, path, source_));
+    items.push_back(children_.back().get());
+  }
+  return items;
+}
+
 void YamlReader::finish() const {
   for (const auto& entry : entries_) {
     if (entry.read) continue;

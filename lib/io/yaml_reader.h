@@ -46,6 +46,9 @@ class YamlReader {
   /// The nested mapping at `key` (an empty one when absent). Owned by this reader, which checks it
   /// in finish().
   YamlReader& child(std::string_view key);
+  /// The mappings of the sequence at `key` (none when absent), each checked in finish() like a
+  /// child; their paths read `key[i]`. InputError when `key` holds something else.
+  std::vector<YamlReader*> sequence(std::string_view key);
 
   /// Throws InputError for the first key present in the file but never read here or in a child,
   /// suggesting the closest known key by edit distance ("did you mean 'scheme'?").

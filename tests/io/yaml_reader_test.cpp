@@ -210,5 +210,37 @@ TEST(YamlReader, DuplicateKeysAreRejected) {
   EXPECT_TRUE(contains(e.message(), "first on line 1")) << e.what();
 }
 
+TEST(YamlReader, SequenceOfMappingsIsReadAndChecked) {
+  YamlReader yaml = YamlReader::parse(
+      "bodies:\n"
+      "  - name: ball\n"
+      "    radius: 0.025\n"
+      "  - name: mug\n"
+      "    radus: 0.04\n",
+      "scene.yaml");
+  const auto bodies = yaml.sequence("bodies");
+  ASSERT_EQ(bodies.size(), 2u);
+  std::string name;
+  double radius = 0.0;
+  bodies[0]->get("name", name);
+  bodies[0]->get("radius", radius);
+  EXPECT_EQ(name, "ball");
+  EXPECT_EQ(radius, 0.025);
+  bodies[1]->get("name", name);
+  bodies[1]->get("radius", radius);
+  try {
+    yaml.finish();
+    FAIL() << "the misspelt key went unnoticed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.field(), "bodies[1].radus");
+    EXPECT_EQ(e.line(), 5u);
+  }
+  EXPECT_TRUE(YamlReader::parse("", "s.yaml").sequence("bodies").empty());
+  YamlReader scalar = YamlReader::parse("bodies: 3\n", "s.yaml");
+  EXPECT_THROW(scalar.sequence("bodies"), InputError);
+  YamlReader not_maps = YamlReader::parse("bodies: [1, 2]\n", "s.yaml");
+  EXPECT_THROW(not_maps.sequence("bodies"), InputError);
+}
+
 }  // namespace
 }  // namespace opf

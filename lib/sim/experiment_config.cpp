@@ -1,0 +1,149 @@
+#include "sim/experiment_config.h"
+
+#include "io/input_error.h"
+#include "io/input_file.h"
+#include "io/yaml_reader.h"
+
+#include <cmath>
+#include <algorithm>
+#include <sstream>
+
+namespace opf::sim {
+namespace {
+
+Eigen::Vector3d vector3(YamlReader& yaml, std::string_view key, const Eigen::Vector3d& fallback) {
+  std::vector<double> v;
+  yaml.get(key, v, 3);
+  return v.empty() ? fallback : Eigen::Vector3d(v[0], v[1], v[2]);
+}
+
+Colour colour(YamlReader& yaml) {
+  std::vector<double> v;
+  yaml.get("colour", v, 3);
+  if (v.empty()) yaml.fail("colour", "expected a colour [r, g, b], each 0-255");
+  for (double c : v)
+    yaml.require("colour", c >= 0 && c <= 255 && c == std::floor(c), "integers from 0 to 255");
+  return {static_cast<std::uint8_t>(v[0]), static_cast<std::uint8_t>(v[1]),
+          static_cast<std::uint8_t>(v[2])};
+}
+
+Shape shape(YamlReader& yaml) {
+  std::string name;
+  yaml.get("shape", name);
+  if (name == "sphere") return Shape::kSphere;
+  if (name == "cylinder") return Shape::kCylinder;
+  if (name == "box") return Shape::kBox;
+  yaml.fail("shape", "expected sphere, cylinder or box, got \"" + name + "\"");
+}
+
+Eigen::Vector3d size(YamlReader& yaml, Shape s) {
+  std::vector<double> v;
+  const std::size_t count = s == Shape::kSphere ? 1 : s == Shape::kCylinder ? 2 : 3;
+  yaml.get("size", v, count);
+  if (v.empty())
+    yaml.fail("size", s == Shape::kSphere     ? "expected [radius]"
+                      : s == Shape::kCylinder ? "expected [radius, height]"
+                                              : "expected [x, y, z] extents");
+  for (double x : v) yaml.require("size", x > 0, "positive sizes in metres");
+  if (s == Shape::kSphere) return {v[0], v[0], v[0]};
+  if (s == Shape::kCylinder) return {v[0], v[0], v[1]};
+  return {v[0], v[1], v[2]};
+}
+
+ScriptedBody body(YamlReader& yaml) {
+  ScriptedBody b;
+  yaml.get("name", b.body.name);
+  if (b.body.name.empty()) yaml.fail("name", "expected a body name");
+  b.body.shape = shape(yaml);
+  b.body.size = size(yaml, b.body.shape);
+  b.body.colour = colour(yaml);
+  yaml.get("tracked", b.body.tracked);
+  yaml.get("rolling", b.rolling);
+  for (YamlReader* w : yaml.sequence("waypoints")) {
+    Waypoint waypoint;
+    w->get("t", waypoint.t);
+    waypoint.position = vector3(*w, "position", Eigen::Vector3d::Zero());
+    std::vector<double> yaw_pitch_roll;
+    w->get("yaw_pitch_roll", yaw_pitch_roll, 3);
+    if (!yaw_pitch_roll.empty())
+      waypoint.orientation = Eigen::AngleAxisd(yaw_pitch_roll[0], Eigen::Vector3d::UnitZ()) *
+                             Eigen::AngleAxisd(yaw_pitch_roll[1], Eigen::Vector3d::UnitY()) *
+                             Eigen::AngleAxisd(yaw_pitch_roll[2], Eigen::Vector3d::UnitX());
+    if (!b.waypoints.empty() && !(waypoint.t > b.waypoints.back().t))
+      w->fail("t", "waypoints must be in increasing time");
+    b.waypoints.push_back(waypoint);
+  }
+  if (b.waypoints.empty()) yaml.fail("waypoints", "expected at least one waypoint");
+  for (YamlReader* c : yaml.sequence("carried")) {
+    CarriedSpan span;
+    c->get("from", span.t_start);
+    c->get("to", span.t_end);
+    c->get("by", span.carrier);
+    c->require("to", span.t_end > span.t_start, "a time after 'from'");
+    b.carried.push_back(span);
+  }
+  return b;
+}
+
+}  // namespace
+
+ExperimentConfig parse_experiment(const std::string& yaml_text, const std::string& source) {
+  YamlReader yaml = YamlReader::parse(yaml_text, source);
+  ExperimentConfig config;
+  yaml.get("name", config.name);
+  yaml.get_positive("rate", config.rate);
+  std::size_t frames = 0;
+  yaml.get_positive("frames", frames);
+  config.frames = static_cast<int>(frames);
+
+  YamlReader& camera = yaml.child("camera");
+  config.camera.position = vector3(camera, "position", config.camera.position);
+  config.camera.look_at = vector3(camera, "look_at", config.camera.look_at);
+  config.camera.up = vector3(camera, "up", config.camera.up);
+  camera.get_positive("vertical_fov_deg", config.camera.vertical_fov_deg);
+  camera.require("vertical_fov_deg", config.camera.vertical_fov_deg < 170, "an angle below 170");
+
+  YamlReader& measurement = yaml.child("measurement");
+  measurement.get("position_noise", config.measurement.position_noise);
+  measurement.require("position_noise", config.measurement.position_noise >= 0, "a std >= 0");
+  measurement.get("orientation_noise", config.measurement.orientation_noise);
+  measurement.require("orientation_noise", config.measurement.orientation_noise >= 0, "a std >= 0");
+  measurement.get("min_visible_fraction", config.measurement.min_visible_fraction);
+  measurement.require(
+      "min_visible_fraction",
+      config.measurement.min_visible_fraction >= 0 && config.measurement.min_visible_fraction <= 1,
+      "a fraction in [0, 1]");
+  measurement.get_positive("min_area_pixels", config.measurement.min_area_pixels);
+
+  for (YamlReader* b : yaml.sequence("bodies")) config.bodies.push_back(body(*b));
+  if (config.bodies.empty()) yaml.fail("bodies", "expected at least one body");
+
+  std::vector<std::string> names;
+  for (const auto& b : config.bodies) names.push_back(b.body.name);
+  std::string interest;
+  yaml.get("objects_of_interest", interest);
+  for (std::stringstream list(interest); std::getline(list, interest, ',');) {
+    if (std::find(names.begin(), names.end(), interest) == names.end())
+      yaml.fail("objects_of_interest", "no body named '" + interest + "'");
+    config.objects_of_interest.push_back(interest);
+  }
+  if (config.objects_of_interest.empty())
+    yaml.fail("objects_of_interest", "expected the comma-separated names of scored bodies");
+  yaml.finish();
+  if (config.frames == 0) throw InputError(source, 0, "frames", "expected a frame count >= 1");
+  try {
+    const ScriptedScene check(config.bodies);  // unknown carriers, carry cycles
+  } catch (const std::invalid_argument& e) {
+    throw InputError(source, 0, "bodies", e.what());
+  }
+  return config;
+}
+
+ExperimentConfig load_experiment(const std::filesystem::path& path) {
+  std::ifstream in = open_input_file(path, "experiment file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_experiment(text.str(), path.string());
+}
+
+}  // namespace opf::sim

@@ -1,0 +1,56 @@
+#pragma once
+// An experiment as a user writes it (experiments/*.yaml): the scripted scene, the camera, the
+// measurement model and which objects the results table scores.
+
+#include "sim/scripted_scene.h"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace opf::sim {
+
+struct CameraSettings {
+  Eigen::Vector3d position = Eigen::Vector3d(0.55, 0.0, 0.49);  ///< paper experiment 1
+  Eigen::Vector3d look_at = Eigen::Vector3d(0.55, 0.0, 0.0);
+  /// World direction that points up in the image; world x for the paper's top-down cameras.
+  Eigen::Vector3d up = Eigen::Vector3d::UnitX();
+  double vertical_fov_deg = 75.0;
+  int width = 640;
+  int height = 480;
+};
+
+/// How the rendered image becomes a measurement (paper Sec. IV-B): colour blobs give the
+/// position; a marker-style sensor gives the orientation.
+struct MeasurementSettings {
+  /// Extra noise on the detected position, m per axis: the renderer is exact, a real camera and
+  /// detector are not.
+  double position_noise = 0.002;
+  /// Noise of the marker-style orientation sensor, rad per tangent axis.
+  double orientation_noise = 0.01;
+  /// An object is measured only when at least this fraction of its silhouette is visible (the
+  /// marker must be seen); the position is then the visible blob's centroid, biased when partly
+  /// covered, as in reality.
+  double min_visible_fraction = 0.3;
+  double min_area_pixels = 30.0;
+};
+
+struct ExperimentConfig {
+  std::string name;
+  double rate = 30.0;  ///< frames per second (paper: camera rate)
+  int frames = 0;
+  CameraSettings camera;
+  MeasurementSettings measurement;
+  std::vector<ScriptedBody> bodies;
+  /// The objects whose errors the results table reports (the paper scores the occluded object).
+  std::vector<std::string> objects_of_interest;
+};
+
+/// Throws InputError naming the file, line and key for anything malformed: unknown keys, wrong
+/// types, unknown shapes, carriers or objects of interest, waypoints out of time order.
+ExperimentConfig load_experiment(const std::filesystem::path& path);
+ExperimentConfig parse_experiment(const std::string& yaml_text, const std::string& source);
+
+}  // namespace opf::sim

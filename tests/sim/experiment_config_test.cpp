@@ -1,0 +1,94 @@
+#include "sim/experiment_config.h"
+
+#include "io/input_error.h"
+
+#include <gtest/gtest.h>
+
+namespace opf::sim {
+namespace {
+
+const std::string kMinimal =
+    "name: tiny\n"
+    "frames: 10\n"
+    "objects_of_interest: ball\n"
+    "bodies:\n"
+    "  - name: ball\n"
+    "    shape: sphere\n"
+    "    size: [0.025]\n"
+    "    colour: [220, 30, 30]\n"
+    "    waypoints: [{t: 0, position: [0.4, 0, 0]}, {t: 1, position: [0.5, 0, 0]}]\n";
+
+TEST(ExperimentConfig, ReadsAMinimalExperimentWithDefaults) {
+  const ExperimentConfig c = parse_experiment(kMinimal, "tiny.yaml");
+  EXPECT_EQ(c.name, "tiny");
+  EXPECT_EQ(c.frames, 10);
+  EXPECT_EQ(c.rate, 30.0);
+  ASSERT_EQ(c.bodies.size(), 1u);
+  EXPECT_EQ(c.bodies[0].body.shape, Shape::kSphere);
+  EXPECT_EQ(c.bodies[0].body.size, Eigen::Vector3d(0.025, 0.025, 0.025));
+  EXPECT_EQ(c.bodies[0].body.colour.r, 220);
+  EXPECT_EQ(c.bodies[0].waypoints.size(), 2u);
+  EXPECT_EQ(c.camera.position, Eigen::Vector3d(0.55, 0.0, 0.49));
+  EXPECT_EQ(c.objects_of_interest, std::vector<std::string>{"ball"});
+}
+
+TEST(ExperimentConfig, TheBundledGeneralOpFollowsThePaper) {
+  const ExperimentConfig c =
+      load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml");
+  EXPECT_EQ(c.frames, 330);
+  EXPECT_EQ(c.camera.position, Eigen::Vector3d(0.55, 0.0, 0.49));
+  const ScriptedScene scene(c.bodies);
+  // Paper geometry: the mugs start at [0.4, +-0.15, 0.03], the tray sits at [0.55, -0.09, 0.2],
+  // the left mug ends step 1 at [0.8, 0.15, 0.03] with the ball under it, and the ball ends step 2
+  // at [0.3, -0.35, 0].
+  EXPECT_LT((scene.pose_of("left_mug", 0.0).position - Eigen::Vector3d(0.4, 0.15, 0.03)).norm(),
+            1e-12);
+  EXPECT_LT((scene.pose_of("right_mug", 0.0).position - Eigen::Vector3d(0.4, -0.15, 0.03)).norm(),
+            1e-12);
+  EXPECT_LT((scene.pose_of("tray", 5.0).position - Eigen::Vector3d(0.55, -0.09, 0.2)).norm(),
+            1e-12);
+  EXPECT_LT((scene.pose_of("ball", 150 / 30.0).position - Eigen::Vector3d(0.8, 0.15, 0.0)).norm(),
+            1e-9);
+  EXPECT_LT(
+      (scene.pose_of("left_mug", 150 / 30.0).position - Eigen::Vector3d(0.8, 0.15, 0.03)).norm(),
+      1e-9);
+  EXPECT_LT((scene.pose_of("ball", 329 / 30.0).position - Eigen::Vector3d(0.3, -0.35, 0.0)).norm(),
+            0.01);
+}
+
+InputError error_of(const std::string& yaml) {
+  try {
+    parse_experiment(yaml, "bad.yaml");
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << yaml;
+  return InputError("", 0, "", "");
+}
+
+TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
+  std::string bad = kMinimal;
+  bad.replace(bad.find("sphere"), 6, "cone");
+  InputError e = error_of(bad);
+  EXPECT_EQ(e.field(), "bodies[0].shape");
+  EXPECT_EQ(e.line(), 6u);
+
+  bad = kMinimal;
+  bad.replace(bad.find("objects_of_interest: ball"), 25, "objects_of_interest: mug");
+  EXPECT_EQ(error_of(bad).field(), "objects_of_interest");
+
+  bad = kMinimal;
+  bad.replace(bad.find("{t: 1,"), 6, "{t: 0,");
+  EXPECT_EQ(error_of(bad).field(), "bodies[0].waypoints[1].t");
+
+  bad = kMinimal + "    carried: [{from: 0, to: 1, by: nobody}]\n";
+  EXPECT_EQ(error_of(bad).field(), "bodies");
+
+  bad = kMinimal + "camera: {fov: 60}\n";
+  e = error_of(bad);
+  EXPECT_EQ(e.field(), "camera.fov");
+  EXPECT_NE(std::string(e.what()).find("vertical_fov_deg"), std::string::npos) << e.what();
+}
+
+}  // namespace
+}  // namespace opf::sim
