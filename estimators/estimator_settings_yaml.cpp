@@ -38,6 +38,8 @@ void read_pf(YamlReader& yaml, PoseParticleFilterOptions& options) {
   observation.get_positive("translation", options.observation_noise_translation);
   observation.get_positive("rotation", options.observation_noise_rotation);
   read_resampling(yaml.child("resampling"), options.resampling);
+  yaml.get("reset_gate", options.reset_gate);
+  yaml.require("reset_gate", options.reset_gate >= 0.0, "a number of sigmas >= 0 (0 disables)");
 }
 
 void read_cvkf(YamlReader& yaml, CvKalmanOptions& options) {
@@ -108,6 +110,15 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   motion.require("translation", options.motion.translation >= 0.0, "a distance in m >= 0");
   motion.get("rotation", options.motion.rotation);
   motion.require("rotation", options.motion.rotation >= 0.0, "an angle in rad >= 0");
+  std::string test =
+      options.motion.test == MotionTest::kMaxPairwise ? "max_pairwise" : "fitted_displacement";
+  motion.get("test", test);
+  if (test == "max_pairwise")
+    options.motion.test = MotionTest::kMaxPairwise;
+  else if (test == "fitted_displacement")
+    options.motion.test = MotionTest::kFittedDisplacement;
+  else
+    motion.fail("test", "expected max_pairwise or fitted_displacement, got \"" + test + "\"");
 
   YamlReader& trajectory = yaml.child("trajectory");
   read_order(trajectory, "translation_order", options.trajectory.translation_order);
@@ -146,8 +157,9 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
 }  // namespace
 
 EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
-                                           const std::string& source_name) {
-  EstimatorSettings settings;
+                                           const std::string& source_name,
+                                           const EstimatorSettings& base) {
+  EstimatorSettings settings = base;
   YamlReader yaml = YamlReader::parse(yaml_text, source_name);
   read_pf(yaml.child("pf"), settings.pf);
   read_cvkf(yaml.child("cvkf"), settings.cvkf);
@@ -157,12 +169,13 @@ EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
   return settings;
 }
 
-EstimatorSettings load_estimator_settings(const std::filesystem::path& path) {
+EstimatorSettings load_estimator_settings(const std::filesystem::path& path,
+                                          const EstimatorSettings& base) {
   std::ifstream in = open_input_file(path, "settings file");
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(path.string(), 0, "", "read error");
-  return parse_estimator_settings(text.str(), path.string());
+  return parse_estimator_settings(text.str(), path.string(), base);
 }
 
 }  // namespace opf

@@ -36,10 +36,13 @@ namespace opf {
 
 /// Throws InputError naming the file, the line and the key path of the first problem, also when
 /// the file cannot be read.
-EstimatorSettings load_estimator_settings(const std::filesystem::path& path);
+EstimatorSettings load_estimator_settings(const std::filesystem::path& path,
+                                          const EstimatorSettings& base = {});
 
+/// Keys present override `base` (the defaults unless given), so files can be layered.
 /// As load_estimator_settings, from text; `source_name` names it in error messages.
 EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
-                                           const std::string& source_name);
+                                           const std::string& source_name,
+                                           const EstimatorSettings& base = {});
 
 }  // namespace opf

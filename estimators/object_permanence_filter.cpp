@@ -79,7 +79,7 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     const Eigen::Quaterniond orientation = orientation_of(*measurement);
     keep_hypothesis_explaining(position);
     Hypothesis& h = hypotheses_[0];
-    h.filter.reweight(position, orientation);
+    h.filter.update_with_measurement(position, orientation);
     h.filter.normalise_and_resample();
     h.inflation.reset();
     h.source = Source::kMeasurement;
@@ -123,17 +123,23 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
   const std::vector<TrajectorySample> window(history_.begin(), history_.end());
   const int needed =
       std::max(options_.trajectory.translation_order, options_.trajectory.rotation_order) + 1;
-  if (options_.modules.dynamics && static_cast<int>(window.size()) >= std::max(needed, 2) &&
-      classify_motion(window, options_.motion) == Motion::kMoving) {
-    try {
-      h.trajectory = fit_trajectory(window, options_.trajectory);
-      h.source = Source::kTrajectory;
-      h.last_carrier_position = h.trajectory->position(last_seen);
-      h.last_carrier_orientation = h.trajectory->orientation(last_seen);
-      return;
-    } catch (const std::exception&) {
-      // A degenerate window (e.g. repeated timestamps after a reset) cannot be fitted: treat the
-      // object as static and let the occluder module try.
+  if (options_.modules.dynamics && static_cast<int>(window.size()) >= std::max(needed, 2)) {
+    const bool pairwise = options_.motion.test == MotionTest::kMaxPairwise;
+    if (!pairwise || classify_motion(window, options_.motion) == Motion::kMoving) {
+      try {
+        TrajectoryModel model = fit_trajectory(window, options_.trajectory);
+        if (pairwise || classify_fitted_motion(model, window.front().t, window.back().t,
+                                               options_.motion) == Motion::kMoving) {
+          h.trajectory = std::move(model);
+          h.source = Source::kTrajectory;
+          h.last_carrier_position = h.trajectory->position(last_seen);
+          h.last_carrier_orientation = h.trajectory->orientation(last_seen);
+          return;
+        }
+      } catch (const std::exception&) {
+        // A degenerate window cannot be fitted: treat the object as static and let the occluder
+        // module try.
+      }
     }
   }
   if (!options_.modules.occluder) return;

@@ -220,6 +220,20 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
         gaussian_exponents(translation_.particles, translation_of(*measurement), sigma_t * sigma_t);
     rotation_visible =
         gaussian_exponents(rotation_.particles, orientation_of(*measurement), sigma_r * sigma_r);
+    // Sensor resetting, as in every particle estimator here (PoseParticleFilterOptions).
+    const double gate = -0.5 * p.reset_gate * p.reset_gate;
+    if (p.reset_gate > 0.0 && translation_visible.maxCoeff() < gate) {
+      reset(translation_, translation_.particles.size());
+      scatter_around(translation_.particles, translation_of(*measurement), sigma_t, random_);
+      translation_visible = gaussian_exponents(translation_.particles, translation_of(*measurement),
+                                               sigma_t * sigma_t);
+    }
+    if (p.reset_gate > 0.0 && rotation_visible.maxCoeff() < gate) {
+      reset(rotation_, rotation_.particles.size());
+      scatter_around(rotation_.particles, orientation_of(*measurement), sigma_r, random_);
+      rotation_visible =
+          gaussian_exponents(rotation_.particles, orientation_of(*measurement), sigma_r * sigma_r);
+    }
     const double k = options_.occluded_likelihood_sigmas;
     occluded_log_likelihood = -0.5 * k * k;
   } else {

@@ -29,7 +29,8 @@ Estimate StandardParticleFilter::step(double t, const mrpt::poses::CPose3D* meas
   }
   filter_.predict(t - last_t_);
   last_t_ = t;
-  if (measurement) filter_.reweight(translation_of(*measurement), orientation_of(*measurement));
+  if (measurement)
+    filter_.update_with_measurement(translation_of(*measurement), orientation_of(*measurement));
   last_report_ = filter_.normalise_and_resample();
   return make_estimate(t, measurement ? EstimateMode::kMeasured : EstimateMode::kPredicted);
 }

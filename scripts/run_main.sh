@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Quick-start command 1: set up, then run the main job. Until the paper reproduction lands, the
-# main job replays the bundled example log through every estimator and prints the error table.
+# Quick-start command 1: set up, then run the main job: reproduce the paper's simulated
+# experiments (every estimator, 5 seeds, 5000 + 5000 particles), print Table I beside the paper's
+# numbers and write per-frame CSVs and summary.json under results/. Extra arguments go to
+# `opf reproduce` (see `build/bin/opf reproduce --help`).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$repo/scripts/setup.sh"
-exec "$repo/build/bin/opf" evaluate \
-  --in "$repo/experiments/data/example_log.csv" \
-  --truth "$repo/experiments/data/example_truth.csv" "$@"
+exec "$repo/build/bin/opf" reproduce --out "$repo/results" "$@"

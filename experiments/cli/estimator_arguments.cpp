@@ -12,9 +12,9 @@ std::vector<OptionSpec> estimator_option_specs() {
   };
 }
 
-EstimatorSettings settings_from(const Arguments& args) {
-  EstimatorSettings settings;
-  if (const auto path = args.get("config")) settings = load_estimator_settings(*path);
+EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base) {
+  EstimatorSettings settings = base;
+  if (const auto path = args.get("config")) settings = load_estimator_settings(*path, settings);
   if (const auto particles = args.get_count("particles")) {
     if (*particles == 0) throw UsageError{"option '--particles' must be at least 1"};
     settings.pf.translation_particles = settings.pf.rotation_particles = *particles;

@@ -11,8 +11,9 @@ namespace opf::cli {
 
 std::vector<OptionSpec> estimator_option_specs();
 
-/// Defaults, then the YAML file of --config, then --particles (both portions).
-EstimatorSettings settings_from(const Arguments& args);
+/// `base` (the defaults unless given), then the YAML file of --config, then --particles (both
+/// portions).
+EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base = {});
 
 /// --seed, or the toolkit's default seed.
 std::uint64_t seed_from(const Arguments& args);

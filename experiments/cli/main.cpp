@@ -2,6 +2,7 @@
 
 #include "arguments.h"
 #include "evaluate_command.h"
+#include "experiment_commands.h"
 #include "track_command.h"
 
 #include <exception>
@@ -19,6 +20,8 @@ constexpr const char* kHelp =
     "Commands:\n"
     "  track      replay a measurement log through one estimator and write its estimates\n"
     "  evaluate   compare every estimator against ground truth over several seeds\n"
+    "  reproduce  run the paper's simulated experiments and print Table I beside the paper's\n"
+    "  run        run one experiment file (rendered scene, every estimator, several seeds)\n"
     "\n"
     "Run 'opf <command> --help' for a command's options.\n";
 
@@ -35,6 +38,8 @@ int main(int argc, char** argv) {
   try {
     if (command == "track") return opf::cli::track_command(rest);
     if (command == "evaluate") return opf::cli::evaluate_command(rest);
+    if (command == "reproduce") return opf::cli::reproduce_command(rest);
+    if (command == "run") return opf::cli::run_command(rest);
     std::cerr << "opf: unknown command '" << command << "'\n\n" << kHelp;
     return 2;
   } catch (const opf::cli::UsageError& error) {

@@ -4,15 +4,17 @@
 
 namespace opf {
 
-void reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
-                       double variance) {
+double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                         double variance) {
   const double scale = -0.5 / variance;
-  particles.weights.add(
-      ((particles.states.colwise() - measurement).colwise().squaredNorm() * scale).transpose());
+  const Eigen::VectorXd exponents =
+      ((particles.states.colwise() - measurement).colwise().squaredNorm() * scale).transpose();
+  particles.weights.add(exponents);
+  return exponents.maxCoeff();
 }
 
-void reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
-                       double variance) {
+double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
+                         double variance) {
   const double scale = -0.5 / variance;
   Eigen::VectorXd log_likelihood(particles.states.cols());
   for (Eigen::Index i = 0; i < particles.states.cols(); ++i) {
@@ -20,6 +22,7 @@ void reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& m
     log_likelihood[i] = scale * so3::difference(q, measurement).squaredNorm();
   }
   particles.weights.add(log_likelihood);
+  return log_likelihood.maxCoeff();
 }
 
 }  // namespace opf

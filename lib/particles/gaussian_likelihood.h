@@ -11,9 +11,11 @@
 
 namespace opf {
 
-void reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
-                       double variance);
-void reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
-                       double variance);
+/// Returns the largest exponent over the particles, -0.5 d^2 / variance for the particle nearest
+/// the measurement: how far the measurement is from the whole cloud (sensor resetting).
+double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                         double variance);
+double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
+                         double variance);
 
 }  // namespace opf

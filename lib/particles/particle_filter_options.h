@@ -34,6 +34,11 @@ struct PoseParticleFilterOptions {
   double observation_noise_translation = 0.01;
   double observation_noise_rotation = 0.05;
   ResamplingOptions resampling;
+  /// Sensor resetting (Lenser & Veloso, ICRA 2000): when no particle of a portion lies within
+  /// reset_gate observation sigmas of a real measurement, the object was moved while unseen (or
+  /// the filter lost it), and the portion is scattered around the measurement instead of crawling
+  /// there by random walk over many frames. 0 disables it.
+  double reset_gate = 5.0;
 };
 
 }  // namespace opf

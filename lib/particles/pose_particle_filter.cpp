@@ -42,6 +42,8 @@ void validate(const PoseParticleFilterOptions& options) {
   require_positive(options.process_noise_rotation, "process_noise.rotation");
   require_positive(options.observation_noise_translation, "observation_noise.translation");
   require_positive(options.observation_noise_rotation, "observation_noise.rotation");
+  if (!(options.reset_gate >= 0.0))
+    throw std::invalid_argument("particle filter option reset_gate must be >= 0 (0 disables it)");
   if (!(options.resampling.ess_threshold > 0.0 && options.resampling.ess_threshold <= 1.0))
     throw std::invalid_argument(
         "particle filter option resampling.ess_threshold must be in (0, 1]");
@@ -95,15 +97,37 @@ void PoseParticleFilter::reweight(const Eigen::Vector3d& position,
 void PoseParticleFilter::reweight_translation(const Eigen::Vector3d& position,
                                               double covariance_scale) {
   const double sigma = options_.observation_noise_translation;
-  reweight_gaussian(translation_, position, covariance_scale * sigma * sigma);
+  translation_best_exponent_ =
+      reweight_gaussian(translation_, position, covariance_scale * sigma * sigma);
   translation_reweighted_ = true;
 }
 
 void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation,
                                            double covariance_scale) {
   const double sigma = options_.observation_noise_rotation;
-  reweight_gaussian(rotation_, orientation, covariance_scale * sigma * sigma);
+  rotation_best_exponent_ =
+      reweight_gaussian(rotation_, orientation, covariance_scale * sigma * sigma);
   rotation_reweighted_ = true;
+}
+
+bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position,
+                                                 const Eigen::Quaterniond& orientation) {
+  reweight(position, orientation);
+  if (!(options_.reset_gate > 0.0)) return false;
+  // The best exponent is -d^2/2 in sigmas for the particle nearest the measurement.
+  const double threshold = -0.5 * options_.reset_gate * options_.reset_gate;
+  bool reset = false;
+  if (translation_best_exponent_ < threshold) {
+    scatter_around(translation_, position, options_.observation_noise_translation, random_);
+    translation_reweighted_ = false;
+    reset = true;
+  }
+  if (rotation_best_exponent_ < threshold) {
+    scatter_around(rotation_, orientation, options_.observation_noise_rotation, random_);
+    rotation_reweighted_ = false;
+    reset = true;
+  }
+  return reset;
 }
 
 ResampleReport PoseParticleFilter::normalise_and_resample() {

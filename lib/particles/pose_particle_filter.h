@@ -54,6 +54,12 @@ class PoseParticleFilter {
   void reweight_translation(const Eigen::Vector3d& position, double covariance_scale = 1.0);
   void reweight_rotation(const Eigen::Quaterniond& orientation, double covariance_scale = 1.0);
 
+  /// The update with a REAL measurement (Q unscaled): reweight, or, for a portion with no
+  /// particle within options().reset_gate sigmas of it, scatter that portion around it (sensor
+  /// resetting). Returns whether any portion was reset.
+  bool update_with_measurement(const Eigen::Vector3d& position,
+                               const Eigen::Quaterniond& orientation);
+
   /// Normalises each portion and resamples it per the options. A portion whose weights were not
   /// changed since its last resampling is left alone (uniform weights gain nothing from it).
   ResampleReport normalise_and_resample();
@@ -87,6 +93,8 @@ class PoseParticleFilter {
   RotationParticles rotation_;
   bool translation_reweighted_ = false;
   bool rotation_reweighted_ = false;
+  double translation_best_exponent_ = 0.0;  ///< of the last reweight, for sensor resetting
+  double rotation_best_exponent_ = 0.0;
 };
 
 /// Throws std::invalid_argument naming the first option that is out of range.

@@ -17,4 +17,14 @@ Motion classify_motion(std::span<const TrajectorySample> window,
   return Motion::kStatic;
 }
 
+Motion classify_fitted_motion(const TrajectoryModel& model, double t_first, double t_last,
+                              const MotionThresholds& thresholds) {
+  if ((model.position(t_last) - model.position(t_first)).norm() > thresholds.translation)
+    return Motion::kMoving;
+  if (so3::angle_between(model.orientation(t_first), model.orientation(t_last)) >
+      thresholds.rotation)
+    return Motion::kMoving;
+  return Motion::kStatic;
+}
+
 }  // namespace opf

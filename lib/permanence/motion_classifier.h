@@ -11,9 +11,19 @@ namespace opf {
 /// Paper footnote to Eq. 8: T-delta = 0.01 m, R-delta = 0.5 rad (Algorithm 1 prints 0.01 for both;
 /// the footnote's values are the ones used in the experiments). The thresholds must exceed the
 /// jitter of the estimates, or a still object reads as moving.
+enum class MotionTest {
+  /// The paper's test (Eq. 10-11): the largest pairwise distance over the window. Noise in the
+  /// estimates and the biased centroid of a half-covered object count as motion.
+  kMaxPairwise,
+  /// The displacement of the robust trajectory fit over the window: what the object did, with
+  /// noise and a few biased samples averaged out (Huber). Our option, not the paper's.
+  kFittedDisplacement,
+};
+
 struct MotionThresholds {
   double translation = 0.01;  ///< m
   double rotation = 0.5;      ///< rad, geodesic
+  MotionTest test = MotionTest::kMaxPairwise;
 };
 
 enum class Motion { kStatic, kMoving };
@@ -24,5 +34,11 @@ enum class Motion { kStatic, kMoving };
 /// on SO(3) and jumps at +-pi). Fewer than two samples: static (nothing says it moved).
 Motion classify_motion(std::span<const TrajectorySample> window,
                        const MotionThresholds& thresholds);
+
+/// The kFittedDisplacement test: moving when the fitted trajectory moves more than the
+/// translation threshold, or turns more than the rotation threshold, between the window's first
+/// and last times.
+Motion classify_fitted_motion(const TrajectoryModel& model, double t_first, double t_last,
+                              const MotionThresholds& thresholds);
 
 }  // namespace opf

@@ -4,8 +4,8 @@
 #include "io/input_file.h"
 #include "io/yaml_reader.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace opf::sim {
@@ -114,6 +114,14 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
       config.measurement.min_visible_fraction >= 0 && config.measurement.min_visible_fraction <= 1,
       "a fraction in [0, 1]");
   measurement.get_positive("min_area_pixels", config.measurement.min_area_pixels);
+
+  std::string estimator_config;
+  yaml.get("estimator_config", estimator_config);
+  if (!estimator_config.empty()) {
+    config.estimator_config = std::filesystem::path(source).parent_path() / estimator_config;
+    if (!std::filesystem::exists(config.estimator_config))
+      yaml.fail("estimator_config", "no file " + config.estimator_config.string());
+  }
 
   for (YamlReader* b : yaml.sequence("bodies")) config.bodies.push_back(body(*b));
   if (config.bodies.empty()) yaml.fail("bodies", "expected at least one body");

@@ -46,6 +46,10 @@ struct ExperimentConfig {
   std::vector<ScriptedBody> bodies;
   /// The objects whose errors the results table reports (the paper scores the occluded object).
   std::vector<std::string> objects_of_interest;
+  /// Estimator settings this experiment runs with (a file in estimators.yaml's format, resolved
+  /// against the experiment file's folder), applied under the user's --config. The paper sets
+  /// its thresholds "for the current experiment setup" (footnote to Eq. 10); empty = defaults.
+  std::filesystem::path estimator_config;
 };
 
 /// Throws InputError naming the file, line and key for anything malformed: unknown keys, wrong

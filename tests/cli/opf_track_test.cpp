@@ -120,7 +120,7 @@ TEST_F(OpfProgram, SameSeedGivesByteIdenticalOutputDifferentSeedDoesNot) {
 }
 
 TEST_F(OpfProgram, EverySubcommandHasHelp) {
-  for (const char* command : {"track", "evaluate"}) {
+  for (const char* command : {"track", "evaluate", "run", "reproduce"}) {
     ASSERT_EQ(run(std::string(command) + " --help"), 0);
     EXPECT_NE(out().find("Usage: opf " + std::string(command)), std::string::npos) << out();
     EXPECT_NE(out().find("--seed"), std::string::npos);

@@ -40,6 +40,7 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.pf.resampling.scheme, d.pf.resampling.scheme);
   EXPECT_EQ(s.pf.resampling.every_frame, d.pf.resampling.every_frame);
   EXPECT_EQ(s.pf.resampling.ess_threshold, d.pf.resampling.ess_threshold);
+  EXPECT_EQ(s.pf.reset_gate, d.pf.reset_gate);
   EXPECT_EQ(s.cvkf.acceleration_noise, d.cvkf.acceleration_noise);
   EXPECT_EQ(s.cvkf.angular_acceleration_noise, d.cvkf.angular_acceleration_noise);
   EXPECT_EQ(s.cvkf.observation_noise_translation, d.cvkf.observation_noise_translation);
@@ -54,6 +55,7 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.opf.carry_particles, d.opf.carry_particles);
   EXPECT_EQ(s.opf.motion.translation, d.opf.motion.translation);
   EXPECT_EQ(s.opf.motion.rotation, d.opf.motion.rotation);
+  EXPECT_EQ(s.opf.motion.test, d.opf.motion.test);
   EXPECT_EQ(s.opf.trajectory.translation_order, d.opf.trajectory.translation_order);
   EXPECT_EQ(s.opf.trajectory.rotation_order, d.opf.trajectory.rotation_order);
   EXPECT_EQ(s.opf.trajectory.loss, d.opf.trajectory.loss);

@@ -1,0 +1,54 @@
+#pragma once
+// Runs an open-loop experiment: the scripted scene is rendered and detected once, then for every
+// seed the sensor noise is drawn once and every estimator tracks that same stream, so comparisons
+// between estimators are paired.
+
+#include "core/error_accumulator.h"
+#include "core/estimate.h"
+#include "estimators/estimator_settings.h"
+#include "sim/experiment_config.h"
+#include "sim/sighting.h"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace opf::experiments {
+
+/// The scene's truth and what the camera saw, frame by frame.
+struct Observation {
+  std::vector<sim::SceneSnapshot> truth;
+  std::vector<sim::CameraFrame> camera;
+};
+
+/// One estimate of a tracked body at one frame, with its truth.
+struct FrameRecord {
+  int frame = 0;
+  std::string estimator;
+  std::size_t seed_index = 0;
+  sim::BodyPose truth;
+  Estimate estimate;
+  bool visible = false;  ///< measured in this frame
+};
+
+struct ExperimentResults {
+  std::string experiment;
+  std::vector<std::string> estimators;
+  std::size_t seeds = 0;
+  /// Per estimator, one RunErrors per seed over the objects of interest (mean over their frames).
+  std::map<std::string, std::vector<RunErrors>> runs;
+  std::vector<FrameRecord> records;  ///< every tracked body, estimator, seed and frame
+};
+
+/// Called before each (estimator, seed) run: a line for the progress display.
+using Progress = std::function<void(const std::string& line)>;
+
+/// Throws std::invalid_argument for an unknown estimator (the registry's message).
+ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Observation& observation,
+                                const std::vector<std::string>& estimators,
+                                const EstimatorSettings& settings, std::size_t seeds,
+                                std::uint64_t base_seed, const Progress& progress = {});
+
+}  // namespace opf::experiments

@@ -1,0 +1,164 @@
+#include "drivers/results_files.h"
+
+#include "core/metrics.h"
+#include "core/pose_conversion.h"
+#include "io/atomic_file.h"
+#include "io/csv.h"
+
+#include <cstdio>
+#include <map>
+#include <string>
+
+namespace opf::experiments {
+namespace {
+
+struct PaperRow {
+  MeanStd opf_translation, pf_translation, opf_rotation, pf_rotation;
+};
+
+// Table I of the paper (5 runs, mean +- std; metres and radians).
+const std::map<std::string, PaperRow>& paper_table() {
+  static const std::map<std::string, PaperRow> table = {
+      {"general_op",
+       {{0.01138, 7.253e-4}, {0.06289, 6.498e-4}, {0.06869, 2.947e-3}, {0.3870, 1.270e-3}}},
+      {"sugar_drop",
+       {{0.02129, 5.872e-4}, {0.05018, 6.936e-4}, {0.003411, 4.629e-4}, {0.01456, 2.274e-3}}},
+  };
+  return table;
+}
+
+enum class Metric { kTranslation, kRotationPaper, kRotationGeodesic, kTranslationUnobserved };
+
+MeanStd metric_of(const std::vector<RunErrors>& runs, Metric metric) {
+  std::vector<double> values;
+  for (const RunErrors& r : runs) {
+    switch (metric) {
+      case Metric::kTranslation:
+        values.push_back(r.translation);
+        break;
+      case Metric::kRotationPaper:
+        values.push_back(r.rotation_paper);
+        break;
+      case Metric::kRotationGeodesic:
+        values.push_back(r.rotation_geodesic);
+        break;
+      case Metric::kTranslationUnobserved:
+        values.push_back(r.translation_unobserved);
+        break;
+    }
+  }
+  return mean_std(values);
+}
+
+std::string cell(const MeanStd& m) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.5f +- %.2e", m.mean, m.std);
+  return buffer;
+}
+
+std::string number(double v) {
+  return csv::format_double(v);
+}
+
+}  // namespace
+
+void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "frame,t,object,estimator,seed,true_x,true_y,true_z,true_qx,true_qy,true_qz,true_qw,"
+           "x,y,z,qx,qy,qz,qw,trace,mode,visible,hypothesis,alert\n";
+    for (const FrameRecord& r : results.records) {
+      Eigen::Quaterniond q = orientation_of(r.estimate.pose.mean);
+      if (q.w() < 0) q.coeffs() *= -1.0;
+      Eigen::Quaterniond tq = r.truth.orientation;
+      if (tq.w() < 0) tq.coeffs() *= -1.0;
+      const auto& p = r.truth.position;
+      const auto& m = r.estimate.pose.mean;
+      out << r.frame << ',' << number(r.estimate.t) << ','
+          << csv::quote_if_needed(r.estimate.object) << ',' << r.estimator << ',' << r.seed_index
+          << ',' << number(p.x()) << ',' << number(p.y()) << ',' << number(p.z()) << ','
+          << number(tq.x()) << ',' << number(tq.y()) << ',' << number(tq.z()) << ','
+          << number(tq.w()) << ',' << number(m.x()) << ',' << number(m.y()) << ',' << number(m.z())
+          << ',' << number(q.x()) << ',' << number(q.y()) << ',' << number(q.z()) << ','
+          << number(q.w()) << ',' << number(r.estimate.observation_trace) << ','
+          << to_string(r.estimate.mode) << ',' << (r.visible ? 1 : 0) << ','
+          << r.estimate.hypothesis << ',' << (r.estimate.alert ? 1 : 0) << '\n';
+    }
+  });
+}
+
+void write_summary_json(const std::filesystem::path& path,
+                        const std::vector<ExperimentResults>& experiments) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    const auto stat = [&](const char* name, const MeanStd& m, bool last) {
+      out << "        \"" << name << "\": {\"mean\": " << number(m.mean)
+          << ", \"std\": " << number(m.std) << "}" << (last ? "\n" : ",\n");
+    };
+    out << "{\n  \"experiments\": {\n";
+    for (std::size_t e = 0; e < experiments.size(); ++e) {
+      const ExperimentResults& x = experiments[e];
+      out << "    \"" << x.experiment << "\": {\n";
+      for (std::size_t i = 0; i < x.estimators.size(); ++i) {
+        const auto& runs = x.runs.at(x.estimators[i]);
+        out << "      \"" << x.estimators[i] << "\": {\n";
+        out << "        \"seeds\": " << runs.size() << ",\n";
+        stat("translation_error", metric_of(runs, Metric::kTranslation), false);
+        stat("rotation_error_paper", metric_of(runs, Metric::kRotationPaper), false);
+        stat("rotation_error_geodesic", metric_of(runs, Metric::kRotationGeodesic), false);
+        stat("translation_error_unobserved", metric_of(runs, Metric::kTranslationUnobserved), true);
+        out << "      }" << (i + 1 < x.estimators.size() ? ",\n" : "\n");
+      }
+      out << "    }" << (e + 1 < experiments.size() ? ",\n" : "\n");
+    }
+    out << "  }\n}\n";
+  });
+}
+
+void print_results_table(std::ostream& out, const std::vector<ExperimentResults>& experiments) {
+  char line[256];
+  for (const ExperimentResults& x : experiments) {
+    out << "\n"
+        << x.experiment << " (" << x.seeds << " seeds; errors of the objects of interest,"
+        << " mean over frames)\n";
+    std::snprintf(line, sizeof line, "  %-10s %-22s %-22s %-22s %-22s\n", "estimator",
+                  "translation [m]", "rotation paper [rad]", "rotation geodesic",
+                  "transl. hidden [m]");
+    out << line;
+    for (const std::string& name : x.estimators) {
+      const auto& runs = x.runs.at(name);
+      std::snprintf(line, sizeof line, "  %-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
+                    cell(metric_of(runs, Metric::kTranslation)).c_str(),
+                    cell(metric_of(runs, Metric::kRotationPaper)).c_str(),
+                    cell(metric_of(runs, Metric::kRotationGeodesic)).c_str(),
+                    cell(metric_of(runs, Metric::kTranslationUnobserved)).c_str());
+      out << line;
+    }
+    const auto paper = paper_table().find(x.experiment);
+    if (paper != paper_table().end()) {
+      const PaperRow& p = paper->second;
+      std::snprintf(line, sizeof line, "  %-10s %-22s %-22s\n", "paper opf",
+                    cell(p.opf_translation).c_str(), cell(p.opf_rotation).c_str());
+      out << line;
+      std::snprintf(line, sizeof line, "  %-10s %-22s %-22s\n", "paper pf",
+                    cell(p.pf_translation).c_str(), cell(p.pf_rotation).c_str());
+      out << line;
+    }
+    if (x.runs.count("opf") && x.runs.count("pf")) {
+      const auto ratio = [&](Metric m) {
+        return metric_of(x.runs.at("opf"), m).mean / metric_of(x.runs.at("pf"), m).mean;
+      };
+      std::snprintf(line, sizeof line, "  OPF/PF ratio: translation %.3f, rotation (paper) %.3f",
+                    ratio(Metric::kTranslation), ratio(Metric::kRotationPaper));
+      out << line;
+      if (paper != paper_table().end()) {
+        const PaperRow& p = paper->second;
+        std::snprintf(line, sizeof line, "   [paper: %.3f, %.3f]",
+                      p.opf_translation.mean / p.pf_translation.mean,
+                      p.opf_rotation.mean / p.pf_rotation.mean);
+        out << line;
+      }
+      out << "\n";
+    }
+  }
+}
+
+}  // namespace opf::experiments

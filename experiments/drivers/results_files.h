@@ -1,0 +1,25 @@
+#pragma once
+// The result files of `opf run` and `opf reproduce`: the per-frame CSV, summary.json, and the
+// printed table with the paper's Table I beside our numbers.
+
+#include "drivers/experiment_run.h"
+
+#include <filesystem>
+#include <ostream>
+#include <vector>
+
+namespace opf::experiments {
+
+/// frame,t,object,estimator,seed,true_x,...,true_qw,x,...,qw,trace,mode,visible,hypothesis,alert
+void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results);
+
+/// experiments.<name>.<estimator>.{translation_error, rotation_error_paper,
+/// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus runs and seeds.
+void write_summary_json(const std::filesystem::path& path,
+                        const std::vector<ExperimentResults>& experiments);
+
+/// Per experiment: each estimator's errors (mean +- std over seeds), the OPF/PF ratios, and the
+/// paper's Table I numbers where the paper has them.
+void print_results_table(std::ostream& out, const std::vector<ExperimentResults>& experiments);
+
+}  // namespace opf::experiments

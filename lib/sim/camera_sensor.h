@@ -1,0 +1,39 @@
+#pragma once
+// The simulated camera of the paper's experiments (Sec. IV-B): renders the scene, finds each
+// tracked body's colour blob, and reports its centre and how much of it is visible.
+
+#include "sim/camera_model.h"
+#include "sim/colour_blob_detector.h"
+#include "sim/scene_renderer.h"
+#include "sim/sighting.h"
+
+namespace opf::sim {
+
+class CameraSensor {
+ public:
+  /// Creates the renderer (see SceneRenderer: one per process at a time).
+  CameraSensor(const CameraModel& camera, const SceneRendererOptions& render = {},
+               const ColourBlobDetectorOptions& detect = {});
+
+  /// One sighting per tracked body, in the snapshot's order.
+  CameraFrame observe(const SceneSnapshot& scene);
+
+  /// The images of the last observe().
+  const RgbdFrame& last_image() const { return image_; }
+  const CameraModel& camera() const { return camera_; }
+
+ private:
+  CameraModel camera_;
+  SceneRenderer renderer_;
+  ColourBlobDetector detector_;
+  RgbdFrame image_;
+};
+
+/// How far behind its visible surface a body's centre lies in z-depth when seen whole: the
+/// median depth of a sphere's visible cap is r / sqrt(2) in front of its centre (the height
+/// sqrt(1 - rho^2) r at the median of rho^2, uniform over the projected disc); a box or cylinder
+/// mostly shows the face with the largest projected area, half its extent from the centre.
+/// Tracking known objects, a detector adds this to the blob's depth to measure the centre.
+double centre_depth_offset(const Body& body, const BodyPose& pose, const CameraModel& camera);
+
+}  // namespace opf::sim

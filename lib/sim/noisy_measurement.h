@@ -1,0 +1,20 @@
+#pragma once
+// Turns a frame's noiseless sightings into the measurements an estimator sees (paper Sec. IV-B):
+// a position from the colour blob with seeded noise, and an orientation from a marker-style
+// sensor (the true orientation with seeded noise), for every body seen well enough.
+
+#include "core/frame.h"
+#include "particles/random.h"
+#include "sim/body.h"
+#include "sim/experiment_config.h"
+#include "sim/sighting.h"
+
+namespace opf::sim {
+
+/// Bodies whose sighting is undetected, or visible below settings.min_visible_fraction, are
+/// unobserved (absent from the frame). Draws the same number of random numbers for every body
+/// and frame, seen or not, so one body's visibility never shifts another's noise.
+Frame noisy_measurement(const CameraFrame& camera, const SceneSnapshot& truth,
+                        const MeasurementSettings& settings, Random& noise);
+
+}  // namespace opf::sim
