@@ -58,7 +58,7 @@ CameraModel paper_camera() {
 }
 
 // Each benchmark owns the process's one renderer while it runs (MRPT allows one at a time); its
-// ~0.3 s creation and first frame are outside the timed loop.
+// creation and first frame (shader compilation) are outside the timed loop.
 void BM_RenderFrame(benchmark::State& state) {
   SceneRenderer renderer(paper_camera());
   SceneSnapshot scene = paper_scene();

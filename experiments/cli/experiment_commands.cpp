@@ -1,6 +1,7 @@
 #include "experiment_commands.h"
 
 #include "arguments.h"
+#include "drivers/figures.h"
 #include "drivers/observe_experiment.h"
 #include "drivers/results_files.h"
 #include "estimator_arguments.h"
@@ -45,6 +46,8 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   const std::uint64_t seed = seed_from(args);
 
   std::vector<experiments::ExperimentResults> all;
+  std::vector<std::filesystem::path> figures;
+  std::filesystem::create_directories(out);
   const auto progress = [](const std::string& line) {
     std::cerr << "\r\033[K" << line << std::flush;
   };
@@ -56,14 +59,16 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     const experiments::Observation observation = experiments::observe_experiment(config, progress);
     all.push_back(
         experiments::run_open_loop(config, observation, names, settings, seeds, seed, progress));
+    for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
+      figures.push_back(std::move(figure));
   }
   std::cerr << "\r\033[K";
-  std::filesystem::create_directories(out);
   for (const auto& results : all)
     experiments::write_records_csv(out / (results.experiment + "_frames.csv"), results);
   experiments::write_summary_json(out / "summary.json", all);
   experiments::print_results_table(std::cout, all);
-  std::cout << "\nper-frame results and summary.json written to " << out.string() << "\n";
+  std::cout << "\nper-frame results, summary.json and " << figures.size() << " figures written to "
+            << out.string() << "\n";
   return 0;
 }
 

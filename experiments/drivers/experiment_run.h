@@ -9,6 +9,8 @@
 #include "sim/experiment_config.h"
 #include "sim/sighting.h"
 
+#include <opencv2/core/mat.hpp>
+
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -21,6 +23,10 @@ namespace opf::experiments {
 struct Observation {
   std::vector<sim::SceneSnapshot> truth;
   std::vector<sim::CameraFrame> camera;
+  /// A rendered frame for the figures: the middle of the longest stretch in which the first
+  /// object of interest was unseen (what the estimators must reason about).
+  int snapshot_frame = 0;
+  cv::Mat snapshot_bgr;
 };
 
 /// One estimate of a tracked body at one frame, with its truth.

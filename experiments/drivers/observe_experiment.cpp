@@ -24,6 +24,23 @@ Observation observe_experiment(const sim::ExperimentConfig& config, const Progre
     observation.camera.push_back(sensor.observe(snapshot));
     observation.truth.push_back(snapshot);
   }
+  // The longest run of frames without a sighting of the first object of interest.
+  int best_start = 0, best_length = 0, start = -1;
+  for (int k = 0; k <= config.frames; ++k) {
+    bool seen = true;
+    if (k < config.frames)
+      for (const auto& s : observation.camera[k].sightings)
+        if (s.object == config.objects_of_interest.front())
+          seen = s.detected && s.visible_fraction >= config.measurement.min_visible_fraction;
+    if (!seen && start < 0) start = k;
+    if (seen && start >= 0) {
+      if (k - start > best_length) best_start = start, best_length = k - start;
+      start = -1;
+    }
+  }
+  observation.snapshot_frame = best_start + best_length / 2;
+  sensor.observe(observation.truth[observation.snapshot_frame]);
+  observation.snapshot_bgr = sensor.last_image().bgr.clone();
   return observation;
 }
 

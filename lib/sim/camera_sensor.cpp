@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace opf::sim {
 
@@ -50,23 +49,18 @@ double centre_depth_offset(const Body& body, const BodyPose& pose, const CameraM
       const double r = body.size.x(), h = body.size.z();
       const double along = std::abs(towards.z());
       const double across = std::sqrt(std::max(0.0, 1.0 - along * along));
-      // Projected areas of the end disc and of the side decide which one the blob mostly shows.
-      if (along * std::numbers::pi * r * r >= across * 2.0 * r * h)
-        return 0.5 * h * std::abs(forward.z());
+      // The end disc while the camera is within 45 degrees of the axis: its pixels are the
+      // nearest and hold the blob's median depth even when the side shows as much area.
+      if (along >= across) return 0.5 * h * std::abs(forward.z());
       // The side: a half cylinder whose median depth is sqrt(3)/2 r in front of the axis.
       const Eigen::Vector3d radial = Eigen::Vector3d(towards.x(), towards.y(), 0.0).normalized();
       return std::sqrt(3.0) / 2.0 * r * std::abs(forward.dot(radial));
     }
     case Shape::kBox: {
+      // The face most directly facing the camera (see the cylinder).
       int face = 0;
-      double best = -1.0;
-      for (int i = 0; i < 3; ++i) {
-        const double area = body.size[(i + 1) % 3] * body.size[(i + 2) % 3];
-        if (area * std::abs(towards[i]) > best) {
-          best = area * std::abs(towards[i]);
-          face = i;
-        }
-      }
+      for (int i = 1; i < 3; ++i)
+        if (std::abs(towards[i]) > std::abs(towards[face])) face = i;
       return 0.5 * body.size[face] * std::abs(forward[face]);
     }
   }

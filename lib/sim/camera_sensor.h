@@ -32,7 +32,8 @@ class CameraSensor {
 /// How far behind its visible surface a body's centre lies in z-depth when seen whole: the
 /// median depth of a sphere's visible cap is r / sqrt(2) in front of its centre (the height
 /// sqrt(1 - rho^2) r at the median of rho^2, uniform over the projected disc); a box or cylinder
-/// mostly shows the face with the largest projected area, half its extent from the centre.
+/// shows the face most directly facing the camera nearest, half its extent from the centre (its
+/// side faces, seen obliquely, bias the centroid: see the camera sensor's tests).
 /// Tracking known objects, a detector adds this to the blob's depth to measure the centre.
 double centre_depth_offset(const Body& body, const BodyPose& pose, const CameraModel& camera);
 

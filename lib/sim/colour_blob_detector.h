@@ -18,8 +18,9 @@ namespace opf::sim {
 /// hue tolerance (+-10 degrees) no detector ever accepts another body's pixels, and the shading
 /// (which scales the value only) never moves a pixel's hue. Bodies that are not tracked (table,
 /// robot links) should be unsaturated (HSV saturation < ColourBlobDetectorOptions::
-/// min_saturation), like kTable; the end-effector gets its own hue anyway, so that a detector of
-/// a tracked colour can never fire on it even if it is later tracked.
+/// min_saturation), like kTable. The end-effector has a hue of its own even though it is not
+/// tracked, so that it can be segmented too (e.g. to measure self-occlusion) without ever being
+/// mistaken for a tracked body.
 namespace palette {
 inline constexpr Colour kBall{255, 0, 0};           // red, hue 0
 inline constexpr Colour kTray{255, 255, 0};         // yellow, hue 60

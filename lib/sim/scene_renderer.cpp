@@ -18,6 +18,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -151,6 +152,8 @@ struct SceneRenderer::Impl {
   std::vector<Body> built_for;
   mrpt::img::CImage rgb;
   mrpt::math::CMatrixFloat depth;
+  // The EGL context is current, and the viewport's shaders exist, only in this thread.
+  std::thread::id owner = std::this_thread::get_id();
 
   Impl(const CameraModel& cam, const SceneRendererOptions& opts)
       : camera(cam), options(opts), fbo(create_fbo(cam)) {
@@ -267,6 +270,9 @@ struct SceneRenderer::Impl {
   }
 
   void render(const SceneSnapshot& snapshot, RgbdFrame& frame) {
+    if (std::this_thread::get_id() != owner) {
+      throw std::logic_error("SceneRenderer::render: call it from the thread that created it");
+    }
     sync_objects(snapshot);
     fbo.render_RGBD(*scene, rgb, depth);
 

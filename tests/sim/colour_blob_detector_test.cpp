@@ -72,7 +72,7 @@ void add(SceneSnapshot& scene, const Body& body, const BodyPose& pose) {
 
 class ColourBlobDetectorTest : public ::testing::Test {
  protected:
-  // One context for the suite: creating it costs ~0.3 s and MRPT allows only one at a time.
+  // One context for the suite: MRPT allows only one at a time, and the first costs ~0.15 s.
   static void SetUpTestSuite() {
     renderer_ = std::make_unique<SceneRenderer>(CameraModel::top_down(kEye));
   }

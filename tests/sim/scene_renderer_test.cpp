@@ -9,6 +9,7 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <thread>
 
 #include "sim/colour_blob_detector.h"
 
@@ -67,7 +68,7 @@ Eigen::Vector2d red_centroid(const cv::Mat& bgr, double* area = nullptr) {
 
 class SceneRendererTest : public ::testing::Test {
  protected:
-  // One context for the suite: creating it costs ~0.3 s and MRPT allows only one at a time.
+  // One context for the suite: MRPT allows only one at a time, and the first costs ~0.15 s.
   static void SetUpTestSuite() {
     renderer_ = std::make_unique<SceneRenderer>(CameraModel::top_down(kEye));
   }
@@ -284,6 +285,22 @@ TEST_F(SceneRendererTest, ASecondLiveRendererIsRefused) {
   // The refusal must not disturb the live one.
   SceneSnapshot scene;
   add_table(scene);
+  EXPECT_NEAR(renderer_->render(scene).depth.at<float>(240, 320), 0.49, kDepthTolerance);
+}
+
+TEST_F(SceneRendererTest, RendersOnlyFromItsOwnThread) {
+  SceneSnapshot scene;
+  add_table(scene);
+  bool refused = false;
+  std::thread other([&] {
+    try {
+      renderer_->render(scene);
+    } catch (const std::logic_error&) {
+      refused = true;
+    }
+  });
+  other.join();
+  EXPECT_TRUE(refused);
   EXPECT_NEAR(renderer_->render(scene).depth.at<float>(240, 320), 0.49, kDepthTolerance);
 }
 
