@@ -12,23 +12,6 @@
 namespace opf::sim {
 namespace {
 
-Body make_body(const char* name, Shape shape, const Eigen::Vector3d& size, Colour colour,
-               bool tracked) {
-  Body body;
-  body.name = name;
-  body.shape = shape;
-  body.size = size;
-  body.colour = colour;
-  body.tracked = tracked;
-  return body;
-}
-
-BodyPose at(const Eigen::Vector3d& position) {
-  BodyPose pose;
-  pose.position = position;
-  return pose;
-}
-
 SceneSnapshot paper_scene() {
   SceneSnapshot scene;
   scene.bodies = {
@@ -39,8 +22,9 @@ SceneSnapshot paper_scene() {
       make_body("right_mug", Shape::kCylinder, Eigen::Vector3d(0.04, 0.04, 0.1), palette::kRightMug,
                 true),
       make_body("tray", Shape::kBox, Eigen::Vector3d(0.2, 0.12, 0.02), palette::kTray, true)};
-  scene.poses = {at({0.55, 0.0, -0.02}), at({0.4, 0.0, 0.025}), at({0.4, 0.15, 0.05}),
-                 at({0.4, -0.15, 0.05}), at({0.55, -0.09, 0.2})};
+  scene.poses = {pose_at({0.55, 0.0, -0.02}), pose_at({0.4, 0.0, 0.025}),
+                 pose_at({0.4, 0.15, 0.05}), pose_at({0.4, -0.15, 0.05}),
+                 pose_at({0.55, -0.09, 0.2})};
   return scene;
 }
 

@@ -64,6 +64,14 @@ std::optional<unsigned long long> Arguments::get_count(const std::string& name) 
   return value;
 }
 
+std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream stream(text);
+  for (std::string part; std::getline(stream, part, ',');)
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
 std::string usage(const std::string& command, const std::string& summary,
                   const std::vector<OptionSpec>& specs) {
   std::ostringstream out;

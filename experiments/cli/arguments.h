@@ -37,6 +37,9 @@ class Arguments {
   bool help_ = false;
 };
 
+/// "a,b,,c" -> {"a", "b", "c"}: the comma-separated lists of options like --estimators.
+std::vector<std::string> split_list(const std::string& text);
+
 /// "Usage: opf <command> ...\n" followed by one line per option.
 std::string usage(const std::string& command, const std::string& summary,
                   const std::vector<OptionSpec>& specs);

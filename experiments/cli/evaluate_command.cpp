@@ -36,14 +36,6 @@ constexpr const char* kSummary =
     "(m), rotation as the paper's Euler-angle difference and as the geodesic angle (rad), and\n"
     "translation over the frames the object was unobserved.";
 
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  for (std::string part; std::getline(stream, part, ',');)
-    if (!part.empty()) parts.push_back(part);
-  return parts;
-}
-
 using TruthTable = std::map<std::pair<double, std::string>, mrpt::poses::CPose3D>;
 
 TruthTable truth_table(const MeasurementLog& truth) {
@@ -93,7 +85,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   const std::string in = args.get("in").value_or(data + "example_log.csv");
   const std::string truth_path = args.get("truth").value_or(data + "example_truth.csv");
   const auto names =
-      args.has("estimators") ? split_commas(*args.get("estimators")) : estimator_names();
+      args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
   const std::size_t seeds = args.get_count("seeds").value_or(5);
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   const EstimatorSettings settings = settings_from(args);

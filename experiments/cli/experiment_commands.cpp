@@ -27,18 +27,10 @@ std::vector<OptionSpec> specs(bool reproduce) {
   return s;
 }
 
-std::vector<std::string> split_commas(const std::string& text) {
-  std::vector<std::string> parts;
-  std::stringstream stream(text);
-  for (std::string part; std::getline(stream, part, ',');)
-    if (!part.empty()) parts.push_back(part);
-  return parts;
-}
-
 int run_experiments(const std::vector<std::string>& paths, const Arguments& args,
                     const std::filesystem::path& out) {
   const auto names =
-      args.has("estimators") ? split_commas(*args.get("estimators")) : estimator_names();
+      args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
   for (const auto& name : names) make_estimator_factory(name, EstimatorSettings{});  // fail early
   const std::size_t seeds = args.get_count("seeds").value_or(5);
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};

@@ -34,6 +34,25 @@ struct BodyPose {
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
 
+inline Body make_body(std::string name, Shape shape, const Eigen::Vector3d& size, Colour colour,
+                      bool tracked = true) {
+  Body body;
+  body.name = std::move(name);
+  body.shape = shape;
+  body.size = size;
+  body.colour = colour;
+  body.tracked = tracked;
+  return body;
+}
+
+inline BodyPose pose_at(const Eigen::Vector3d& position,
+                        const Eigen::Quaterniond& orientation = Eigen::Quaterniond::Identity()) {
+  BodyPose pose;
+  pose.position = position;
+  pose.orientation = orientation;
+  return pose;
+}
+
 /// The scene at one instant: poses[i] is the pose of bodies[i].
 struct SceneSnapshot {
   double t = 0.0;

@@ -16,25 +16,6 @@ namespace {
 const Eigen::Vector3d kEye(0.55, 0.0, 0.49);  // paper experiment 1
 constexpr double kBallRadius = 0.025;         // a 5 cm ball, the size the paper's scene suggests
 
-Body make_body(const char* name, Shape shape, const Eigen::Vector3d& size, Colour colour,
-               bool tracked = true) {
-  Body body;
-  body.name = name;
-  body.shape = shape;
-  body.size = size;
-  body.colour = colour;
-  body.tracked = tracked;
-  return body;
-}
-
-BodyPose at(const Eigen::Vector3d& position,
-            const Eigen::Quaterniond& orientation = Eigen::Quaterniond::Identity()) {
-  BodyPose pose;
-  pose.position = position;
-  pose.orientation = orientation;
-  return pose;
-}
-
 Body ball(Colour colour = palette::kBall) {
   return make_body("ball", Shape::kSphere, Eigen::Vector3d::Constant(kBallRadius), colour);
 }
@@ -48,7 +29,7 @@ SceneSnapshot table_scene() {
   SceneSnapshot scene;
   scene.bodies.push_back(
       make_body("table", Shape::kBox, Eigen::Vector3d(1.2, 1.2, 0.04), palette::kTable, false));
-  scene.poses.push_back(at(Eigen::Vector3d(0.55, 0.0, -0.02)));
+  scene.poses.push_back(pose_at(Eigen::Vector3d(0.55, 0.0, -0.02)));
   return scene;
 }
 
@@ -98,7 +79,7 @@ TEST_F(ColourBlobDetectorTest, FullyVisibleBallIsFoundWithinAPixelOfItsProjected
        {Eigen::Vector3d(0.55, 0.0, kBallRadius), Eigen::Vector3d(0.4, 0.06, kBallRadius),
         Eigen::Vector3d(0.3, -0.35, kBallRadius), Eigen::Vector3d(0.75, 0.3, kBallRadius)}) {
     SceneSnapshot scene = table_scene();
-    add(scene, ball(), at(centre));
+    add(scene, ball(), pose_at(centre));
     const auto blob = detect(scene, palette::kBall);
     ASSERT_TRUE(blob.has_value()) << centre.transpose();
     const Eigen::Vector2d projected = *camera().project(centre);
@@ -122,11 +103,11 @@ TEST_F(ColourBlobDetectorTest, FullyVisibleBallIsFoundWithinAPixelOfItsProjected
 
 TEST_F(ColourBlobDetectorTest, UncoveredBodiesShowTheirWholeExpectedSilhouette) {
   SceneSnapshot scene = table_scene();
-  add(scene, ball(), at(Eigen::Vector3d(0.45, -0.2, kBallRadius)));
-  add(scene, mug(palette::kLeftMug), at(Eigen::Vector3d(0.4, 0.15, 0.05)));
+  add(scene, ball(), pose_at(Eigen::Vector3d(0.45, -0.2, kBallRadius)));
+  add(scene, mug(palette::kLeftMug), pose_at(Eigen::Vector3d(0.4, 0.15, 0.05)));
   const Eigen::Quaterniond yaw(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()));
   add(scene, make_body("tray", Shape::kBox, Eigen::Vector3d(0.2, 0.12, 0.02), palette::kTray),
-      at(Eigen::Vector3d(0.6, -0.05, 0.2), yaw));
+      pose_at(Eigen::Vector3d(0.6, -0.05, 0.2), yaw));
   renderer_->render(scene, frame_);
   const auto blobs = detector_.detect_tracked(frame_.bgr, frame_.depth, scene.bodies, camera());
   ASSERT_EQ(blobs.size(), scene.bodies.size());
@@ -142,8 +123,8 @@ TEST_F(ColourBlobDetectorTest, UncoveredBodiesShowTheirWholeExpectedSilhouette) 
 
 TEST_F(ColourBlobDetectorTest, BallUnderAMugIsMissing) {
   SceneSnapshot scene = table_scene();
-  add(scene, ball(), at(Eigen::Vector3d(0.4, 0.06, kBallRadius)));
-  add(scene, mug(palette::kLeftMug), at(Eigen::Vector3d(0.4, 0.06, 0.05)));
+  add(scene, ball(), pose_at(Eigen::Vector3d(0.4, 0.06, kBallRadius)));
+  add(scene, mug(palette::kLeftMug), pose_at(Eigen::Vector3d(0.4, 0.06, 0.05)));
   EXPECT_FALSE(detect(scene, palette::kBall).has_value());
   EXPECT_TRUE(detector_.detect(frame_.bgr, frame_.depth, palette::kLeftMug, camera()).has_value());
 }
@@ -151,7 +132,7 @@ TEST_F(ColourBlobDetectorTest, BallUnderAMugIsMissing) {
 TEST_F(ColourBlobDetectorTest, HalfCoveredBallIsBiasedAwayFromTheCoverWithHalfTheArea) {
   const Eigen::Vector3d centre(0.5, 0.0, kBallRadius);
   SceneSnapshot scene = table_scene();
-  add(scene, ball(), at(centre));
+  add(scene, ball(), pose_at(centre));
   const auto full = detect(scene, palette::kBall);
   ASSERT_TRUE(full.has_value());
 
@@ -161,7 +142,7 @@ TEST_F(ColourBlobDetectorTest, HalfCoveredBallIsBiasedAwayFromTheCoverWithHalfTh
   const double plate_z = 0.15;
   const double edge_y = camera().back_project(centre_px, kEye.z() - plate_z).y();
   add(scene, make_body("cover", Shape::kBox, Eigen::Vector3d(0.3, 0.3, 0.004), palette::kTray),
-      at(Eigen::Vector3d(0.5, edge_y + 0.15, plate_z)));
+      pose_at(Eigen::Vector3d(0.5, edge_y + 0.15, plate_z)));
   const auto half = detect(scene, palette::kBall);
   ASSERT_TRUE(half.has_value());
 
@@ -179,7 +160,7 @@ TEST_F(ColourBlobDetectorTest, HalfCoveredBallIsBiasedAwayFromTheCoverWithHalfTh
 
 TEST_F(ColourBlobDetectorTest, BlobBelowTheMinimumAreaIsMissing) {
   SceneSnapshot scene = table_scene();
-  add(scene, ball(), at(Eigen::Vector3d(0.55, 0.0, kBallRadius)));
+  add(scene, ball(), pose_at(Eigen::Vector3d(0.55, 0.0, kBallRadius)));
   const auto blob = detect(scene, palette::kBall);
   ASSERT_TRUE(blob.has_value());
   ColourBlobDetectorOptions options;
@@ -200,7 +181,8 @@ TEST_F(ColourBlobDetectorTest, PaletteColoursAreToldApartWithoutCrossTalk) {
     // Touching neighbours on a ring: a detector that accepted a neighbour's hue would merge them.
     const double angle = 2.0 * std::numbers::pi * k++ / 6.0;
     add(scene, ball(colour),
-        at(Eigen::Vector3d(0.55 + 0.05 * std::cos(angle), 0.05 * std::sin(angle), kBallRadius)));
+        pose_at(
+            Eigen::Vector3d(0.55 + 0.05 * std::cos(angle), 0.05 * std::sin(angle), kBallRadius)));
   }
   renderer_->render(scene, frame_);
   const auto blobs = detector_.detect_tracked(frame_.bgr, frame_.depth, scene.bodies, camera());
@@ -218,7 +200,7 @@ TEST_F(ColourBlobDetectorTest, HueBandWrapsAroundRed) {
   // hues [170, 179] and [0, 0].
   const Colour crimson{255, 0, 40};
   SceneSnapshot scene = table_scene();
-  add(scene, ball(crimson), at(Eigen::Vector3d(0.55, 0.0, kBallRadius)));
+  add(scene, ball(crimson), pose_at(Eigen::Vector3d(0.55, 0.0, kBallRadius)));
   const auto blob = detect(scene, crimson);
   ASSERT_TRUE(blob.has_value());
   EXPECT_NEAR(blob->area_px / expected_silhouette_area(scene.bodies[1], scene.poses[1], camera()),
@@ -232,7 +214,7 @@ TEST_F(ColourBlobDetectorTest, HueBandWrapsAroundRed) {
 
 TEST_F(ColourBlobDetectorTest, BodiesOutOfViewGetNothing) {
   SceneSnapshot scene = table_scene();
-  add(scene, ball(), at(Eigen::Vector3d(2.0, 0.0, kBallRadius)));  // far outside the image
+  add(scene, ball(), pose_at(Eigen::Vector3d(2.0, 0.0, kBallRadius)));  // far outside the image
   renderer_->render(scene, frame_);
   const auto blobs = detector_.detect_tracked(frame_.bgr, frame_.depth, scene.bodies, camera());
   ASSERT_EQ(blobs.size(), 2u);

@@ -25,30 +25,11 @@ const Eigen::Vector3d kEye(0.55, 0.0, 0.49);  // paper experiment 1
 // own mediump shader the same sweep is off by up to 3.4 mm.)
 constexpr double kDepthTolerance = 1.0e-4;
 
-Body make_body(const char* name, Shape shape, const Eigen::Vector3d& size, Colour colour,
-               bool tracked = true) {
-  Body body;
-  body.name = name;
-  body.shape = shape;
-  body.size = size;
-  body.colour = colour;
-  body.tracked = tracked;
-  return body;
-}
-
-BodyPose at(const Eigen::Vector3d& position,
-            const Eigen::Quaterniond& orientation = Eigen::Quaterniond::Identity()) {
-  BodyPose pose;
-  pose.position = position;
-  pose.orientation = orientation;
-  return pose;
-}
-
 // A 1.2 m x 1.2 m grey table whose top is the plane z = 0.
 void add_table(SceneSnapshot& scene) {
   scene.bodies.push_back(
       make_body("table", Shape::kBox, Eigen::Vector3d(1.2, 1.2, 0.04), palette::kTable, false));
-  scene.poses.push_back(at(Eigen::Vector3d(0.55, 0.0, -0.02)));
+  scene.poses.push_back(pose_at(Eigen::Vector3d(0.55, 0.0, -0.02)));
 }
 
 void add(SceneSnapshot& scene, const Body& body, const BodyPose& pose) {
@@ -110,7 +91,7 @@ TEST_F(SceneRendererTest, BoxTopDepthBackProjectsOntoTheBoxTop) {
   add_table(scene);
   // The paper's tray: 20 cm x 12 cm, its top 0.21 m above the table.
   add(scene, make_body("tray", Shape::kBox, Eigen::Vector3d(0.2, 0.12, 0.02), palette::kTray),
-      at(Eigen::Vector3d(0.55, -0.09, 0.2)));
+      pose_at(Eigen::Vector3d(0.55, -0.09, 0.2)));
   const CameraModel& camera = renderer_->camera();
   const RgbdFrame frame = renderer_->render(scene);
   int checked = 0;
@@ -185,10 +166,10 @@ TEST_F(SceneRendererTest, RenderingIsDeterministic) {
   SceneSnapshot scene;
   add_table(scene);
   add(scene, make_body("ball", Shape::kSphere, Eigen::Vector3d::Constant(0.025), palette::kBall),
-      at(Eigen::Vector3d(0.4, 0.06, 0.025)));
+      pose_at(Eigen::Vector3d(0.4, 0.06, 0.025)));
   add(scene,
       make_body("mug", Shape::kCylinder, Eigen::Vector3d(0.04, 0.04, 0.1), palette::kLeftMug),
-      at(Eigen::Vector3d(0.45, 0.12, 0.05)));
+      pose_at(Eigen::Vector3d(0.45, 0.12, 0.05)));
   const RgbdFrame first = renderer_->render(scene);
   SceneSnapshot other = scene;
   other.poses[1].position.x() += 0.1;
@@ -203,7 +184,7 @@ TEST_F(SceneRendererTest, MovingABodyMovesItsImageByItsProjection) {
   SceneSnapshot scene;
   add_table(scene);
   add(scene, make_body("ball", Shape::kSphere, Eigen::Vector3d::Constant(0.025), palette::kBall),
-      at(Eigen::Vector3d(0.55, 0.0, 0.025)));
+      pose_at(Eigen::Vector3d(0.55, 0.0, 0.025)));
   RgbdFrame frame;
   renderer_->render(scene, frame);
   const Eigen::Vector2d before = red_centroid(frame.bgr);
@@ -225,12 +206,12 @@ TEST_F(SceneRendererTest, CylinderIsCentredOnItsPoseAndBoxesFollowTheirOrientati
   // A 10 cm mug standing on the table: its centre is 5 cm up, so its top is 0.39 m from the lens.
   add(scene,
       make_body("mug", Shape::kCylinder, Eigen::Vector3d(0.04, 0.04, 0.1), palette::kRightMug),
-      at(Eigen::Vector3d(0.5, 0.1, 0.05)));
+      pose_at(Eigen::Vector3d(0.5, 0.1, 0.05)));
   // A 16 cm x 2 cm red bar turned 90 degrees about z: long along world y (image horizontal).
   const Eigen::Quaterniond quarter(
       Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ()));
   add(scene, make_body("bar", Shape::kBox, Eigen::Vector3d(0.16, 0.02, 0.02), palette::kBall),
-      at(Eigen::Vector3d(0.65, -0.1, 0.01), quarter));
+      pose_at(Eigen::Vector3d(0.65, -0.1, 0.01), quarter));
   const RgbdFrame frame = renderer_->render(scene);
 
   const auto mug_top = camera.project(Eigen::Vector3d(0.5, 0.1, 0.1));
@@ -253,7 +234,7 @@ TEST_F(SceneRendererTest, RebuildsWhenTheBodiesChange) {
   SceneSnapshot scene;
   add_table(scene);
   add(scene, make_body("ball", Shape::kSphere, Eigen::Vector3d::Constant(0.02), palette::kBall),
-      at(Eigen::Vector3d(0.55, 0.0, 0.02)));
+      pose_at(Eigen::Vector3d(0.55, 0.0, 0.02)));
   RgbdFrame frame;
   renderer_->render(scene, frame);
   double small = 0.0;

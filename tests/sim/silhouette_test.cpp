@@ -17,21 +17,13 @@ Body make_body(Shape shape, const Eigen::Vector3d& size) {
   return body;
 }
 
-BodyPose at(const Eigen::Vector3d& position,
-            const Eigen::Quaterniond& orientation = Eigen::Quaterniond::Identity()) {
-  BodyPose pose;
-  pose.position = position;
-  pose.orientation = orientation;
-  return pose;
-}
-
 TEST(ExpectedSilhouetteArea, SphereOnTheAxisMatchesPiFROverZSquared) {
   const CameraModel camera = CameraModel::top_down(kEye);
   for (const double radius : {0.02, 0.025, 0.03}) {
     const Body sphere = make_body(Shape::kSphere, Eigen::Vector3d::Constant(radius));
     const double z = kEye.z() - radius;
     const double area =
-        expected_silhouette_area(sphere, at(Eigen::Vector3d(0.55, 0.0, radius)), camera);
+        expected_silhouette_area(sphere, pose_at(Eigen::Vector3d(0.55, 0.0, radius)), camera);
     const double small_angle = std::numbers::pi * std::pow(camera.fx * radius / z, 2);
     EXPECT_NEAR(area / small_angle, 1.0, 0.03);
     // Exactly, the viewing cone's half-angle is asin(r / z): a circle of radius f r / sqrt(z^2 -
@@ -56,7 +48,7 @@ TEST(ExpectedSilhouetteArea, OffAxisSphereIsTheExactConicEllipse) {
   const double ellipse = std::numbers::pi * (camera.fx * sin_a * cos_a / denominator) *
                          (camera.fx * sin_a / std::sqrt(denominator));
   const double area = expected_silhouette_area(
-      make_body(Shape::kSphere, Eigen::Vector3d::Constant(radius)), at(centre), camera);
+      make_body(Shape::kSphere, Eigen::Vector3d::Constant(radius)), pose_at(centre), camera);
   EXPECT_NEAR(area / ellipse, 1.0, 1e-4);
   // And it is larger than on the axis at the same distance.
   EXPECT_GT(ellipse, std::numbers::pi * std::pow(camera.fx * radius, 2) /
@@ -71,9 +63,9 @@ TEST(ExpectedSilhouetteArea, BoxSeenFromAboveIsItsTopFace) {
   // Centred under the lens, the bottom face projects inside the top face, for any yaw.
   for (const double yaw : {0.0, 0.4, 1.3}) {
     const Eigen::Quaterniond q(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-    EXPECT_NEAR(
-        expected_silhouette_area(box, at(Eigen::Vector3d(0.55, 0.0, 0.2), q), camera) / top_face,
-        1.0, 1e-5);
+    EXPECT_NEAR(expected_silhouette_area(box, pose_at(Eigen::Vector3d(0.55, 0.0, 0.2), q), camera) /
+                    top_face,
+                1.0, 1e-5);
   }
 }
 
@@ -83,11 +75,12 @@ TEST(ExpectedSilhouetteArea, UprightCylinderUnderTheLensIsItsTopDisc) {
   const double top_depth = kEye.z() - 0.1;
   const double disc = std::numbers::pi * std::pow(camera.fx * 0.04 / top_depth, 2);
   // The 256-gon on the rim is 1e-4 smaller than the disc.
-  EXPECT_NEAR(expected_silhouette_area(mug, at(Eigen::Vector3d(0.55, 0.0, 0.05)), camera) / disc,
-              1.0, 2e-4);
+  EXPECT_NEAR(
+      expected_silhouette_area(mug, pose_at(Eigen::Vector3d(0.55, 0.0, 0.05)), camera) / disc, 1.0,
+      2e-4);
   // Lying on its side (axis along world x) it shows a rectangle-ish outline, much larger.
   const Eigen::Quaterniond lying(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitY()));
-  EXPECT_GT(expected_silhouette_area(mug, at(Eigen::Vector3d(0.55, 0.0, 0.04), lying), camera),
+  EXPECT_GT(expected_silhouette_area(mug, pose_at(Eigen::Vector3d(0.55, 0.0, 0.04), lying), camera),
             1.1 * disc);
 }
 
@@ -100,25 +93,26 @@ TEST(ExpectedSilhouetteArea, IsClippedToTheImage) {
   const double edge_y =
       camera.back_project(Eigen::Vector2d(camera.width - 0.5, camera.cy), kEye.z() - z).y();
   const double straddling =
-      expected_silhouette_area(plate, at(Eigen::Vector3d(0.55, edge_y, z)), camera);
-  const double inside = expected_silhouette_area(plate, at(Eigen::Vector3d(0.55, 0.0, z)), camera);
+      expected_silhouette_area(plate, pose_at(Eigen::Vector3d(0.55, edge_y, z)), camera);
+  const double inside =
+      expected_silhouette_area(plate, pose_at(Eigen::Vector3d(0.55, 0.0, z)), camera);
   EXPECT_NEAR(straddling / inside, 0.5, 1e-3);
-  EXPECT_EQ(expected_silhouette_area(plate, at(Eigen::Vector3d(0.55, 3.0, z)), camera), 0.0);
+  EXPECT_EQ(expected_silhouette_area(plate, pose_at(Eigen::Vector3d(0.55, 3.0, z)), camera), 0.0);
 }
 
 TEST(ExpectedSilhouetteArea, BehindTheCameraIsZeroAndAcrossItIsNaN) {
   const CameraModel camera = CameraModel::top_down(kEye);
   const Body ball = make_body(Shape::kSphere, Eigen::Vector3d::Constant(0.03));
   const Body box = make_body(Shape::kBox, Eigen::Vector3d(0.1, 0.1, 0.1));
-  EXPECT_EQ(expected_silhouette_area(ball, at(Eigen::Vector3d(0.55, 0.0, 1.2)), camera), 0.0);
-  EXPECT_EQ(expected_silhouette_area(box, at(Eigen::Vector3d(0.55, 0.0, 1.2)), camera), 0.0);
+  EXPECT_EQ(expected_silhouette_area(ball, pose_at(Eigen::Vector3d(0.55, 0.0, 1.2)), camera), 0.0);
+  EXPECT_EQ(expected_silhouette_area(box, pose_at(Eigen::Vector3d(0.55, 0.0, 1.2)), camera), 0.0);
   EXPECT_TRUE(
-      std::isnan(expected_silhouette_area(ball, at(Eigen::Vector3d(0.7, 0.0, 0.81)), camera)));
+      std::isnan(expected_silhouette_area(ball, pose_at(Eigen::Vector3d(0.7, 0.0, 0.81)), camera)));
   EXPECT_TRUE(
-      std::isnan(expected_silhouette_area(box, at(Eigen::Vector3d(0.7, 0.0, 0.8)), camera)));
+      std::isnan(expected_silhouette_area(box, pose_at(Eigen::Vector3d(0.7, 0.0, 0.8)), camera)));
   // The camera inside a sphere.
   EXPECT_TRUE(std::isnan(expected_silhouette_area(
-      make_body(Shape::kSphere, Eigen::Vector3d::Constant(0.5)), at(kEye), camera)));
+      make_body(Shape::kSphere, Eigen::Vector3d::Constant(0.5)), pose_at(kEye), camera)));
 }
 
 }  // namespace
