@@ -1,6 +1,7 @@
 #include "experiment_commands.h"
 
 #include "arguments.h"
+#include "drivers/closed_loop_run.h"
 #include "drivers/figures.h"
 #include "drivers/observe_experiment.h"
 #include "drivers/results_files.h"
@@ -48,6 +49,12 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     const EstimatorSettings settings = settings_from(
         args, config.estimator_config.empty() ? EstimatorSettings{}
                                               : load_estimator_settings(config.estimator_config));
+    if (config.closed_loop) {
+      all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress));
+      for (auto& figure : experiments::write_figures(out, config, {}, all.back()))
+        figures.push_back(std::move(figure));
+      continue;
+    }
     const experiments::Observation observation = experiments::observe_experiment(config, progress);
     all.push_back(
         experiments::run_open_loop(config, observation, names, settings, seeds, seed, progress));
@@ -111,7 +118,8 @@ int reproduce_command(const std::vector<std::string>& raw) {
     return 0;
   }
   const std::string dir = std::string(OPF_SOURCE_DIR) + "/experiments/";
-  return run_experiments({dir + "general_op.yaml"}, args, args.get("out").value_or("results"));
+  return run_experiments({dir + "general_op.yaml", dir + "sugar_drop.yaml"}, args,
+                         args.get("out").value_or("results"));
 }
 
 }  // namespace opf::cli

@@ -39,6 +39,14 @@ struct FrameRecord {
   bool visible = false;  ///< measured in this frame
 };
 
+/// What happened to the payload in one closed-loop run (sugar dropping).
+struct DropOutcome {
+  bool released = false;
+  double release_t = 0.0;
+  bool landed = false;         ///< inside the target's rim when it came down
+  double miss_distance = 0.0;  ///< horizontal distance from the target's axis at landing, m
+};
+
 struct ExperimentResults {
   std::string experiment;
   std::vector<std::string> estimators;
@@ -46,6 +54,8 @@ struct ExperimentResults {
   /// Per estimator, one RunErrors per seed over the objects of interest (mean over their frames).
   std::map<std::string, std::vector<RunErrors>> runs;
   std::vector<FrameRecord> records;  ///< every tracked body, estimator, seed and frame
+  /// Closed-loop experiments only: per estimator, one outcome per seed.
+  std::map<std::string, std::vector<DropOutcome>> drops;
 };
 
 /// Called before each (estimator, seed) run: a line for the progress display.

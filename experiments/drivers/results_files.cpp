@@ -104,7 +104,19 @@ void write_summary_json(const std::filesystem::path& path,
         stat("translation_error", metric_of(runs, Metric::kTranslation), false);
         stat("rotation_error_paper", metric_of(runs, Metric::kRotationPaper), false);
         stat("rotation_error_geodesic", metric_of(runs, Metric::kRotationGeodesic), false);
-        stat("translation_error_unobserved", metric_of(runs, Metric::kTranslationUnobserved), true);
+        const auto drops = x.drops.find(x.estimators[i]);
+        const bool closed_loop = drops != x.drops.end();
+        stat("translation_error_unobserved", metric_of(runs, Metric::kTranslationUnobserved),
+             !closed_loop);
+        if (closed_loop) {
+          std::size_t released = 0, landed = 0;
+          for (const DropOutcome& d : drops->second) {
+            released += d.released;
+            landed += d.landed;
+          }
+          out << "        \"payload_released\": " << released << ",\n";
+          out << "        \"payload_landed\": " << landed << "\n";
+        }
         out << "      }" << (i + 1 < x.estimators.size() ? ",\n" : "\n");
       }
       out << "    }" << (e + 1 < experiments.size() ? ",\n" : "\n");
@@ -130,6 +142,19 @@ void print_results_table(std::ostream& out, const std::vector<ExperimentResults>
                     cell(metric_of(runs, Metric::kRotationPaper)).c_str(),
                     cell(metric_of(runs, Metric::kRotationGeodesic)).c_str(),
                     cell(metric_of(runs, Metric::kTranslationUnobserved)).c_str());
+      out << line;
+    }
+    for (const std::string& name : x.estimators) {
+      const auto drops = x.drops.find(name);
+      if (drops == x.drops.end()) continue;
+      std::size_t released = 0, landed = 0;
+      for (const DropOutcome& d : drops->second) {
+        released += d.released;
+        landed += d.landed;
+      }
+      std::snprintf(line, sizeof line,
+                    "  %-10s cube released in %zu of %zu runs, landed in the mug in %zu\n",
+                    name.c_str(), released, drops->second.size(), landed);
       out << line;
     }
     const auto paper = paper_table().find(x.experiment);

@@ -14,7 +14,8 @@ namespace opf::experiments {
 void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results);
 
 /// experiments.<name>.<estimator>.{translation_error, rotation_error_paper,
-/// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus runs and seeds.
+/// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus seeds, and for
+/// closed-loop experiments payload_released and payload_landed (counts over the seeds).
 void write_summary_json(const std::filesystem::path& path,
                         const std::vector<ExperimentResults>& experiments);
 

@@ -43,6 +43,8 @@ class YamlReader {
   /// "expected <expectation>, got <the value as written>".
   void require(std::string_view key, bool ok, const std::string& expectation) const;
 
+  /// Whether the mapping has `key` (without marking it read).
+  bool has_key(std::string_view key) const { return peek(key) != nullptr; }
   /// The nested mapping at `key` (an empty one when absent). Owned by this reader, which checks it
   /// in finish().
   YamlReader& child(std::string_view key);

@@ -137,6 +137,32 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   }
   if (config.objects_of_interest.empty())
     yaml.fail("objects_of_interest", "expected the comma-separated names of scored bodies");
+  if (yaml.has_key("closed_loop")) {
+    YamlReader& loop = yaml.child("closed_loop");
+    ClosedLoopSettings c;
+    for (auto [key, out] : {std::pair{"robot", &c.robot}, std::pair{"payload", &c.payload},
+                            std::pair{"target", &c.target}}) {
+      loop.get(key, *out);
+      if (std::find(names.begin(), names.end(), *out) == names.end())
+        loop.fail(key, "expected the name of a body, got \"" + *out + "\"");
+    }
+    loop.get("start_below_y", c.start_below_y);
+    loop.get_positive("hover_height", c.hover_height);
+    loop.get_positive("release_distance", c.release_distance);
+    loop.get_positive("release_trace_ratio", c.release_trace_ratio);
+    loop.get_positive("gravity", c.gravity);
+    YamlReader& controller = loop.child("controller");
+    controller.get_positive("kp_nominal", c.controller.kp_nominal);
+    controller.get_positive("kd_nominal", c.controller.kd_nominal);
+    controller.get_positive("epsilon_safe", c.controller.epsilon_safe);
+    controller.get_positive("steepness", c.controller.steepness);
+    try {
+      validate(c.controller);
+    } catch (const std::invalid_argument& e) {
+      controller.fail("kd_nominal", e.what());
+    }
+    config.closed_loop = c;
+  }
   yaml.finish();
   if (config.frames == 0) throw InputError(source, 0, "frames", "expected a frame count >= 1");
   try {
