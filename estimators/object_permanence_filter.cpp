@@ -79,7 +79,8 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     const Eigen::Quaterniond orientation = orientation_of(*measurement);
     keep_hypothesis_explaining(position);
     Hypothesis& h = hypotheses_[0];
-    h.filter.update_with_measurement(position, orientation);
+    const Source hidden_by = h.source;
+    const bool lost = h.filter.update_with_measurement(position, orientation);
     h.filter.normalise_and_resample();
     h.inflation.reset();
     h.source = Source::kMeasurement;
@@ -87,7 +88,14 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     h.occluder.clear();
     h.last_carrier_position.reset();
     h.carrier_track.clear();
-    if (hidden_ && t - hidden_since_ > options_.history_reset_gap) history_.clear();
+    // The history restarts when the object turns up somewhere its history does not lead: after a
+    // long occlusion in which it was carried by an occluder or only predicted (revealed in a new
+    // place), or whenever the measurement was far outside the cloud (sensor reset). An object the
+    // dynamics module carried through the gap keeps its history: its motion is still that one,
+    // and a brief, partly covered glimpse is no better basis for the next fit.
+    if (lost || (hidden_ && hidden_by != Source::kTrajectory &&
+                 t - hidden_since_ > options_.history_reset_gap))
+      history_.clear();
     hidden_ = false;
     const TranslationMoments tm = h.filter.translation_moments();
     history_.push_back({t, tm.mean, h.filter.rotation_moments().mean});

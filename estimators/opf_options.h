@@ -25,9 +25,10 @@ struct OpfOptions {
   /// H, the states the dynamics module looks back on (paper: 50). The history holds estimates
   /// from frames with a real measurement.
   std::size_t history_length = 50;
-  /// After an occlusion longer than this (s) the history restarts when the object reappears:
-  /// the states before it describe where the object was, not how it moves now (the ball revealed
-  /// at a new place must not read as "moving" along the jump).
+  /// After an occlusion longer than this (s) in which the object was carried by its occluder or
+  /// only predicted, the history restarts when it reappears: the states before it describe where
+  /// the object was, not how it moves now (the ball revealed at a new place must not read as
+  /// "moving" along the jump). It also restarts when a measurement resets the filter.
   double history_reset_gap = 0.5;
   /// While hidden, move the particles with the carrier of the virtual measurement (the fitted
   /// trajectory, or the occluder's filtered estimate) as the motion model f of Eq. 3. The paper
