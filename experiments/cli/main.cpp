@@ -3,6 +3,7 @@
 #include "arguments.h"
 #include "evaluate_command.h"
 #include "experiment_commands.h"
+#include "render_command.h"
 #include "track_command.h"
 
 #include <exception>
@@ -22,6 +23,7 @@ constexpr const char* kHelp =
     "  evaluate   compare every estimator against ground truth over several seeds\n"
     "  reproduce  run the paper's simulated experiments and print Table I beside the paper's\n"
     "  run        run one experiment file (rendered scene, every estimator, several seeds)\n"
+    "  render     render one frame of an experiment with what the detector sees\n"
     "\n"
     "Run 'opf <command> --help' for a command's options.\n";
 
@@ -40,6 +42,7 @@ int main(int argc, char** argv) {
     if (command == "evaluate") return opf::cli::evaluate_command(rest);
     if (command == "reproduce") return opf::cli::reproduce_command(rest);
     if (command == "run") return opf::cli::run_command(rest);
+    if (command == "render") return opf::cli::render_command(rest);
     std::cerr << "opf: unknown command '" << command << "'\n\n" << kHelp;
     return 2;
   } catch (const opf::cli::UsageError& error) {

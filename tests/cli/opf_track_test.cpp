@@ -120,10 +120,13 @@ TEST_F(OpfProgram, SameSeedGivesByteIdenticalOutputDifferentSeedDoesNot) {
 }
 
 TEST_F(OpfProgram, EverySubcommandHasHelp) {
-  for (const char* command : {"track", "evaluate", "run", "reproduce"}) {
+  // Each command's help names its own options: the estimator-running ones take --seed.
+  for (const auto& [command, option] :
+       {std::pair{"track", "--seed"}, std::pair{"evaluate", "--seed"}, std::pair{"run", "--seed"},
+        std::pair{"reproduce", "--seed"}, std::pair{"render", "--frame"}}) {
     ASSERT_EQ(run(std::string(command) + " --help"), 0);
     EXPECT_NE(out().find("Usage: opf " + std::string(command)), std::string::npos) << out();
-    EXPECT_NE(out().find("--seed"), std::string::npos);
+    EXPECT_NE(out().find(option), std::string::npos) << command;
   }
   ASSERT_EQ(run("--help"), 0);
   EXPECT_NE(out().find("track"), std::string::npos);
@@ -144,6 +147,23 @@ TEST_F(OpfProgram, MissingInputFileFailsWithoutWritingOutput) {
   EXPECT_EQ(run("track --in " + (dir_ / "missing.csv").string() + " --out " + est.string()), 1);
   EXPECT_NE(err().find("missing.csv"), std::string::npos) << err();
   EXPECT_FALSE(fs::exists(est));
+}
+
+TEST_F(OpfProgram, RenderWritesTheFrameAndItsDetections) {
+  const fs::path png = dir_ / "frame.png";
+  // Frame 130 of general_op: the ball is under the mug, the mugs and the tray are in view.
+  ASSERT_EQ(run("render " + std::string(OPF_SOURCE_DIR) +
+                "/experiments/general_op.yaml --frame 130 --out " + png.string()),
+            0)
+      << err();
+  EXPECT_TRUE(fs::exists(png));
+  EXPECT_GT(fs::file_size(png), 1000u);
+  const std::string table = out();
+  EXPECT_NE(table.find("ball         no"), std::string::npos) << table;
+  EXPECT_NE(table.find("left_mug     yes"), std::string::npos) << table;
+  EXPECT_EQ(
+      run("render " + std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml --frame 999"), 2);
+  EXPECT_NE(err().find("--frame must be below"), std::string::npos) << err();
 }
 
 TEST_F(OpfProgram, EvaluatePrintsOneRowPerEstimator) {
