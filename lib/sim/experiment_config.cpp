@@ -74,6 +74,18 @@ ScriptedBody body(YamlReader& yaml) {
     b.waypoints.push_back(waypoint);
   }
   if (b.waypoints.empty()) yaml.fail("waypoints", "expected at least one waypoint");
+  if (yaml.has_key("flight")) {
+    YamlReader& f = yaml.child("flight");
+    ScriptedBody::Flight flight;
+    f.get("from", flight.t_start);
+    f.get("to", flight.t_end);
+    f.require("to", flight.t_end > flight.t_start, "a time after 'from'");
+    flight.position = vector3(f, "position", flight.position);
+    flight.velocity = vector3(f, "velocity", flight.velocity);
+    flight.spin = vector3(f, "spin", flight.spin);
+    f.get_positive("gravity", flight.gravity);
+    b.flight = flight;
+  }
   for (YamlReader* c : yaml.sequence("carried")) {
     CarriedSpan span;
     c->get("from", span.t_start);
@@ -128,6 +140,22 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
 
   std::vector<std::string> names;
   for (const auto& b : config.bodies) names.push_back(b.body.name);
+  std::string sensor = "camera";
+  yaml.get("sensor", sensor);
+  if (sensor == "motion_capture")
+    config.sensor = SensorKind::kMotionCapture;
+  else if (sensor != "camera")
+    yaml.fail("sensor", "expected camera or motion_capture, got \"" + sensor + "\"");
+  for (YamlReader* d : yaml.sequence("dropouts")) {
+    Dropout dropout;
+    d->get("from", dropout.from);
+    d->get("to", dropout.to);
+    d->require("to", dropout.to > dropout.from, "a time after 'from'");
+    config.dropouts.push_back(dropout);
+  }
+  if (!config.dropouts.empty() && config.sensor != SensorKind::kMotionCapture)
+    yaml.fail("dropouts", "dropouts are scheduled for the motion-capture sensor only");
+
   std::string interest;
   yaml.get("objects_of_interest", interest);
   for (std::stringstream list(interest); std::getline(list, interest, ',');) {

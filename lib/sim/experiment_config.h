@@ -57,8 +57,20 @@ struct ClosedLoopSettings {
   double gravity = 9.81;
 };
 
+/// The paper's other sensor (baseball experiment): motion capture measures every body directly
+/// (measurement.position_noise and orientation_noise apply), at the experiment's rate, except
+/// during scheduled dropouts when the capture is disabled.
+struct Dropout {
+  double from = 0.0;  ///< s, inclusive
+  double to = 0.0;    ///< s, exclusive
+};
+
+enum class SensorKind { kCamera, kMotionCapture };
+
 struct ExperimentConfig {
   std::string name;
+  SensorKind sensor = SensorKind::kCamera;
+  std::vector<Dropout> dropouts;  ///< motion capture only
   double rate = 30.0;  ///< frames per second (paper: camera rate)
   int frames = 0;
   CameraSettings camera;

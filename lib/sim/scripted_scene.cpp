@@ -78,6 +78,12 @@ BodyPose ScriptedScene::pose_at(std::size_t index, double t, int depth) const {
     throw std::invalid_argument("scripted scene: bodies carry each other in a cycle");
   if (driven_[index]) return *driven_[index];
   const ScriptedBody& b = bodies_[index];
+  if (b.flight && t >= b.flight->t_start && t <= b.flight->t_end) {
+    const double s = t - b.flight->t_start;
+    return {b.flight->position + b.flight->velocity * s +
+                Eigen::Vector3d(0, 0, -0.5 * b.flight->gravity * s * s),
+            (so3::exp(b.flight->spin * s) * b.flight->orientation).normalized()};
+  }
   for (const CarriedSpan& c : b.carried)
     if (t >= c.t_start && t < c.t_end) return carried_pose(index, c, t, depth);
   return scripted_pose(index, t, depth);

@@ -34,6 +34,18 @@ struct ScriptedBody {
   /// A sphere rolling on the table: its orientation turns with the distance travelled
   /// (angle = distance / radius about z x direction), instead of following the waypoints.
   bool rolling = false;
+  /// A throw: from t_start to t_end the body flies from `position` with `velocity` under gravity
+  /// (-z) and spins at `spin` (rad/s, world frame) from `orientation`; outside it, the waypoints.
+  struct Flight {
+    double t_start = 0.0;
+    double t_end = 0.0;
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+    Eigen::Vector3d spin = Eigen::Vector3d::Zero();
+    Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+    double gravity = 9.81;
+  };
+  std::optional<Flight> flight;
 };
 
 class ScriptedScene {

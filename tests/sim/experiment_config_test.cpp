@@ -56,6 +56,16 @@ TEST(ExperimentConfig, TheBundledGeneralOpFollowsThePaper) {
             0.01);
 }
 
+TEST(ExperimentConfig, TheBundledBaseballUsesMotionCaptureWithADropout) {
+  const ExperimentConfig c =
+      load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/baseball.yaml");
+  EXPECT_EQ(c.sensor, SensorKind::kMotionCapture);
+  ASSERT_EQ(c.dropouts.size(), 1u);
+  EXPECT_EQ(c.dropouts[0].to - c.dropouts[0].from, 0.5);  // paper: capture disabled for 0.5 s
+  ASSERT_TRUE(c.bodies[0].flight.has_value());
+  EXPECT_EQ(c.rate, 100.0);
+}
+
 InputError error_of(const std::string& yaml) {
   try {
     parse_experiment(yaml, "bad.yaml");
@@ -83,6 +93,12 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
 
   bad = kMinimal + "    carried: [{from: 0, to: 1, by: nobody}]\n";
   EXPECT_EQ(error_of(bad).field(), "bodies");
+
+  bad = kMinimal + "dropouts: [{from: 1, to: 2}]\n";
+  EXPECT_EQ(error_of(bad).field(), "dropouts");  // only for motion capture
+
+  bad = kMinimal + "sensor: lidar\n";
+  EXPECT_EQ(error_of(bad).field(), "sensor");
 
   bad = kMinimal + "camera: {fov: 60}\n";
   e = error_of(bad);

@@ -79,6 +79,18 @@ TEST(ScriptedScene, RollingBallTurnsByDistanceOverRadius) {
               0.0, 1e-12);
 }
 
+TEST(ScriptedScene, AFlightIsAParabolaWithSpin) {
+  ScriptedBody b = body("ball", {{0.0, {0, 0, 1}, {}}});
+  b.flight = ScriptedBody::Flight{
+      0.0, 1.0, {0, 0, 1}, {2, 0, 3}, {0, 4, 0}, Eigen::Quaterniond::Identity(), 9.81};
+  const ScriptedScene scene({b});
+  const BodyPose p = scene.pose_of("ball", 0.5);
+  EXPECT_LT((p.position - Eigen::Vector3d(1.0, 0.0, 1.0 + 1.5 - 0.5 * 9.81 * 0.25)).norm(), 1e-12);
+  EXPECT_NEAR(so3::angle_between(p.orientation, so3::exp(Eigen::Vector3d(0, 2.0, 0))), 0.0, 1e-12);
+  // After the flight the waypoints apply again.
+  EXPECT_EQ(scene.pose_of("ball", 2.0).position, Eigen::Vector3d(0, 0, 1));
+}
+
 TEST(ScriptedScene, DrivenBodyFollowsItsDriver) {
   ScriptedScene scene({body("hand", {{0.0, {0.5, 0, 0.4}, {}}})});
   scene.drive("hand", {Eigen::Vector3d(0.55, 0.2, 0.3), Eigen::Quaterniond::Identity()});
