@@ -66,6 +66,22 @@ TEST(ExperimentConfig, TheBundledBaseballUsesMotionCaptureWithADropout) {
   EXPECT_EQ(c.rate, 100.0);
 }
 
+TEST(ExperimentConfig, EveryBundledExperimentLoads) {
+  int count = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(OPF_SOURCE_DIR) + "/experiments")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    const ExperimentConfig c = load_experiment(entry.path());
+    const ScriptedScene scene(c.bodies);
+    EXPECT_GT(c.frames, 0);
+    EXPECT_EQ(c.name, entry.path().stem().string());
+    for (const auto& object : c.objects_of_interest) EXPECT_NO_THROW(scene.index_of(object));
+    ++count;
+  }
+  EXPECT_EQ(count, 4);  // general_op, sugar_drop, baseball, cups_game
+}
+
 InputError error_of(const std::string& yaml) {
   try {
     parse_experiment(yaml, "bad.yaml");
