@@ -64,6 +64,21 @@ std::optional<unsigned long long> Arguments::get_count(const std::string& name) 
   return value;
 }
 
+SplitCommandLine split_positional(const std::vector<std::string>& raw) {
+  SplitCommandLine split;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const bool help = raw[i] == "--help" || raw[i] == "-h";
+    if (help || raw[i].rfind("--", 0) == 0) {
+      split.options.push_back(raw[i]);
+      if (!help && raw[i].find('=') == std::string::npos && i + 1 < raw.size())
+        split.options.push_back(raw[++i]);
+    } else {
+      split.positional.push_back(raw[i]);
+    }
+  }
+  return split;
+}
+
 std::vector<std::string> split_list(const std::string& text) {
   std::vector<std::string> parts;
   std::stringstream stream(text);

@@ -75,19 +75,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
 
 int run_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs(false);
-  std::vector<std::string> options;
-  std::vector<std::string> positional;
-  for (std::size_t i = 0; i < raw.size(); ++i) {
-    if (raw[i].rfind("--", 0) == 0 || raw[i] == "-h") {
-      options.push_back(raw[i]);
-      // A value follows every option here except --help.
-      if (raw[i] != "--help" && raw[i] != "-h" && raw[i].find('=') == std::string::npos &&
-          i + 1 < raw.size())
-        options.push_back(raw[++i]);
-    } else {
-      positional.push_back(raw[i]);
-    }
-  }
+  const auto [options, positional] = split_positional(raw);
   const Arguments args(options, option_specs);
   if (args.help()) {
     std::cout << usage("run EXPERIMENT.yaml",

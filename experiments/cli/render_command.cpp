@@ -29,17 +29,7 @@ constexpr const char* kSummary =
 
 int render_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
-  std::vector<std::string> options, positional;
-  for (std::size_t i = 0; i < raw.size(); ++i) {
-    if (raw[i].rfind("--", 0) == 0 || raw[i] == "-h") {
-      options.push_back(raw[i]);
-      if (raw[i] != "--help" && raw[i] != "-h" && raw[i].find('=') == std::string::npos &&
-          i + 1 < raw.size())
-        options.push_back(raw[++i]);
-    } else {
-      positional.push_back(raw[i]);
-    }
-  }
+  const auto [options, positional] = split_positional(raw);
   const Arguments args(options, option_specs);
   if (args.help()) {
     std::cout << usage("render EXPERIMENT.yaml", kSummary, option_specs);

@@ -29,14 +29,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
   if (!config.closed_loop)
     throw std::invalid_argument("run_closed_loop: not a closed-loop experiment");
   const sim::ClosedLoopSettings& loop = *config.closed_loop;
-  ExperimentResults results;
-  results.experiment = config.name;
-  results.estimators = estimators;
-  results.seeds = seeds;
-  const auto is_of_interest = [&](const std::string& object) {
-    return std::find(config.objects_of_interest.begin(), config.objects_of_interest.end(),
-                     object) != config.objects_of_interest.end();
-  };
+  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}};
   // One renderer for all runs: MRPT allows one off-screen renderer per process at a time.
   sim::CameraSensor sensor(camera_of(config));
   const double dt = 1.0 / config.rate;
@@ -44,9 +37,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
   for (std::size_t s = 0; s < seeds; ++s) {
     const std::uint64_t seed = derive_seed(base_seed, s);
     for (const std::string& name : estimators) {
-      if (progress)
-        progress(config.name + ": " + name + ", seed " + std::to_string(s + 1) + "/" +
-                 std::to_string(seeds));
+      report_progress(progress, config, name, s, seeds);
       sim::ScriptedScene scene(config.bodies);
       const sim::BodyPose robot_start = scene.pose_of(loop.robot, 0.0);
       const Eigen::Vector3d payload_offset =
@@ -56,7 +47,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
       Eigen::Vector3d robot = robot_start.position;
       Eigen::Vector3d robot_velocity = Eigen::Vector3d::Zero();
 
-      Random noise(derive_seed(seed, 0x6e6f697365));  // the same noise stream as open loop
+      Random noise = measurement_noise(seed);
       Tracker tracker(make_estimator_factory(name, settings), seed);
       ErrorAccumulator errors;
       DropOutcome drop;
@@ -86,7 +77,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
         for (const Estimate& estimate : tracker.step(frame)) {
           const std::size_t index = scene.index_of(estimate.object);
           const sim::BodyPose& pose = truth.poses[index];
-          if (is_of_interest(estimate.object))
+          if (config.is_of_interest(estimate.object))
             errors.add(estimate, make_pose(pose.position, pose.orientation));
           results.records.push_back(
               {k, name, s, pose, estimate, frame.find(estimate.object) != nullptr});

@@ -10,34 +10,36 @@
 
 namespace opf::experiments {
 
+Random measurement_noise(std::uint64_t run_seed) {
+  return Random(derive_seed(run_seed, 0x6e6f697365));  // "noise"
+}
+
+void report_progress(const Progress& progress, const sim::ExperimentConfig& config,
+                     const std::string& estimator, std::size_t seed_index, std::size_t seeds) {
+  if (progress)
+    progress(config.name + ": " + estimator + ", seed " + std::to_string(seed_index + 1) + "/" +
+             std::to_string(seeds));
+}
+
 ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Observation& observation,
                                 const std::vector<std::string>& estimators,
                                 const EstimatorSettings& settings, std::size_t seeds,
                                 std::uint64_t base_seed, const Progress& progress) {
   if (observation.truth.size() != observation.camera.size())
     throw std::invalid_argument("run_open_loop: truth and camera frames differ in number");
-  ExperimentResults results;
-  results.experiment = config.name;
-  results.estimators = estimators;
-  results.seeds = seeds;
-  const auto is_of_interest = [&](const std::string& object) {
-    return std::find(config.objects_of_interest.begin(), config.objects_of_interest.end(),
-                     object) != config.objects_of_interest.end();
-  };
+  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}};
 
   for (std::size_t s = 0; s < seeds; ++s) {
     // The seed's measurement stream, shared by every estimator (paired comparison).
     const std::uint64_t seed = derive_seed(base_seed, s);
-    Random noise(derive_seed(seed, 0x6e6f697365));  // "noise": independent of the filters' seeds
+    Random noise = measurement_noise(seed);
     std::vector<Frame> frames;
     for (std::size_t k = 0; k < observation.camera.size(); ++k)
       frames.push_back(sim::noisy_measurement(observation.camera[k], observation.truth[k],
                                               config.measurement, noise));
 
     for (const std::string& name : estimators) {
-      if (progress)
-        progress(config.name + ": " + name + ", seed " + std::to_string(s + 1) + "/" +
-                 std::to_string(seeds));
+      report_progress(progress, config, name, s, seeds);
       Tracker tracker(make_estimator_factory(name, settings), seed);
       ErrorAccumulator errors;
       for (std::size_t k = 0; k < frames.size(); ++k) {
@@ -49,7 +51,7 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
           if (body == truth.bodies.size())
             throw std::logic_error("run_open_loop: estimate of an unknown body " + estimate.object);
           const sim::BodyPose& pose = truth.poses[body];
-          if (is_of_interest(estimate.object))
+          if (config.is_of_interest(estimate.object))
             errors.add(estimate, make_pose(pose.position, pose.orientation));
           results.records.push_back({static_cast<int>(k), name, s, pose, estimate,
                                      frames[k].find(estimate.object) != nullptr});

@@ -6,6 +6,7 @@
 #include "core/error_accumulator.h"
 #include "core/estimate.h"
 #include "estimators/estimator_settings.h"
+#include "particles/random.h"
 #include "sim/experiment_config.h"
 #include "sim/sighting.h"
 
@@ -60,6 +61,14 @@ struct ExperimentResults {
 
 /// Called before each (estimator, seed) run: a line for the progress display.
 using Progress = std::function<void(const std::string& line)>;
+
+/// The sensor-noise generator of the run with seed `run_seed`: independent of the filters' own
+/// generators (derived from the same seed), and the same for every estimator of that seed.
+Random measurement_noise(std::uint64_t run_seed);
+
+/// Reports "<experiment>: <estimator>, seed k/n" when `progress` is set.
+void report_progress(const Progress& progress, const sim::ExperimentConfig& config,
+                     const std::string& estimator, std::size_t seed_index, std::size_t seeds);
 
 /// Throws std::invalid_argument for an unknown estimator (the registry's message).
 ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Observation& observation,

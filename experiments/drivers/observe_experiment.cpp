@@ -24,7 +24,8 @@ Observation observe_experiment(const sim::ExperimentConfig& config, const Progre
       const double t = k / config.rate;
       const sim::SceneSnapshot snapshot = scene.at(t);
       bool disabled = false;
-      for (const sim::Dropout& d : config.dropouts) disabled = disabled || (t >= d.from && t < d.to);
+      for (const sim::Dropout& d : config.dropouts)
+        disabled = disabled || (t >= d.from && t < d.to);
       sim::CameraFrame frame{t, {}};
       for (std::size_t i = 0; i < snapshot.bodies.size(); ++i)
         if (snapshot.bodies[i].tracked)

@@ -190,8 +190,7 @@ std::vector<YamlReader*> YamlReader::sequence(std::string_view key) {
   std::vector<YamlReader*> items;
   const Entry* entry = find(key);
   if (entry == nullptr || entry->value.IsNull()) return items;
-  if (!entry->value.IsSequence())
-    fail(key, "expected a list, got " + describe(entry->value));
+  if (!entry->value.IsSequence()) fail(key, "expected a list, got " + describe(entry->value));
   std::size_t index = 0;
   for (const YAML::Node& item : entry->value) {
     const std::string path = key_path(key).append("[").append(std::to_string(index++)).append("]");

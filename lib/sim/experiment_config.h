@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -71,7 +72,7 @@ struct ExperimentConfig {
   std::string name;
   SensorKind sensor = SensorKind::kCamera;
   std::vector<Dropout> dropouts;  ///< motion capture only
-  double rate = 30.0;  ///< frames per second (paper: camera rate)
+  double rate = 30.0;             ///< frames per second (paper: camera rate)
   int frames = 0;
   CameraSettings camera;
   MeasurementSettings measurement;
@@ -84,6 +85,11 @@ struct ExperimentConfig {
   std::filesystem::path estimator_config;
   /// Set for closed-loop experiments (sugar dropping); open loop otherwise.
   std::optional<ClosedLoopSettings> closed_loop;
+
+  bool is_of_interest(const std::string& object) const {
+    return std::find(objects_of_interest.begin(), objects_of_interest.end(), object) !=
+           objects_of_interest.end();
+  }
 };
 
 /// Throws InputError naming the file, line and key for anything malformed: unknown keys, wrong
