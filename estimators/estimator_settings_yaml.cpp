@@ -140,6 +140,7 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   if (!camera.empty())
     options.occluder.camera_position = Eigen::Vector3d(camera[0], camera[1], camera[2]);
   occluder.get("keep_offset", options.occluder.keep_offset);
+  occluder.get("keep_depth", options.occluder.keep_depth);
 
   YamlReader& uncertainty = yaml.child("uncertainty");
   uncertainty.get("kappa", options.uncertainty.kappa);

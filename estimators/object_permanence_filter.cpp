@@ -217,8 +217,15 @@ ObjectPermanenceFilter::virtual_measurement(Hypothesis& h, double t, const Ensem
     const Eigen::Quaterniond carried =
         orientation_of(occluder_pose) * h.occluder_orientation_at_onset.conjugate();
     z.position = translation_of(occluder_pose);
-    if (options_.occluder.keep_offset)
-      z.position += carried * (h.position_at_onset - h.occluder_position_at_onset);
+    const Eigen::Vector3d onset_offset =
+        carried * (h.position_at_onset - h.occluder_position_at_onset);
+    if (options_.occluder.keep_offset) {
+      z.position += onset_offset;
+    } else if (options_.occluder.keep_depth) {
+      // Only the offset's component along the line of sight to the hidden object.
+      const Eigen::MatrixXd across = occlusion_plane_projection(z.position, options_.occluder);
+      z.position += onset_offset - across.transpose() * (across * onset_offset);
+    }
     z.orientation = (carried * h.orientation_at_onset).normalized();
     const mrpt::poses::CPose3D& carrier =
         occluder_estimate ? occluder_estimate->pose.mean : occluder_detection->pose;

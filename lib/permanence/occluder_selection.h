@@ -25,6 +25,12 @@ struct OccluderOptions {
   /// Follow the occluder at the hidden object's offset from it at occlusion onset (the ball sits
   /// beside the mug's centre) instead of at the occluder's own position (the paper).
   bool keep_offset = false;
+  /// Follow the occluder only across the line of sight and keep the hidden object's own offset
+  /// from it along the ray (from onset): an occluder says where the object is across the ray,
+  /// not how deep along it, which is what occlusion hides. The ball under a hand hovering over its
+  /// cup then stays on the table, not at the hand's height. Implied by keep_offset; no effect
+  /// with plane k3D, which has no line of sight.
+  bool keep_depth = false;
 };
 
 /// A candidate occluder: another object's position estimate.

@@ -21,10 +21,12 @@ TEST(CupsGame, TheOpfFollowsTheBallsCupThroughTheShuffle) {
   const ExperimentResults r = run_open_loop(config, observation, {"opf", "pf"}, settings, 1, 9);
   const RunErrors& opf = r.runs.at("opf")[0];
   const RunErrors& pf = r.runs.at("pf")[0];
-  // The PF keeps the ball where it vanished, ~0.18 m from it on average while hidden; the OPF
-  // follows cup B (at worst at the hand's height above it, see the README), clearly closer.
+  // The PF keeps the ball where it vanished, ~0.18 m from it on average while hidden. The OPF
+  // follows cup B (or the hand over it) across the line of sight at the ball's own depth: what
+  // remains is the x-y offset taken at onset, while the cup still slides over the ball (up to
+  // ~2 cm), and the lag of the carrier's filtered estimate through the swaps.
   EXPECT_GT(pf.translation_unobserved, 0.15);
-  EXPECT_LT(opf.translation_unobserved, 0.7 * pf.translation_unobserved);
+  EXPECT_LT(opf.translation_unobserved, 0.04);
   // Once the ball is seen again, both end on it.
   for (const FrameRecord& record : r.records) {
     if (record.frame != config.frames - 1 || record.estimate.object != "ball") continue;

@@ -66,6 +66,7 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.opf.occluder.plane, d.opf.occluder.plane);
   EXPECT_EQ(s.opf.occluder.camera_position.has_value(), d.opf.occluder.camera_position.has_value());
   EXPECT_EQ(s.opf.occluder.keep_offset, d.opf.occluder.keep_offset);
+  EXPECT_EQ(s.opf.occluder.keep_depth, d.opf.occluder.keep_depth);
   EXPECT_EQ(s.opf.uncertainty.kappa, d.opf.uncertainty.kappa);
   EXPECT_EQ(s.opf.uncertainty.reference_speed, d.opf.uncertainty.reference_speed);
   EXPECT_EQ(s.opf.uncertainty.reference_period, d.opf.uncertainty.reference_period);
