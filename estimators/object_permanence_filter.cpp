@@ -97,10 +97,11 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
                  t - hidden_since_ > options_.history_reset_gap))
       history_.clear();
     hidden_ = false;
-    const TranslationMoments tm = h.filter.translation_moments();
-    history_.push_back({t, tm.mean, h.filter.rotation_moments().mean});
+    // The history sample is the estimate itself: its moments are computed once per step.
+    const Estimate estimate = make_estimate(h, 0);
+    history_.push_back({t, translation_of(estimate.pose.mean), orientation_of(estimate.pose.mean)});
     while (history_.size() > options_.history_length) history_.pop_front();
-    return make_estimate(h, 0);
+    return estimate;
   }
 
   if (!hidden_) {

@@ -29,10 +29,6 @@ class ObjectPermanenceFilter final : public Estimator {
                 const EnsembleView& ensemble) override;
   std::vector<Estimate> extra_hypotheses() const override;
 
-  std::size_t hypothesis_count() const { return hypotheses_.size(); }
-  /// The occluder followed by hypothesis `index`, empty when it follows none.
-  const std::string& occluder_of(std::size_t index) const { return hypotheses_.at(index).occluder; }
-
  private:
   enum class Source { kMeasurement, kTrajectory, kOccluder, kNone };
 
