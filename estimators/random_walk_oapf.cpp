@@ -63,33 +63,13 @@ Eigen::VectorXd step_spreads(const OccludablePortion<Dim>& portion, double densi
   return sigma;
 }
 
-Eigen::Matrix3Xd standard_noise(Eigen::Index count, Random& random) {
-  Eigen::Matrix3Xd noise(3, count);
-  random.fill_normal({noise.data(), static_cast<std::size_t>(noise.size())});
-  return noise;
-}
-
-void random_walk(TranslationParticles& particles, const Eigen::VectorXd& sigma, Random& random) {
-  particles.states += standard_noise(particles.states.cols(), random) * sigma.asDiagonal();
-}
-
-void random_walk(RotationParticles& particles, const Eigen::VectorXd& sigma, Random& random) {
-  const Eigen::Matrix3Xd noise = standard_noise(particles.states.cols(), random);
-  for (Eigen::Index i = 0; i < particles.states.cols(); ++i) {
-    Eigen::Map<Eigen::Quaterniond> q(particles.states.col(i).data());
-    q = (q * so3::exp(sigma[i] * noise.col(i))).normalized();
-  }
-}
-
-/// The exponent of paper Eq. 5 per particle, computed by the standard PF's own reweighting on zero
-/// log-weights so that both filters score a visible particle identically.
+/// The exponent of paper Eq. 5 per particle, the standard PF's own, so both filters score a
+/// visible particle identically.
 template <int Dim, class Measurement>
-Eigen::VectorXd gaussian_exponents(ParticlePortion<Dim>& particles, const Measurement& measurement,
-                                   double variance) {
-  LogWeights saved = std::exchange(particles.weights, LogWeights(particles.size()));
-  reweight_gaussian(particles, measurement, variance);
-  Eigen::VectorXd exponents = std::move(particles.weights.log());
-  particles.weights = std::move(saved);
+Eigen::VectorXd visible_exponents(const ParticlePortion<Dim>& particles,
+                                  const Measurement& measurement, double variance) {
+  Eigen::VectorXd exponents;
+  gaussian_exponents(particles, measurement, variance, exponents);
   return exponents;
 }
 
@@ -170,7 +150,7 @@ void validate(const OcclusionAwarePfOptions& options) {
 
 OcclusionAwareParticleFilter::OcclusionAwareParticleFilter(const OcclusionAwarePfOptions& options,
                                                            std::uint64_t seed)
-    : options_(options), random_(seed) {
+    : options_(options), random_(seed), noise_(derive_seed(seed, 1)) {
   validate(options_);
   reset(translation_, options_.particles.translation_particles);
   reset(rotation_, options_.particles.rotation_particles);
@@ -181,8 +161,8 @@ Estimate OcclusionAwareParticleFilter::initialise(double t, const mrpt::poses::C
   reset(translation_, p.translation_particles);
   reset(rotation_, p.rotation_particles);
   scatter_around(translation_.particles, translation_of(first), p.observation_noise_translation,
-                 random_);
-  scatter_around(rotation_.particles, orientation_of(first), p.observation_noise_rotation, random_);
+                 noise_);
+  scatter_around(rotation_.particles, orientation_of(first), p.observation_noise_rotation, noise_);
   translation_occlusion_ = rotation_occlusion_ = 0.0;  // just detected: visible
   last_t_ = t;
   initialised_ = true;
@@ -203,12 +183,12 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
   const PoseParticleFilterOptions& p = options_.particles;
 
   // Motion uses the flags and times occluded of the previous step; the chain then moves the flags.
-  random_walk(translation_.particles,
-              step_spreads(translation_, p.process_noise_translation, dt, options_.spread_growth),
-              random_);
-  random_walk(rotation_.particles,
-              step_spreads(rotation_, p.process_noise_rotation, dt, options_.spread_growth),
-              random_);
+  predict_random_walk(
+      translation_.particles,
+      step_spreads(translation_, p.process_noise_translation, dt, options_.spread_growth), noise_);
+  predict_random_walk(
+      rotation_.particles,
+      step_spreads(rotation_, p.process_noise_rotation, dt, options_.spread_growth), noise_);
 
   const ChainStep chain = chain_step(options_, dt);
   Eigen::VectorXd translation_visible, rotation_visible;
@@ -217,22 +197,22 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
     const double sigma_t = p.observation_noise_translation;
     const double sigma_r = p.observation_noise_rotation;
     translation_visible =
-        gaussian_exponents(translation_.particles, translation_of(*measurement), sigma_t * sigma_t);
+        visible_exponents(translation_.particles, translation_of(*measurement), sigma_t * sigma_t);
     rotation_visible =
-        gaussian_exponents(rotation_.particles, orientation_of(*measurement), sigma_r * sigma_r);
+        visible_exponents(rotation_.particles, orientation_of(*measurement), sigma_r * sigma_r);
     // Sensor resetting, as in every particle estimator here (PoseParticleFilterOptions).
     const double gate = -0.5 * p.reset_gate * p.reset_gate;
     if (p.reset_gate > 0.0 && translation_visible.maxCoeff() < gate) {
       reset(translation_, translation_.particles.size());
-      scatter_around(translation_.particles, translation_of(*measurement), sigma_t, random_);
-      translation_visible = gaussian_exponents(translation_.particles, translation_of(*measurement),
+      scatter_around(translation_.particles, translation_of(*measurement), sigma_t, noise_);
+      translation_visible = visible_exponents(translation_.particles, translation_of(*measurement),
                                                sigma_t * sigma_t);
     }
     if (p.reset_gate > 0.0 && rotation_visible.maxCoeff() < gate) {
       reset(rotation_, rotation_.particles.size());
-      scatter_around(rotation_.particles, orientation_of(*measurement), sigma_r, random_);
+      scatter_around(rotation_.particles, orientation_of(*measurement), sigma_r, noise_);
       rotation_visible =
-          gaussian_exponents(rotation_.particles, orientation_of(*measurement), sigma_r * sigma_r);
+          visible_exponents(rotation_.particles, orientation_of(*measurement), sigma_r * sigma_r);
     }
     const double k = options_.occluded_likelihood_sigmas;
     occluded_log_likelihood = -0.5 * k * k;

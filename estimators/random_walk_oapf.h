@@ -66,7 +66,8 @@ class OcclusionAwareParticleFilter final : public Estimator {
   Estimate make_estimate(double t, EstimateMode mode) const;
 
   OcclusionAwarePfOptions options_;
-  Random random_;
+  Random random_;          ///< flag and resampling draws
+  GaussianSampler noise_;  ///< motion and initialisation noise, in bulk
   OccludablePortion<3> translation_;
   OccludablePortion<4> rotation_;
   double translation_occlusion_ = 0.0;

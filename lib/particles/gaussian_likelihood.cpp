@@ -1,28 +1,39 @@
 #include "particles/gaussian_likelihood.h"
 
-#include "core/so3.h"
-
 namespace opf {
 
 double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
                          double variance) {
-  const double scale = -0.5 / variance;
-  const Eigen::VectorXd exponents =
-      ((particles.states.colwise() - measurement).colwise().squaredNorm() * scale).transpose();
-  particles.weights.add(exponents);
-  return exponents.maxCoeff();
+  return kernels::translation_exponents(
+      particles.states.data(), particles.size(), {measurement.x(), measurement.y(), measurement.z()},
+      -0.5 / variance, particles.weights.log().data(), true);
 }
 
 double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
                          double variance) {
-  const double scale = -0.5 / variance;
-  Eigen::VectorXd log_likelihood(particles.states.cols());
-  for (Eigen::Index i = 0; i < particles.states.cols(); ++i) {
-    const Eigen::Quaterniond q(particles.states.col(i).data());
-    log_likelihood[i] = scale * so3::difference(q, measurement).squaredNorm();
-  }
-  particles.weights.add(log_likelihood);
-  return log_likelihood.maxCoeff();
+  const Eigen::Quaterniond z = measurement.normalized();
+  return kernels::rotation_exponents(particles.states.data(), particles.size(),
+                                     {z.x(), z.y(), z.z(), z.w()}, -0.5 / variance,
+                                     particles.weights.log().data(), true);
+}
+
+double gaussian_exponents(const TranslationParticles& particles,
+                          const Eigen::Vector3d& measurement, double variance,
+                          Eigen::VectorXd& exponents) {
+  exponents.resize(particles.states.cols());
+  return kernels::translation_exponents(particles.states.data(), particles.size(),
+                                        {measurement.x(), measurement.y(), measurement.z()},
+                                        -0.5 / variance, exponents.data(), false);
+}
+
+double gaussian_exponents(const RotationParticles& particles,
+                          const Eigen::Quaterniond& measurement, double variance,
+                          Eigen::VectorXd& exponents) {
+  const Eigen::Quaterniond z = measurement.normalized();
+  exponents.resize(particles.states.cols());
+  return kernels::rotation_exponents(particles.states.data(), particles.size(),
+                                     {z.x(), z.y(), z.z(), z.w()}, -0.5 / variance,
+                                     exponents.data(), false);
 }
 
 }  // namespace opf

@@ -18,4 +18,13 @@ double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d&
 double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
                          double variance);
 
+/// The exponents alone, -0.5 d_i^2 / variance per particle, into `exponents` (weights
+/// untouched); returns the largest.
+double gaussian_exponents(const TranslationParticles& particles,
+                          const Eigen::Vector3d& measurement, double variance,
+                          Eigen::VectorXd& exponents);
+double gaussian_exponents(const RotationParticles& particles,
+                          const Eigen::Quaterniond& measurement, double variance,
+                          Eigen::VectorXd& exponents);
+
 }  // namespace opf

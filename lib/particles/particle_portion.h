@@ -1,21 +1,25 @@
 #pragma once
-// One portion of particles, stored structure-of-arrays: a Dim x N state matrix (one particle per
-// column) and its log-weights. The pose filter keeps two: translation (Dim 3) and rotation
-// (Dim 4, unit quaternions stored x, y, z, w as Eigen's coeffs()).
+// One portion of particles, stored structure-of-arrays: a Dim x N row-major state matrix (row d
+// holds coordinate d of every particle contiguously, so a pass over one coordinate vectorises)
+// and its log-weights. The pose filter keeps two: translation (Dim 3) and rotation (Dim 4, unit
+// quaternions with rows x, y, z, w as Eigen's coeffs()).
 
 #include "particles/log_weights.h"
+#include "particles/particle_kernels.h"
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace opf {
 
 template <int Dim>
 struct ParticlePortion {
-  using States = Eigen::Matrix<double, Dim, Eigen::Dynamic>;
+  using States = Eigen::Matrix<double, Dim, Eigen::Dynamic, Eigen::RowMajor>;
 
   States states;
   LogWeights weights;
@@ -31,15 +35,18 @@ struct ParticlePortion {
   /// Replaces the particles by the ones at `indices` (which may repeat) and makes the weights
   /// uniform: the resampled set represents the posterior by its density alone.
   void resample(const std::vector<std::size_t>& indices) {
-    States next(Dim, Eigen::Index(indices.size()));
-    for (std::size_t k = 0; k < indices.size(); ++k) {
-      if (indices[k] >= size()) throw std::out_of_range("ParticlePortion::resample: bad index");
-      next.col(Eigen::Index(k)) = states.col(Eigen::Index(indices[k]));
-    }
-    states = std::move(next);
-    weights = LogWeights(indices.size());
+    if (!indices.empty() && *std::max_element(indices.begin(), indices.end()) >= size())
+      throw std::out_of_range("ParticlePortion::resample: bad index");
+    spare_.resize(Dim, Eigen::Index(indices.size()));
+    kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(),
+                         spare_.data());
+    std::swap(states, spare_);
+    if (weights.size() != indices.size()) weights = LogWeights(indices.size());
     weights.reset();
   }
+
+ private:
+  States spare_;  ///< the previous generation's storage, reused so resampling does not allocate
 };
 
 using TranslationParticles = ParticlePortion<3>;

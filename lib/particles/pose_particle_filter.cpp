@@ -20,17 +20,20 @@ void require_positive(double value, const char* name) {
 
 template <int Dim>
 bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted,
-                                  const ResamplingOptions& options, Random& random, double& ess,
-                                  bool& resampled) {
-  const bool usable = portion.weights.normalise();
-  ess = portion.weights.effective_sample_fraction();
+                                  const ResamplingOptions& options, Random& random,
+                                  Eigen::VectorXd& linear, double& ess, bool& resampled) {
   resampled = false;
+  if (portion.weights.uniform()) {
+    ess = 1.0;
+    return true;
+  }
+  const kernels::NormalisedWeights normalised = portion.weights.normalise(linear);
+  ess = normalised.usable ? normalised.ess_fraction : 1.0 / static_cast<double>(portion.size());
   if (reweighted && should_resample(options, ess)) {
-    portion.resample(
-        resample_indices(portion.weights.linear(), portion.size(), options.scheme, random));
+    portion.resample(resample_indices(linear, portion.size(), options.scheme, random));
     resampled = true;
   }
-  return usable;
+  return normalised.usable;
 }
 
 }  // namespace
@@ -50,16 +53,21 @@ void validate(const PoseParticleFilterOptions& options) {
 }
 
 PoseParticleFilter::PoseParticleFilter(const PoseParticleFilterOptions& options, std::uint64_t seed)
-    : options_(options), random_(seed) {
+    : options_(options), random_(seed), noise_(derive_seed(seed, 1)) {
   validate(options_);
   translation_.resize(options_.translation_particles);
   rotation_.resize(options_.rotation_particles);
 }
 
+void PoseParticleFilter::reseed(std::uint64_t seed) {
+  random_ = Random(seed);
+  noise_ = GaussianSampler(derive_seed(seed, 1));
+}
+
 void PoseParticleFilter::initialise(const Eigen::Vector3d& position,
                                     const Eigen::Quaterniond& orientation) {
-  scatter_around(translation_, position, options_.observation_noise_translation, random_);
-  scatter_around(rotation_, orientation, options_.observation_noise_rotation, random_);
+  scatter_around(translation_, position, options_.observation_noise_translation, noise_);
+  scatter_around(rotation_, orientation, options_.observation_noise_rotation, noise_);
   translation_reweighted_ = rotation_reweighted_ = false;
 }
 
@@ -70,22 +78,18 @@ void PoseParticleFilter::predict(double dt) {
 
 void PoseParticleFilter::predict_translation(double dt) {
   if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
-  predict_random_walk(translation_, options_.process_noise_translation * std::sqrt(dt), random_);
+  predict_random_walk(translation_, options_.process_noise_translation * std::sqrt(dt), noise_);
 }
 
 void PoseParticleFilter::predict_rotation(double dt) {
   if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
-  predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), random_);
+  predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), noise_);
 }
 
 void PoseParticleFilter::shift(const Eigen::Vector3d& translation,
                                const Eigen::Quaterniond& rotation) {
   translation_.states.colwise() += translation;
-  const Eigen::Quaterniond r = rotation.normalized();
-  for (Eigen::Index i = 0; i < rotation_.states.cols(); ++i) {
-    Eigen::Map<Eigen::Quaterniond> q(rotation_.states.col(i).data());
-    q = (r * q).normalized();
-  }
+  rotate_all(rotation_, rotation);
 }
 
 void PoseParticleFilter::reweight(const Eigen::Vector3d& position,
@@ -118,12 +122,12 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   const double threshold = -0.5 * options_.reset_gate * options_.reset_gate;
   bool reset = false;
   if (translation_best_exponent_ < threshold) {
-    scatter_around(translation_, position, options_.observation_noise_translation, random_);
+    scatter_around(translation_, position, options_.observation_noise_translation, noise_);
     translation_reweighted_ = false;
     reset = true;
   }
   if (rotation_best_exponent_ < threshold) {
-    scatter_around(rotation_, orientation, options_.observation_noise_rotation, random_);
+    scatter_around(rotation_, orientation, options_.observation_noise_rotation, noise_);
     rotation_reweighted_ = false;
     reset = true;
   }
@@ -132,12 +136,12 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
 
 ResampleReport PoseParticleFilter::normalise_and_resample() {
   ResampleReport report;
-  const bool translation_ok =
-      normalise_and_maybe_resample(translation_, translation_reweighted_, options_.resampling,
-                                   random_, report.ess_translation, report.resampled_translation);
-  const bool rotation_ok =
-      normalise_and_maybe_resample(rotation_, rotation_reweighted_, options_.resampling, random_,
-                                   report.ess_rotation, report.resampled_rotation);
+  const bool translation_ok = normalise_and_maybe_resample(
+      translation_, translation_reweighted_, options_.resampling, random_, linear_weights_,
+      report.ess_translation, report.resampled_translation);
+  const bool rotation_ok = normalise_and_maybe_resample(
+      rotation_, rotation_reweighted_, options_.resampling, random_, linear_weights_,
+      report.ess_rotation, report.resampled_rotation);
   report.weights_recovered = !translation_ok || !rotation_ok;
   translation_reweighted_ = translation_reweighted_ && !report.resampled_translation;
   rotation_reweighted_ = rotation_reweighted_ && !report.resampled_rotation;
@@ -152,10 +156,9 @@ mrpt::poses::CPose3DPDFGaussian PoseParticleFilter::estimate() const {
 
 double PoseParticleFilter::translation_log_evidence(const Eigen::Vector3d& position) const {
   const double sigma = options_.observation_noise_translation;
-  const Eigen::VectorXd log_terms =
-      translation_.weights.log() -
-      (translation_.states.colwise() - position).colwise().squaredNorm().transpose() *
-          (0.5 / (sigma * sigma));
+  Eigen::VectorXd log_terms;
+  gaussian_exponents(translation_, position, sigma * sigma, log_terms);
+  log_terms += translation_.weights.log();
   const double max_term = log_terms.maxCoeff();
   return max_term + std::log((log_terms.array() - max_term).exp().sum());
 }

@@ -3,6 +3,7 @@
 // normalise and resample, moments): a translation portion and a rotation portion, each with its
 // own particles and weights, one seeded generator. Estimators (standard PF, OPF) drive the steps.
 
+#include "particles/gaussian_sampler.h"
 #include "particles/particle_filter_options.h"
 #include "particles/particle_portion.h"
 #include "particles/particle_statistics.h"
@@ -73,8 +74,8 @@ class PoseParticleFilter {
   /// filter explains z, used to pick the surviving hypothesis when an object reappears.
   double translation_log_evidence(const Eigen::Vector3d& position) const;
 
-  /// Restarts the generator (a copied filter must not replay its original's random draws).
-  void reseed(std::uint64_t seed) { random_ = Random(seed); }
+  /// Restarts the generators (a copied filter must not replay its original's random draws).
+  void reseed(std::uint64_t seed);
 
   /// trace(covariance_scale * Q) for the 6-DoF observation covariance Q (paper Eq. 15).
   double observation_trace(double covariance_scale = 1.0) const;
@@ -84,11 +85,12 @@ class PoseParticleFilter {
   const TranslationParticles& translation() const { return translation_; }
   RotationParticles& rotation() { return rotation_; }
   const RotationParticles& rotation() const { return rotation_; }
-  Random& random() { return random_; }
 
  private:
   PoseParticleFilterOptions options_;
-  Random random_;
+  Random random_;          ///< resampling draws
+  GaussianSampler noise_;  ///< process and initialisation noise, in bulk
+  Eigen::VectorXd linear_weights_;  ///< scratch of normalise_and_resample
   TranslationParticles translation_;
   RotationParticles rotation_;
   bool translation_reweighted_ = false;

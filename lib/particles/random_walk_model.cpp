@@ -1,43 +1,62 @@
 #include "particles/random_walk_model.h"
 
-#include "core/so3.h"
-
-#include <vector>
+#include <stdexcept>
 
 namespace opf {
 namespace {
 
-Eigen::Matrix3Xd gaussian_noise(Eigen::Index count, double sigma, Random& random) {
-  Eigen::Matrix3Xd noise(3, count);
-  random.fill_normal({noise.data(), static_cast<std::size_t>(noise.size())});
-  return noise * sigma;
+void require_size(const Eigen::VectorXd& sigma, std::size_t count) {
+  if (static_cast<std::size_t>(sigma.size()) != count)
+    throw std::invalid_argument("predict_random_walk: one spread per particle needed");
 }
 
 }  // namespace
 
-void predict_random_walk(TranslationParticles& particles, double sigma, Random& random) {
-  particles.states += gaussian_noise(particles.states.cols(), sigma, random);
+void predict_random_walk(TranslationParticles& particles, double sigma, GaussianSampler& noise) {
+  const std::size_t count = static_cast<std::size_t>(particles.states.size());
+  kernels::add_scaled_noise(particles.states.data(), noise.draw(count).data(), sigma, count);
 }
 
-void predict_random_walk(RotationParticles& particles, double sigma, Random& random) {
-  const Eigen::Matrix3Xd noise = gaussian_noise(particles.states.cols(), sigma, random);
-  for (Eigen::Index i = 0; i < particles.states.cols(); ++i) {
-    Eigen::Map<Eigen::Quaterniond> q(particles.states.col(i).data());
-    q = (q * so3::exp(noise.col(i))).normalized();
-  }
+void predict_random_walk(RotationParticles& particles, double sigma, GaussianSampler& noise) {
+  const std::size_t n = particles.size();
+  kernels::perturb_quaternions(particles.states.data(), n, noise.draw(3 * n).data(), sigma,
+                               nullptr);
+}
+
+void predict_random_walk(TranslationParticles& particles, const Eigen::VectorXd& sigma,
+                         GaussianSampler& noise) {
+  const std::size_t n = particles.size();
+  require_size(sigma, n);
+  kernels::add_scaled_noise_per_particle(particles.states.data(), noise.draw(3 * n).data(),
+                                         sigma.data(), 3, n);
+}
+
+void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& sigma,
+                         GaussianSampler& noise) {
+  const std::size_t n = particles.size();
+  require_size(sigma, n);
+  kernels::perturb_quaternions(particles.states.data(), n, noise.draw(3 * n).data(), 0.0,
+                               sigma.data());
 }
 
 void scatter_around(TranslationParticles& particles, const Eigen::Vector3d& centre, double sigma,
-                    Random& random) {
-  particles.states = gaussian_noise(particles.states.cols(), sigma, random).colwise() + centre;
+                    GaussianSampler& noise) {
+  particles.states.colwise() = centre;
+  predict_random_walk(particles, sigma, noise);
   particles.weights.reset();
 }
 
 void scatter_around(RotationParticles& particles, const Eigen::Quaterniond& centre, double sigma,
-                    Random& random) {
+                    GaussianSampler& noise) {
   particles.states.colwise() = centre.normalized().coeffs();
-  predict_random_walk(particles, sigma, random);
+  predict_random_walk(particles, sigma, noise);
   particles.weights.reset();
+}
+
+void rotate_all(RotationParticles& particles, const Eigen::Quaterniond& r) {
+  const Eigen::Quaterniond unit = r.normalized();
+  kernels::rotate_quaternions(particles.states.data(), particles.size(),
+                              {unit.x(), unit.y(), unit.z(), unit.w()});
 }
 
 }  // namespace opf

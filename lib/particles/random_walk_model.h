@@ -3,21 +3,30 @@
 // translation (paper Eq. 3 with f the identity) and q' = q * exp(e) in the tangent space for
 // rotation, so rotation particles stay unit quaternions on SO(3).
 
+#include "particles/gaussian_sampler.h"
 #include "particles/particle_portion.h"
-#include "particles/random.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 namespace opf {
 
-void predict_random_walk(TranslationParticles& particles, double sigma, Random& random);
-void predict_random_walk(RotationParticles& particles, double sigma, Random& random);
+void predict_random_walk(TranslationParticles& particles, double sigma, GaussianSampler& noise);
+void predict_random_walk(RotationParticles& particles, double sigma, GaussianSampler& noise);
+
+/// The same with a spread per particle (sigma[i] for particle i).
+void predict_random_walk(TranslationParticles& particles, const Eigen::VectorXd& sigma,
+                         GaussianSampler& noise);
+void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& sigma,
+                         GaussianSampler& noise);
 
 /// Places every particle at `centre` perturbed by the same kind of noise (initialisation).
 void scatter_around(TranslationParticles& particles, const Eigen::Vector3d& centre, double sigma,
-                    Random& random);
+                    GaussianSampler& noise);
 void scatter_around(RotationParticles& particles, const Eigen::Quaterniond& centre, double sigma,
-                    Random& random);
+                    GaussianSampler& noise);
+
+/// Turns every rotation particle by the world-frame rotation r: q <- r * q.
+void rotate_all(RotationParticles& particles, const Eigen::Quaterniond& r);
 
 }  // namespace opf

@@ -1,5 +1,7 @@
 #include "particles/resampling.h"
 
+#include "particles/particle_kernels.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -58,9 +60,10 @@ std::vector<std::size_t> resample_indices(const Eigen::VectorXd& weights, std::s
         return (static_cast<double>(k) + random.uniform()) / n;
       });
     case mrpt::bayes::CParticleFilter::prSystematic: {
-      const double offset = random.uniform();
-      return walk_cdf(weights, count,
-                      [&](std::size_t k) { return (static_cast<double>(k) + offset) / n; });
+      std::vector<std::size_t> indices(count);
+      kernels::systematic_indices(weights.data(), static_cast<std::size_t>(weights.size()),
+                                  random.uniform(), count, indices.data());
+      return indices;
     }
     case mrpt::bayes::CParticleFilter::prResidual: {
       std::vector<std::size_t> indices;
