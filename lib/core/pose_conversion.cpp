@@ -6,7 +6,6 @@
 #include <mrpt/math/CQuaternion.h>
 
 #include <cmath>
-#include <numbers>
 
 namespace opf {
 
@@ -26,40 +25,33 @@ mrpt::poses::CPose3D make_pose(const Eigen::Vector3d& translation,
                               mrpt::math::CVectorFixedDouble<3>(translation));
 }
 
-namespace {
-
-Eigen::Vector3d yaw_pitch_roll(const Eigen::Quaterniond& q) {
-  double yaw = 0, pitch = 0, roll = 0;
-  make_pose(Eigen::Vector3d::Zero(), q).getYawPitchRoll(yaw, pitch, roll);
-  return {yaw, pitch, roll};
+Eigen::Matrix3d yaw_pitch_roll_jacobian(const mrpt::poses::CPose3D& pose) {
+  // MRPT's R = Rz(yaw) Ry(pitch) Rx(roll); a body-frame step delta is a body angular velocity,
+  // and the Euler rates of a body angular velocity w are (Euler-angle kinematics, ZYX):
+  //   yaw'   = (sin(roll) w_y + cos(roll) w_z) / cos(pitch)
+  //   pitch' =  cos(roll) w_y - sin(roll) w_z
+  //   roll'  =  w_x + tan(pitch) (sin(roll) w_y + cos(roll) w_z)
+  // singular at pitch = +-pi/2 (gimbal lock), as any Euler-angle covariance is.
+  const double pitch = pose.pitch(), roll = pose.roll();
+  const double sr = std::sin(roll), cr = std::cos(roll);
+  const double cp = std::cos(pitch), tp = std::tan(pitch);
+  Eigen::Matrix3d jacobian;
+  jacobian << 0.0, sr / cp, cr / cp,  //
+      0.0, cr, -sr,                   //
+      1.0, sr * tp, cr * tp;
+  return jacobian;
 }
-
-double wrap_angle(double a) {
-  return std::remainder(a, 2.0 * std::numbers::pi);
-}
-
-}  // namespace
 
 mrpt::poses::CPose3DPDFGaussian make_pose_pdf(const Eigen::Vector3d& translation,
                                               const Eigen::Matrix3d& translation_covariance,
                                               const Eigen::Quaterniond& orientation,
                                               const Eigen::Matrix3d& tangent_covariance) {
-  // Central differences of ypr(q * exp(delta)); the step is small against any covariance we carry
-  // and large against rounding. Angle wrap keeps the differences finite across +-pi.
-  constexpr double kStep = 1e-6;
-  Eigen::Matrix3d jacobian;
-  for (int i = 0; i < 3; ++i) {
-    Eigen::Vector3d delta = Eigen::Vector3d::Zero();
-    delta[i] = kStep;
-    const Eigen::Vector3d plus = yaw_pitch_roll(orientation * so3::exp(delta));
-    const Eigen::Vector3d minus = yaw_pitch_roll(orientation * so3::exp(-delta));
-    for (int r = 0; r < 3; ++r) jacobian(r, i) = wrap_angle(plus[r] - minus[r]) / (2.0 * kStep);
-  }
+  mrpt::poses::CPose3D pose = make_pose(translation, orientation);
+  const Eigen::Matrix3d jacobian = yaw_pitch_roll_jacobian(pose);
   Eigen::Matrix<double, 6, 6> covariance = Eigen::Matrix<double, 6, 6>::Zero();
   covariance.topLeftCorner<3, 3>() = translation_covariance;
   covariance.bottomRightCorner<3, 3>() = jacobian * tangent_covariance * jacobian.transpose();
-  return mrpt::poses::CPose3DPDFGaussian(make_pose(translation, orientation),
-                                         mrpt::math::CMatrixDouble66(covariance));
+  return mrpt::poses::CPose3DPDFGaussian(pose, mrpt::math::CMatrixDouble66(covariance));
 }
 
 }  // namespace opf

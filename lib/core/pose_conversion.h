@@ -15,6 +15,10 @@ Eigen::Quaterniond orientation_of(const mrpt::poses::CPose3D& pose);
 mrpt::poses::CPose3D make_pose(const Eigen::Vector3d& translation,
                                const Eigen::Quaterniond& orientation);
 
+/// d(yaw, pitch, roll) / d(delta) for the body-frame step pose * exp(delta): the Euler-angle
+/// kinematics of MRPT's Z-Y-X convention (singular at pitch = +-pi/2).
+Eigen::Matrix3d yaw_pitch_roll_jacobian(const mrpt::poses::CPose3D& pose);
+
 /// A Gaussian pose in MRPT's (x, y, z, yaw, pitch, roll) parametrisation from a translation
 /// covariance and an orientation covariance in the body-frame tangent space at `orientation`.
 /// The tangent block is mapped to yaw-pitch-roll with the Jacobian at the mean (first order), and

@@ -22,7 +22,7 @@ OPF_ALWAYS_INLINE std::uint64_t rotl(std::uint64_t x, int k) {
 
 using State = std::array<std::array<std::uint64_t, GaussianSampler::kLanes>, 4>;
 
-// One round: eight 64-bit draws, one per lane, turned into 16 samples. The top 24 bits make the
+// One round: sixteen 64-bit draws, one per lane, turned into 32 samples. The top 24 bits make the
 // radius' uniform in (0, 1]; the next 24 the angle: two bits pick the quadrant, 22 the angle in
 // it, so sin and cos need polynomials on [0, pi/2] only.
 OPF_ALWAYS_INLINE void normal_block(State& s, float* out) {

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace opf::kernels {
 namespace {
@@ -22,8 +24,14 @@ OPF_ALWAYS_INLINE Quat multiply(const Quat& a, const Quat& b) {
           a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
 }
 
+// q / |q| for a q near unit length (a product of unit quaternions): 1/sqrt(|q|^2) from single
+// precision, refined by two Newton steps to double precision, instead of a double sqrt and
+// division, the slowest instructions of the rotation kernels.
 OPF_ALWAYS_INLINE Quat normalised(const Quat& q) {
-  const double inverse = 1.0 / std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+  const double squared = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
+  double inverse = 1.0f / std::sqrt(static_cast<float>(squared));
+  inverse *= 1.5 - 0.5 * squared * inverse * inverse;
+  inverse *= 1.5 - 0.5 * squared * inverse * inverse;
   return {q.x * inverse, q.y * inverse, q.z * inverse, q.w * inverse};
 }
 
@@ -38,20 +46,23 @@ OPF_ALWAYS_INLINE void store(double* q, std::size_t n, std::size_t i, const Quat
   q[3 * n + i] = v.w;
 }
 
-// exp of the tangent vector v: (sin(|v|/2) v/|v|, cos(|v|/2)), with the limit 1/2 of
-// sin(|v|/2)/|v| at 0.
-OPF_ALWAYS_INLINE Quat exp_tangent(double vx, double vy, double vz) {
-  const double angle = std::sqrt(vx * vx + vy * vy + vz * vz);
-  double s, c;
-  vmath::sincos(0.5 * angle, s, c);
-  const double factor = angle > 1e-300 ? s / angle : 0.5;
+// exp of the tangent step v (small: a random-walk step) in single precision: (sin(|v|/2) v/|v|,
+// cos(|v|/2)), with the limit 1/2 of sin(|v|/2)/|v| at 0. The product with the particle and
+// its normalisation stay in double.
+OPF_ALWAYS_INLINE Quat exp_tangent(float vx, float vy, float vz) {
+  const float angle = std::sqrt(vx * vx + vy * vy + vz * vz);
+  float s, c;
+  vmath::sincos(0.5f * angle, s, c);
+  const float factor = angle > 1e-30f ? s / angle : 0.5f;
   return {factor * vx, factor * vy, factor * vz, c};
 }
 
-// The geodesic angle of the rotation r (any sign): 2 atan2(|v|, |w|), in [0, pi].
-OPF_ALWAYS_INLINE double rotation_angle(const Quat& r) {
-  return 2.0 * vmath::atan2_nonnegative(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z),
-                                        std::fabs(r.w));
+// The geodesic angle of the rotation r (any sign): 2 atan2(|v|, |w|), in [0, pi]. The product
+// giving r is in double (so a small |v| keeps its relative precision); the angle in float.
+OPF_ALWAYS_INLINE float rotation_angle(const Quat& r) {
+  const auto v = static_cast<float>(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
+  const auto w = static_cast<float>(std::fabs(r.w));
+  return 2.0f * v * vmath::atan2_nonnegative_over_y(v, w);
 }
 
 template <bool kPerParticle>
@@ -59,7 +70,7 @@ OPF_ALWAYS_INLINE void perturb(double* __restrict q, std::size_t n, const float*
                                double sigma, const double* __restrict sigmas) {
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i) {
-    const double s = kPerParticle ? sigmas[i] : sigma;
+    const auto s = static_cast<float>(kPerParticle ? sigmas[i] : sigma);
     const Quat step = exp_tangent(s * noise[i], s * noise[n + i], s * noise[2 * n + i]);
     store(q, n, i, normalised(multiply(load(q, n, i), step)));
   }
@@ -68,12 +79,13 @@ OPF_ALWAYS_INLINE void perturb(double* __restrict q, std::size_t n, const float*
 template <bool kWeighted>
 OPF_ALWAYS_INLINE TranslationSums sums(const double* __restrict x, std::size_t n,
                                        const double* __restrict w,
-                                       const std::array<double, 3>& ref) {
+                                       const std::array<double, 3> reference) {
+  const double rx = reference[0], ry = reference[1], rz = reference[2];
   double sw = 0, sx = 0, sy = 0, sz = 0, xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
 #pragma omp simd reduction(+ : sw, sx, sy, sz, xx, xy, xz, yy, yz, zz)
   for (std::size_t i = 0; i < n; ++i) {
     const double wi = kWeighted ? w[i] : 1.0;
-    const double dx = x[i] - ref[0], dy = x[n + i] - ref[1], dz = x[2 * n + i] - ref[2];
+    const double dx = x[i] - rx, dy = x[n + i] - ry, dz = x[2 * n + i] - rz;
     sw += wi;
     sx += wi * dx;
     sy += wi * dy;
@@ -113,18 +125,21 @@ OPF_ALWAYS_INLINE std::array<double, 10> markley(const double* __restrict q, std
 
 template <bool kWeighted>
 OPF_ALWAYS_INLINE std::array<double, 6> tangent(const double* __restrict q, std::size_t n,
-                                                const double* __restrict w, const Quat& inverse) {
+                                                const double* __restrict w, const Quat inverse) {
+  // The invariants are copied to plain locals: GCC 12 does not vectorise this loop for AVX-512
+  // when they are read through a reference.
+  const double ix = inverse.x, iy = inverse.y, iz = inverse.z, iw = inverse.w;
   double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
 #pragma omp simd reduction(+ : xx, xy, xz, yy, yz, zz)
   for (std::size_t i = 0; i < n; ++i) {
     const double wi = kWeighted ? w[i] : 1.0;
-    Quat r = multiply(inverse, load(q, n, i));
+    const Quat r = multiply({ix, iy, iz, iw}, load(q, n, i));
     // log on the hemisphere w >= 0: d = 2 atan2(|v|, w) v / |v|, -> 2 v / w as |v| -> 0.
     const double sign = r.w < 0.0 ? -1.0 : 1.0;
     const double vx = sign * r.x, vy = sign * r.y, vz = sign * r.z, rw = sign * r.w;
-    const double norm = std::sqrt(vx * vx + vy * vy + vz * vz);
-    const double angle = 2.0 * vmath::atan2_nonnegative(norm, rw);
-    const double factor = norm > 1e-300 ? angle / norm : 2.0;
+    // The angle over sin(angle / 2) in single precision: the covariance needs no more.
+    const auto norm = static_cast<float>(std::sqrt(vx * vx + vy * vy + vz * vz));
+    const double factor = 2.0f * vmath::atan2_nonnegative_over_y(norm, static_cast<float>(rw));
     const double dx = factor * vx, dy = factor * vy, dz = factor * vz;
     xx += wi * dx * dx;
     xy += wi * dx * dy;
@@ -134,6 +149,71 @@ OPF_ALWAYS_INLINE std::array<double, 6> tangent(const double* __restrict q, std:
     zz += wi * dz * dz;
   }
   return {xx, xy, xz, yy, yz, zz};
+}
+
+// Maximum reductions run in eight explicit lanes: GCC 12 leaves `omp simd reduction(max)` over
+// doubles scalar (it must keep std::max's NaN semantics), while `a > b ? a : b` per lane is one
+// vmaxpd. NaN terms never win a lane.
+constexpr std::size_t kLanes = 8;
+
+OPF_ALWAYS_INLINE double lanes_max(const double (&lanes)[kLanes]) {
+  double top = lanes[0];
+  for (std::size_t l = 1; l < kLanes; ++l) top = lanes[l] > top ? lanes[l] : top;
+  return top;
+}
+
+// out[i] = keep * out[i] + e(i) for every particle, returning the largest e(i).
+template <class Exponent>
+OPF_ALWAYS_INLINE double write_exponents(std::size_t n, double* __restrict out, double keep,
+                                         const Exponent& exponent) {
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  double best[kLanes] = {kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
+  std::size_t i = 0;
+  for (; i + kLanes <= n; i += kLanes) {
+#pragma omp simd
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      const double e = exponent(i + l);
+      out[i + l] = keep * out[i + l] + e;
+      best[l] = e > best[l] ? e : best[l];
+    }
+  }
+  for (; i < n; ++i) {
+    const double e = exponent(i);
+    out[i] = keep * out[i] + e;
+    best[0] = e > best[0] ? e : best[0];
+  }
+  return lanes_max(best);
+}
+
+// The largest value, and whether any is NaN.
+OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bool& has_nan) {
+  constexpr double kNone = -std::numeric_limits<double>::infinity();
+  double top[kLanes] = {kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
+  int nan[kLanes] = {};
+  std::size_t i = 0;
+  for (; i + kLanes <= n; i += kLanes) {
+#pragma omp simd
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      const double v = a[i + l];
+      top[l] = v > top[l] ? v : top[l];
+      nan[l] |= v != v ? 1 : 0;
+    }
+  }
+  for (; i < n; ++i) {
+    top[0] = a[i] > top[0] ? a[i] : top[0];
+    nan[0] |= a[i] != a[i] ? 1 : 0;
+  }
+  int any = 0;
+  for (std::size_t l = 0; l < kLanes; ++l) any |= nan[l];
+  has_nan = any != 0;
+  return lanes_max(top);
+}
+
+// marks[ends[i]] = i + 1 in order, so the last particle ending at a slot wins. Kept scalar: an
+// AVX-512 scatter (what the vectoriser would emit) is microcoded and slower on AMD.
+[[gnu::optimize("no-tree-vectorize")]] void mark_ends(const std::int32_t* ends, std::size_t m,
+                                                      std::int32_t* marks) {
+  for (std::size_t i = 0; i < m; ++i) marks[ends[i]] = static_cast<std::int32_t>(i + 1);
 }
 
 }  // namespace
@@ -164,53 +244,37 @@ OPF_KERNEL void perturb_quaternions(double* q, std::size_t n, const float* noise
 
 OPF_KERNEL void rotate_quaternions(double* __restrict q, std::size_t n,
                                    const std::array<double, 4>& r) {
-  const Quat turn{r[0], r[1], r[2], r[3]};
+  const double rx = r[0], ry = r[1], rz = r[2], rw = r[3];
 #pragma omp simd
-  for (std::size_t i = 0; i < n; ++i) store(q, n, i, normalised(multiply(turn, load(q, n, i))));
+  for (std::size_t i = 0; i < n; ++i)
+    store(q, n, i, normalised(multiply({rx, ry, rz, rw}, load(q, n, i))));
 }
 
 OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t n,
                                         const std::array<double, 3>& z, double scale,
                                         double* __restrict out, bool accumulate) {
-  double best = -std::numeric_limits<double>::infinity();
   const double zx = z[0], zy = z[1], zz = z[2];
-  const double keep = accumulate ? 1.0 : 0.0;
-#pragma omp simd reduction(max : best)
-  for (std::size_t i = 0; i < n; ++i) {
+  return write_exponents(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
     const double dx = x[i] - zx, dy = x[n + i] - zy, dz = x[2 * n + i] - zz;
-    const double e = scale * (dx * dx + dy * dy + dz * dz);
-    out[i] = keep * out[i] + e;
-    best = std::max(best, e);
-  }
-  return best;
+    return scale * (dx * dx + dy * dy + dz * dz);
+  });
 }
 
 OPF_KERNEL double rotation_exponents(const double* __restrict q, std::size_t n,
                                      const std::array<double, 4>& z, double scale,
                                      double* __restrict out, bool accumulate) {
-  double best = -std::numeric_limits<double>::infinity();
-  const Quat inverse{-z[0], -z[1], -z[2], z[3]};  // z is a unit quaternion
-  const double keep = accumulate ? 1.0 : 0.0;
-#pragma omp simd reduction(max : best)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double angle = rotation_angle(multiply(inverse, load(q, n, i)));
-    const double e = scale * angle * angle;
-    out[i] = keep * out[i] + e;
-    best = std::max(best, e);
-  }
-  return best;
+  const double ix = -z[0], iy = -z[1], iz = -z[2], iw = z[3];  // z^-1, z a unit quaternion
+  return write_exponents(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
+    const double angle = rotation_angle(multiply({ix, iy, iz, iw}, load(q, n, i)));
+    return scale * (angle * angle);
+  });
 }
 
 OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
                                                    double* __restrict linear, std::size_t n) {
   if (n == 0) return {};
-  double top = -std::numeric_limits<double>::infinity();
-  int nan = 0;
-#pragma omp simd reduction(max : top) reduction(| : nan)
-  for (std::size_t i = 0; i < n; ++i) {
-    top = std::max(top, log_w[i]);
-    nan |= std::isnan(log_w[i]) ? 1 : 0;
-  }
+  bool nan = false;
+  const double top = max_value(log_w, n, nan);
   if (nan || !std::isfinite(top)) return {false, 0.0};
   double sum = 0.0, sum_squares = 0.0;
 #pragma omp simd reduction(+ : sum, sum_squares)
@@ -233,9 +297,8 @@ OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
 
 OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __restrict linear,
                                    std::size_t n) {
-  double top = -std::numeric_limits<double>::infinity();
-#pragma omp simd reduction(max : top)
-  for (std::size_t i = 0; i < n; ++i) top = std::max(top, log_w[i]);
+  bool nan = false;
+  const double top = max_value(log_w, n, nan);
   double sum = 0.0;
 #pragma omp simd reduction(+ : sum)
   for (std::size_t i = 0; i < n; ++i) {
@@ -245,25 +308,51 @@ OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __res
   return sum;
 }
 
-void systematic_indices(const double* w, std::size_t n, double offset, std::size_t count,
-                        std::size_t* indices) {
-  // ends[k]: how many particles' intervals end at or before slot k; the particle of slot k is
-  // that count. Particle i's slots end where (k + offset) / count reaches its cumulative weight
-  // C_i: at ceil(count C_i - offset), clamped to [0, count]. The last particle takes any
-  // remainder left by rounding.
-  std::fill(indices, indices + count, std::size_t{0});
-  const double slots = static_cast<double>(count);
-  double cumulative = 0.0;
-  for (std::size_t i = 0; i + 1 < n; ++i) {
-    cumulative += w[i];
-    const double end = std::ceil(slots * cumulative - offset);
-    const std::size_t e = end <= 0.0 ? 0 : std::min(count, static_cast<std::size_t>(end));
-    if (e < count) ++indices[e];
+OPF_KERNEL void systematic_indices(const double* __restrict w, std::size_t n, double offset,
+                                  std::size_t count, std::size_t* __restrict indices) {
+  // Slot k takes the particle whose interval [C_{i-1}, C_i) of cumulative weight holds
+  // (k + offset) / count. Particle i's slots end at e_i = ceil(count C_i - offset) (clamped to
+  // [0, count]), and e is nondecreasing, so the particle of slot k is #{i : e_i <= k}: mark each
+  // e_i with i + 1 (a later particle overwrites an earlier one) and take the running maximum.
+  // No branch depends on the weights. The last particle takes any remainder left by rounding.
+  if (n < 2 || count == 0) {
+    std::fill(indices, indices + count, std::size_t{0});
+    return;
   }
-  std::size_t particle = 0;
+  // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
+  // so the additions do not wait on each other.
+  const std::size_t m = n - 1;  // the last particle's end is `count` by definition
+  const std::size_t length = (m + kLanes - 1) / kLanes;
+  std::vector<double> cumulative(kLanes * length, 0.0);
+  std::copy(w, w + m, cumulative.begin());
+  double* __restrict c = cumulative.data();
+  double start[kLanes] = {};
+  for (std::size_t s = 0; s + 1 < kLanes; ++s) {
+    double total = 0.0;
+#pragma omp simd reduction(+ : total)
+    for (std::size_t j = 0; j < length; ++j) total += c[s * length + j];
+    start[s + 1] = start[s] + total;
+  }
+  for (std::size_t j = 0; j < length; ++j) {
+    for (std::size_t s = 0; s < kLanes; ++s) {
+      start[s] += c[s * length + j];
+      c[s * length + j] = start[s];
+    }
+  }
+  const double slots = static_cast<double>(count);
+  std::vector<std::int32_t> ends(m);
+  std::int32_t* __restrict e = ends.data();
+#pragma omp simd
+  for (std::size_t i = 0; i < m; ++i) {
+    const double end = std::ceil(slots * c[i] - offset);
+    e[i] = static_cast<std::int32_t>(end < 0.0 ? 0.0 : (end > slots ? slots : end));
+  }
+  std::vector<std::int32_t> marks(count + 1, 0);  // slot `count` absorbs the ends past the last
+  mark_ends(e, m, marks.data());
+  std::int32_t particle = 0;
   for (std::size_t k = 0; k < count; ++k) {
-    particle += indices[k];
-    indices[k] = particle;
+    particle = marks[k] > particle ? marks[k] : particle;
+    indices[k] = static_cast<std::size_t>(particle);
   }
 }
 

@@ -56,3 +56,37 @@ TEST(PoseConversion, PosePdfCovarianceMatchesSampledYawPitchRoll) {
 
 }  // namespace
 }  // namespace opf
+
+namespace opf {
+namespace {
+
+// The analytic Euler-rate Jacobian against central differences of MRPT's own getYawPitchRoll,
+// at orientations spread over the sphere (pitch kept 0.1 rad from gimbal lock).
+TEST(PoseConversion, YawPitchRollJacobianMatchesFiniteDifferences) {
+  Random random(11);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::Vector3d v(random.uniform() * 6 - 3, random.uniform() * 6 - 3,
+                            random.uniform() * 6 - 3);
+    const Eigen::Quaterniond q = so3::exp(v);
+    const mrpt::poses::CPose3D pose = make_pose(Eigen::Vector3d::Zero(), q);
+    if (std::abs(pose.pitch()) > 1.47) continue;
+    const Eigen::Matrix3d analytic = yaw_pitch_roll_jacobian(pose);
+    constexpr double kStep = 1e-6;
+    for (int i = 0; i < 3; ++i) {
+      Eigen::Vector3d delta = Eigen::Vector3d::Zero();
+      delta[i] = kStep;
+      double y1, p1, r1, y0, p0, r0;
+      make_pose(Eigen::Vector3d::Zero(), q * so3::exp(delta)).getYawPitchRoll(y1, p1, r1);
+      make_pose(Eigen::Vector3d::Zero(), q * so3::exp(-delta)).getYawPitchRoll(y0, p0, r0);
+      const Eigen::Vector3d numeric(std::remainder(y1 - y0, 2 * M_PI),
+                                    std::remainder(p1 - p0, 2 * M_PI),
+                                    std::remainder(r1 - r0, 2 * M_PI));
+      // Central differences are accurate to ~1e-9 here (rounding 1e-16 / 1e-6 step).
+      EXPECT_LT((analytic.col(i) - numeric / (2 * kStep)).cwiseAbs().maxCoeff(), 1e-7)
+          << "trial " << trial << " column " << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace opf
