@@ -12,11 +12,16 @@
 namespace opf::kernels {
 namespace {
 
-// Hamilton product a * b of quaternions stored (x, y, z, w).
+// Rotation particles are unit quaternions in single precision (x, y, z, w rows): 1e-7 rad of
+// resolution against an observation noise of 0.05 rad, at twice the lanes of double.
 struct Quat {
-  double x, y, z, w;
+  float x, y, z, w;
+  // Keeps the struct off 16 bytes: GCC 12 copies a 16-byte struct of floats as one 128-bit
+  // block, which stops the vectoriser ("no vectype") in every loop that builds one.
+  float unused = 0.0f;
 };
 
+// Hamilton product a * b.
 OPF_ALWAYS_INLINE Quat multiply(const Quat& a, const Quat& b) {
   return {a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
           a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
@@ -24,31 +29,24 @@ OPF_ALWAYS_INLINE Quat multiply(const Quat& a, const Quat& b) {
           a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
 }
 
-// q / |q| for a q near unit length (a product of unit quaternions): 1/sqrt(|q|^2) from single
-// precision, refined by two Newton steps to double precision, instead of a double sqrt and
-// division, the slowest instructions of the rotation kernels.
 OPF_ALWAYS_INLINE Quat normalised(const Quat& q) {
-  const double squared = q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w;
-  double inverse = 1.0f / std::sqrt(static_cast<float>(squared));
-  inverse *= 1.5 - 0.5 * squared * inverse * inverse;
-  inverse *= 1.5 - 0.5 * squared * inverse * inverse;
+  const float inverse = 1.0f / std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
   return {q.x * inverse, q.y * inverse, q.z * inverse, q.w * inverse};
 }
 
-OPF_ALWAYS_INLINE Quat load(const double* q, std::size_t n, std::size_t i) {
+OPF_ALWAYS_INLINE Quat load(const float* q, std::size_t n, std::size_t i) {
   return {q[i], q[n + i], q[2 * n + i], q[3 * n + i]};
 }
 
-OPF_ALWAYS_INLINE void store(double* q, std::size_t n, std::size_t i, const Quat& v) {
+OPF_ALWAYS_INLINE void store(float* q, std::size_t n, std::size_t i, const Quat& v) {
   q[i] = v.x;
   q[n + i] = v.y;
   q[2 * n + i] = v.z;
   q[3 * n + i] = v.w;
 }
 
-// exp of the tangent step v (small: a random-walk step) in single precision: (sin(|v|/2) v/|v|,
-// cos(|v|/2)), with the limit 1/2 of sin(|v|/2)/|v| at 0. The product with the particle and
-// its normalisation stay in double.
+// exp of the tangent step v: (sin(|v|/2) v/|v|, cos(|v|/2)), with the limit 1/2 of
+// sin(|v|/2)/|v| at 0.
 OPF_ALWAYS_INLINE Quat exp_tangent(float vx, float vy, float vz) {
   const float angle = std::sqrt(vx * vx + vy * vy + vz * vz);
   float s, c;
@@ -57,20 +55,18 @@ OPF_ALWAYS_INLINE Quat exp_tangent(float vx, float vy, float vz) {
   return {factor * vx, factor * vy, factor * vz, c};
 }
 
-// The geodesic angle of the rotation r (any sign): 2 atan2(|v|, |w|), in [0, pi]. The product
-// giving r is in double (so a small |v| keeps its relative precision); the angle in float.
+// The geodesic angle of the rotation r (any sign): 2 atan2(|v|, |w|), in [0, pi].
 OPF_ALWAYS_INLINE float rotation_angle(const Quat& r) {
-  const auto v = static_cast<float>(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
-  const auto w = static_cast<float>(std::fabs(r.w));
-  return 2.0f * v * vmath::atan2_nonnegative_over_y(v, w);
+  const float v = std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z);
+  return 2.0f * v * vmath::atan2_nonnegative_over_y(v, std::fabs(r.w));
 }
 
 template <bool kPerParticle>
-OPF_ALWAYS_INLINE void perturb(double* __restrict q, std::size_t n, const float* __restrict noise,
-                               double sigma, const double* __restrict sigmas) {
+OPF_ALWAYS_INLINE void perturb(float* __restrict q, std::size_t n, const float* __restrict noise,
+                               float sigma, const double* __restrict sigmas) {
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i) {
-    const auto s = static_cast<float>(kPerParticle ? sigmas[i] : sigma);
+    const float s = kPerParticle ? static_cast<float>(sigmas[i]) : sigma;
     const Quat step = exp_tangent(s * noise[i], s * noise[n + i], s * noise[2 * n + i]);
     store(q, n, i, normalised(multiply(load(q, n, i), step)));
   }
@@ -101,46 +97,48 @@ OPF_ALWAYS_INLINE TranslationSums sums(const double* __restrict x, std::size_t n
 }
 
 template <bool kWeighted>
-OPF_ALWAYS_INLINE std::array<double, 10> markley(const double* __restrict q, std::size_t n,
+OPF_ALWAYS_INLINE std::array<double, 10> markley(const float* __restrict q, std::size_t n,
                                                  const double* __restrict w) {
   double xx = 0, xy = 0, xz = 0, xw = 0, yy = 0, yz = 0, yw = 0, zz = 0, zw = 0, ww = 0;
 #pragma omp simd reduction(+ : xx, xy, xz, xw, yy, yz, yw, zz, zw, ww)
   for (std::size_t i = 0; i < n; ++i) {
     const double wi = kWeighted ? w[i] : 1.0;
-    const Quat v = load(q, n, i);
-    const double wx = wi * v.x, wy = wi * v.y, wz = wi * v.z;
-    xx += wx * v.x;
-    xy += wx * v.y;
-    xz += wx * v.z;
-    xw += wx * v.w;
-    yy += wy * v.y;
-    yz += wy * v.z;
-    yw += wy * v.w;
-    zz += wz * v.z;
-    zw += wz * v.w;
-    ww += wi * v.w * v.w;
+    const double vx = q[i], vy = q[n + i], vz = q[2 * n + i], vw = q[3 * n + i];
+    const double wx = wi * vx, wy = wi * vy, wz = wi * vz;
+    xx += wx * vx;
+    xy += wx * vy;
+    xz += wx * vz;
+    xw += wx * vw;
+    yy += wy * vy;
+    yz += wy * vz;
+    yw += wy * vw;
+    zz += wz * vz;
+    zw += wz * vw;
+    ww += wi * vw * vw;
   }
   return {xx, xy, xz, xw, yy, yz, yw, zz, zw, ww};
 }
 
+// Sums of the tangent outer products. Single precision throughout (sixteen lanes); the sums
+// are split over the simd lanes, each adding n/16 terms, so their rounding stays near 1e-6
+// relative for the counts we use.
 template <bool kWeighted>
-OPF_ALWAYS_INLINE std::array<double, 6> tangent(const double* __restrict q, std::size_t n,
+OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::size_t n,
                                                 const double* __restrict w, const Quat inverse) {
   // The invariants are copied to plain locals: GCC 12 does not vectorise this loop for AVX-512
   // when they are read through a reference.
-  const double ix = inverse.x, iy = inverse.y, iz = inverse.z, iw = inverse.w;
-  double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
+  const float ix = inverse.x, iy = inverse.y, iz = inverse.z, iw = inverse.w;
+  float xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
 #pragma omp simd reduction(+ : xx, xy, xz, yy, yz, zz)
   for (std::size_t i = 0; i < n; ++i) {
-    const double wi = kWeighted ? w[i] : 1.0;
+    const float wi = kWeighted ? static_cast<float>(w[i]) : 1.0f;
     const Quat r = multiply({ix, iy, iz, iw}, load(q, n, i));
     // log on the hemisphere w >= 0: d = 2 atan2(|v|, w) v / |v|, -> 2 v / w as |v| -> 0.
-    const double sign = r.w < 0.0 ? -1.0 : 1.0;
-    const double vx = sign * r.x, vy = sign * r.y, vz = sign * r.z, rw = sign * r.w;
-    // The angle over sin(angle / 2) in single precision: the covariance needs no more.
-    const auto norm = static_cast<float>(std::sqrt(vx * vx + vy * vy + vz * vz));
-    const double factor = 2.0f * vmath::atan2_nonnegative_over_y(norm, static_cast<float>(rw));
-    const double dx = factor * vx, dy = factor * vy, dz = factor * vz;
+    const float sign = r.w < 0.0f ? -1.0f : 1.0f;
+    const float vx = sign * r.x, vy = sign * r.y, vz = sign * r.z, rw = sign * r.w;
+    const float norm = std::sqrt(vx * vx + vy * vy + vz * vz);
+    const float factor = 2.0f * vmath::atan2_nonnegative_over_y(norm, rw);
+    const float dx = factor * vx, dy = factor * vy, dz = factor * vz;
     xx += wi * dx * dx;
     xy += wi * dx * dy;
     xz += wi * dx * dz;
@@ -156,33 +154,46 @@ OPF_ALWAYS_INLINE std::array<double, 6> tangent(const double* __restrict q, std:
 // vmaxpd. NaN terms never win a lane.
 constexpr std::size_t kLanes = 8;
 
-OPF_ALWAYS_INLINE double lanes_max(const double (&lanes)[kLanes]) {
-  double top = lanes[0];
+template <class T>
+OPF_ALWAYS_INLINE T lanes_max(const T (&lanes)[kLanes]) {
+  T top = lanes[0];
   for (std::size_t l = 1; l < kLanes; ++l) top = lanes[l] > top ? lanes[l] : top;
   return top;
 }
 
-// out[i] = keep * out[i] + e(i) for every particle, returning the largest e(i).
-template <class Exponent>
+// out[i] = keep * out[i] + e(i) for every particle, returning the largest e(i). T is the type
+// the exponents are computed in: float for rotation, run in blocks whose exponents are added to
+// the double log-weights in a second, cheap loop, so the costly one runs at float width.
+template <class T, class Exponent>
 OPF_ALWAYS_INLINE double write_exponents(std::size_t n, double* __restrict out, double keep,
                                          const Exponent& exponent) {
-  constexpr double kNone = -std::numeric_limits<double>::infinity();
-  double best[kLanes] = {kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
-  std::size_t i = 0;
-  for (; i + kLanes <= n; i += kLanes) {
+  constexpr std::size_t kWidth = 64 / sizeof(T);  // lanes of one 512-bit vector
+  constexpr std::size_t kBlock = 256;
+  T best[kWidth];
+  std::fill(best, best + kWidth, -std::numeric_limits<T>::infinity());
+  alignas(64) T block[kBlock];
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t size = std::min(kBlock, n - begin);
+    std::size_t i = 0;
+    for (; i + kWidth <= size; i += kWidth) {
 #pragma omp simd
-    for (std::size_t l = 0; l < kLanes; ++l) {
-      const double e = exponent(i + l);
-      out[i + l] = keep * out[i + l] + e;
-      best[l] = e > best[l] ? e : best[l];
+      for (std::size_t l = 0; l < kWidth; ++l) {
+        const T e = exponent(begin + i + l);
+        block[i + l] = e;
+        best[l] = e > best[l] ? e : best[l];
+      }
     }
+    for (; i < size; ++i) {
+      block[i] = exponent(begin + i);
+      best[0] = block[i] > best[0] ? block[i] : best[0];
+    }
+#pragma omp simd
+    for (std::size_t j = 0; j < size; ++j)
+      out[begin + j] = keep * out[begin + j] + static_cast<double>(block[j]);
   }
-  for (; i < n; ++i) {
-    const double e = exponent(i);
-    out[i] = keep * out[i] + e;
-    best[0] = e > best[0] ? e : best[0];
-  }
-  return lanes_max(best);
+  T top = best[0];
+  for (std::size_t l = 1; l < kWidth; ++l) top = best[l] > top ? best[l] : top;
+  return static_cast<double>(top);
 }
 
 // The largest value, and whether any is NaN.
@@ -234,17 +245,18 @@ OPF_KERNEL void add_scaled_noise_per_particle(double* __restrict x, const float*
   }
 }
 
-OPF_KERNEL void perturb_quaternions(double* q, std::size_t n, const float* noise, double sigma,
+OPF_KERNEL void perturb_quaternions(float* q, std::size_t n, const float* noise, double sigma,
                                     const double* sigma_per_particle) {
   if (sigma_per_particle)
-    perturb<true>(q, n, noise, sigma, sigma_per_particle);
+    perturb<true>(q, n, noise, 0.0f, sigma_per_particle);
   else
-    perturb<false>(q, n, noise, sigma, nullptr);
+    perturb<false>(q, n, noise, static_cast<float>(sigma), nullptr);
 }
 
-OPF_KERNEL void rotate_quaternions(double* __restrict q, std::size_t n,
+OPF_KERNEL void rotate_quaternions(float* __restrict q, std::size_t n,
                                    const std::array<double, 4>& r) {
-  const double rx = r[0], ry = r[1], rz = r[2], rw = r[3];
+  const auto rx = static_cast<float>(r[0]), ry = static_cast<float>(r[1]),
+             rz = static_cast<float>(r[2]), rw = static_cast<float>(r[3]);
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i)
     store(q, n, i, normalised(multiply({rx, ry, rz, rw}, load(q, n, i))));
@@ -254,19 +266,22 @@ OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t 
                                         const std::array<double, 3>& z, double scale,
                                         double* __restrict out, bool accumulate) {
   const double zx = z[0], zy = z[1], zz = z[2];
-  return write_exponents(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
+  return write_exponents<double>(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
     const double dx = x[i] - zx, dy = x[n + i] - zy, dz = x[2 * n + i] - zz;
     return scale * (dx * dx + dy * dy + dz * dz);
   });
 }
 
-OPF_KERNEL double rotation_exponents(const double* __restrict q, std::size_t n,
+OPF_KERNEL double rotation_exponents(const float* __restrict q, std::size_t n,
                                      const std::array<double, 4>& z, double scale,
                                      double* __restrict out, bool accumulate) {
-  const double ix = -z[0], iy = -z[1], iz = -z[2], iw = z[3];  // z^-1, z a unit quaternion
-  return write_exponents(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
-    const double angle = rotation_angle(multiply({ix, iy, iz, iw}, load(q, n, i)));
-    return scale * (angle * angle);
+  // z^-1 (z a unit quaternion)
+  const auto ix = static_cast<float>(-z[0]), iy = static_cast<float>(-z[1]),
+             iz = static_cast<float>(-z[2]), iw = static_cast<float>(z[3]);
+  const auto s = static_cast<float>(scale);
+  return write_exponents<float>(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
+    const float angle = rotation_angle(multiply({ix, iy, iz, iw}, load(q, n, i)));
+    return s * (angle * angle);
   });
 }
 
@@ -356,14 +371,27 @@ OPF_KERNEL void systematic_indices(const double* __restrict w, std::size_t n, do
   }
 }
 
+template <class T>
+OPF_ALWAYS_INLINE void gather(const T* __restrict in, std::size_t n_in, std::size_t rows,
+                              const std::size_t* __restrict indices, std::size_t count,
+                              T* __restrict out) {
+  for (std::size_t r = 0; r < rows; ++r) {
+    const T* row = in + r * n_in;
+    T* target = out + r * count;
+    for (std::size_t k = 0; k < count; ++k) target[k] = row[indices[k]];
+  }
+}
+
 OPF_KERNEL void gather_rows(const double* __restrict in, std::size_t n_in, std::size_t rows,
                             const std::size_t* __restrict indices, std::size_t count,
                             double* __restrict out) {
-  for (std::size_t r = 0; r < rows; ++r) {
-    const double* row = in + r * n_in;
-    double* target = out + r * count;
-    for (std::size_t k = 0; k < count; ++k) target[k] = row[indices[k]];
-  }
+  gather(in, n_in, rows, indices, count, out);
+}
+
+OPF_KERNEL void gather_rows(const float* __restrict in, std::size_t n_in, std::size_t rows,
+                            const std::size_t* __restrict indices, std::size_t count,
+                            float* __restrict out) {
+  gather(in, n_in, rows, indices, count, out);
 }
 
 OPF_KERNEL TranslationSums translation_sums(const double* x, std::size_t n, const double* w,
@@ -371,15 +399,16 @@ OPF_KERNEL TranslationSums translation_sums(const double* x, std::size_t n, cons
   return w ? sums<true>(x, n, w, reference) : sums<false>(x, n, nullptr, reference);
 }
 
-OPF_KERNEL std::array<double, 10> quaternion_second_moment(const double* q, std::size_t n,
+OPF_KERNEL std::array<double, 10> quaternion_second_moment(const float* q, std::size_t n,
                                                            const double* w) {
   return w ? markley<true>(q, n, w) : markley<false>(q, n, nullptr);
 }
 
-OPF_KERNEL std::array<double, 6> tangent_second_moment(const double* q, std::size_t n,
+OPF_KERNEL std::array<double, 6> tangent_second_moment(const float* q, std::size_t n,
                                                        const double* w,
                                                        const std::array<double, 4>& mean_inverse) {
-  const Quat inverse{mean_inverse[0], mean_inverse[1], mean_inverse[2], mean_inverse[3]};
+  const Quat inverse{static_cast<float>(mean_inverse[0]), static_cast<float>(mean_inverse[1]),
+                     static_cast<float>(mean_inverse[2]), static_cast<float>(mean_inverse[3])};
   return w ? tangent<true>(q, n, w, inverse) : tangent<false>(q, n, nullptr, inverse);
 }
 

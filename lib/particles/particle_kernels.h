@@ -1,7 +1,7 @@
 #pragma once
 // The per-particle loops of a filter step over structure-of-arrays storage: a portion of n
-// particles of dimension D is D contiguous rows of n doubles (x..., y..., z... or, for
-// quaternions, x..., y..., z..., w...). Each kernel is one pass that vectorises, compiled for
+// particles of dimension D is D contiguous rows of n values: x..., y..., z... in double for
+// translation; x..., y..., z..., w... in float for rotation quaternions. Each kernel is one pass that vectorises, compiled for
 // the CPU at hand (kernel_dispatch.h). The filters call these through their typed steps
 // (random_walk_model.h, gaussian_likelihood.h, log_weights.h, resampling.h,
 // particle_statistics.h); nothing else needs them.
@@ -20,11 +20,11 @@ void add_scaled_noise_per_particle(double* x, const float* noise, const double* 
 
 /// q_i <- normalise(q_i * exp(e_i)) with the tangent step e_i = s_i (noise rows 0..2 at i) and
 /// s_i = sigma_per_particle[i], or `sigma` when that is null.
-void perturb_quaternions(double* q, std::size_t n, const float* noise, double sigma,
+void perturb_quaternions(float* q, std::size_t n, const float* noise, double sigma,
                          const double* sigma_per_particle);
 
 /// q_i <- normalise(r * q_i): every particle turned by the world-frame rotation r (x, y, z, w).
-void rotate_quaternions(double* q, std::size_t n, const std::array<double, 4>& r);
+void rotate_quaternions(float* q, std::size_t n, const std::array<double, 4>& r);
 
 /// out[i] (+)= scale * |x_i - z|^2; returns the largest scale * |x_i - z|^2. `accumulate` adds to
 /// out (log-weights) instead of overwriting it.
@@ -33,7 +33,7 @@ double translation_exponents(const double* x, std::size_t n, const std::array<do
 
 /// out[i] (+)= scale * theta_i^2 with theta_i the geodesic angle between q_i and z; returns the
 /// largest such exponent.
-double rotation_exponents(const double* q, std::size_t n, const std::array<double, 4>& z,
+double rotation_exponents(const float* q, std::size_t n, const std::array<double, 4>& z,
                           double scale, double* out, bool accumulate);
 
 /// What one normalisation of log-weights found.
@@ -59,6 +59,8 @@ void systematic_indices(const double* w, std::size_t n, double offset, std::size
 /// out row r, slot k = in row r, particle indices[k]; in has n_in columns, out `count`.
 void gather_rows(const double* in, std::size_t n_in, std::size_t rows,
                  const std::size_t* indices, std::size_t count, double* out);
+void gather_rows(const float* in, std::size_t n_in, std::size_t rows,
+                 const std::size_t* indices, std::size_t count, float* out);
 
 /// Weighted sums about a reference point (for precision far from the origin): total weight,
 /// sum w (x - ref) and the upper triangle of sum w (x - ref)(x - ref)^T (xx, xy, xz, yy, yz, zz).
@@ -73,11 +75,11 @@ TranslationSums translation_sums(const double* x, std::size_t n, const double* w
 
 /// The upper triangle of Markley's M = sum w q q^T over (x, y, z, w) components, row by row:
 /// xx xy xz xw yy yz yw zz zw ww. w null means all weights 1.
-std::array<double, 10> quaternion_second_moment(const double* q, std::size_t n, const double* w);
+std::array<double, 10> quaternion_second_moment(const float* q, std::size_t n, const double* w);
 
 /// Upper triangle of sum w d d^T for the tangent vectors d_i = log(mean_inverse * q_i), in the
 /// order of TranslationSums::second. w null means all weights 1.
-std::array<double, 6> tangent_second_moment(const double* q, std::size_t n, const double* w,
+std::array<double, 6> tangent_second_moment(const float* q, std::size_t n, const double* w,
                                             const std::array<double, 4>& mean_inverse);
 
 }  // namespace opf::kernels

@@ -48,7 +48,7 @@ void scatter_around(TranslationParticles& particles, const Eigen::Vector3d& cent
 
 void scatter_around(RotationParticles& particles, const Eigen::Quaterniond& centre, double sigma,
                     GaussianSampler& noise) {
-  particles.states.colwise() = centre.normalized().coeffs();
+  particles.states.colwise() = centre.normalized().coeffs().cast<float>();
   predict_random_walk(particles, sigma, noise);
   particles.weights.reset();
 }

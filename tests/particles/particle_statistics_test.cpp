@@ -67,7 +67,7 @@ TEST(RotationMoments, TangentCovarianceOfAGaussianCloud) {
   for (Eigen::Index i = 0; i < particles.states.cols(); ++i) {
     const Eigen::Vector3d e(sigma.x() * random.normal(), sigma.y() * random.normal(),
                             sigma.z() * random.normal());
-    particles.states.col(i) = coeffs(centre * so3::exp(e));
+    particles.states.col(i) = coeffs(centre * so3::exp(e)).cast<float>();
   }
   const RotationMoments m = rotation_moments(particles);
   EXPECT_LT(so3::angle_between(m.mean, centre), 5.0 * sigma.z() / std::sqrt(20000.0));
