@@ -227,6 +227,59 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
   for (std::size_t i = 0; i < m; ++i) marks[ends[i]] = static_cast<std::int32_t>(i + 1);
 }
 
+template <class T>
+OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double offset,
+                                  std::size_t count, std::size_t* __restrict indices) {
+  // Slot k takes the particle whose interval [C_{i-1}, C_i) of cumulative weight holds
+  // (k + offset) / count. Particle i's slots end at e_i = ceil(count C_i - offset) (clamped to
+  // [0, count]), and e is nondecreasing, so the particle of slot k is #{i : e_i <= k}: mark each
+  // e_i with i + 1 (a later particle overwrites an earlier one) and take the running maximum.
+  // No branch depends on the weights. The last particle takes any remainder left by rounding.
+  if (n < 2 || count == 0) {
+    std::fill(indices, indices + count, std::size_t{0});
+    return;
+  }
+  // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
+  // so the additions do not wait on each other.
+  const std::size_t m = n - 1;  // the last particle's end is `count` by definition
+  const std::size_t length = (m + kLanes - 1) / kLanes;
+  std::vector<double> cumulative(kLanes * length, 0.0);
+  std::copy(w, w + m, cumulative.begin());  // (to double: the sums need it)
+  double* __restrict c = cumulative.data();
+  double start[kLanes] = {};
+  for (std::size_t s = 0; s + 1 < kLanes; ++s) {
+    double total = 0.0;
+#pragma omp simd reduction(+ : total)
+    for (std::size_t j = 0; j < length; ++j) total += c[s * length + j];
+    start[s + 1] = start[s] + total;
+  }
+  for (std::size_t j = 0; j < length; ++j) {
+    for (std::size_t s = 0; s < kLanes; ++s) {
+      start[s] += c[s * length + j];
+      c[s * length + j] = start[s];
+    }
+  }
+  // Ends in slots: count C_i / total. After the chains, the last one's sum covers every
+  // particle but the last.
+  const double total = start[kLanes - 1] + static_cast<double>(w[n - 1]);
+  const double slots = static_cast<double>(count);
+  const double per_weight = total > 0.0 ? slots / total : 0.0;
+  std::vector<std::int32_t> ends(m);
+  std::int32_t* __restrict e = ends.data();
+#pragma omp simd
+  for (std::size_t i = 0; i < m; ++i) {
+    const double end = std::ceil(per_weight * c[i] - offset);
+    e[i] = static_cast<std::int32_t>(end < 0.0 ? 0.0 : (end > slots ? slots : end));
+  }
+  std::vector<std::int32_t> marks(count + 1, 0);  // slot `count` absorbs the ends past the last
+  mark_ends(e, m, marks.data());
+  std::int32_t particle = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    particle = marks[k] > particle ? marks[k] : particle;
+    indices[k] = static_cast<std::size_t>(particle);
+  }
+}
+
 }  // namespace
 
 OPF_KERNEL void add_scaled_noise(double* __restrict x, const float* __restrict noise, double sigma,
@@ -310,6 +363,23 @@ OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
   return {true, sum * sum / (static_cast<double>(n) * sum_squares)};
 }
 
+OPF_KERNEL NormalisedWeights resampling_weights(const double* __restrict log_w,
+                                                float* __restrict linear, std::size_t n) {
+  if (n == 0) return {};
+  bool nan = false;
+  const double top = max_value(log_w, n, nan);
+  if (nan || !std::isfinite(top)) return {false, 0.0};
+  float sum = 0.0f, sum_squares = 0.0f;
+#pragma omp simd reduction(+ : sum, sum_squares)
+  for (std::size_t i = 0; i < n; ++i) {
+    const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
+    linear[i] = w;
+    sum += w;
+    sum_squares += w * w;
+  }
+  return {true, static_cast<double>(sum) * sum / (static_cast<double>(n) * sum_squares)};
+}
+
 OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __restrict linear,
                                    std::size_t n) {
   bool nan = false;
@@ -323,52 +393,26 @@ OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __res
   return sum;
 }
 
-OPF_KERNEL void systematic_indices(const double* __restrict w, std::size_t n, double offset,
-                                  std::size_t count, std::size_t* __restrict indices) {
-  // Slot k takes the particle whose interval [C_{i-1}, C_i) of cumulative weight holds
-  // (k + offset) / count. Particle i's slots end at e_i = ceil(count C_i - offset) (clamped to
-  // [0, count]), and e is nondecreasing, so the particle of slot k is #{i : e_i <= k}: mark each
-  // e_i with i + 1 (a later particle overwrites an earlier one) and take the running maximum.
-  // No branch depends on the weights. The last particle takes any remainder left by rounding.
-  if (n < 2 || count == 0) {
-    std::fill(indices, indices + count, std::size_t{0});
-    return;
-  }
-  // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
-  // so the additions do not wait on each other.
-  const std::size_t m = n - 1;  // the last particle's end is `count` by definition
-  const std::size_t length = (m + kLanes - 1) / kLanes;
-  std::vector<double> cumulative(kLanes * length, 0.0);
-  std::copy(w, w + m, cumulative.begin());
-  double* __restrict c = cumulative.data();
-  double start[kLanes] = {};
-  for (std::size_t s = 0; s + 1 < kLanes; ++s) {
-    double total = 0.0;
-#pragma omp simd reduction(+ : total)
-    for (std::size_t j = 0; j < length; ++j) total += c[s * length + j];
-    start[s + 1] = start[s] + total;
-  }
-  for (std::size_t j = 0; j < length; ++j) {
-    for (std::size_t s = 0; s < kLanes; ++s) {
-      start[s] += c[s * length + j];
-      c[s * length + j] = start[s];
-    }
-  }
-  const double slots = static_cast<double>(count);
-  std::vector<std::int32_t> ends(m);
-  std::int32_t* __restrict e = ends.data();
+OPF_KERNEL void systematic_indices(const double* w, std::size_t n, double offset,
+                                  std::size_t count, std::size_t* indices) {
+  systematic(w, n, offset, count, indices);
+}
+
+OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset,
+                                  std::size_t count, std::size_t* indices) {
+  systematic(w, n, offset, count, indices);
+}
+
+OPF_KERNEL std::size_t largest_index(const std::size_t* __restrict indices, std::size_t n) {
+  std::size_t top[kLanes] = {};
+  std::size_t i = 0;
+  for (; i + kLanes <= n; i += kLanes) {
 #pragma omp simd
-  for (std::size_t i = 0; i < m; ++i) {
-    const double end = std::ceil(slots * c[i] - offset);
-    e[i] = static_cast<std::int32_t>(end < 0.0 ? 0.0 : (end > slots ? slots : end));
+    for (std::size_t l = 0; l < kLanes; ++l)
+      top[l] = indices[i + l] > top[l] ? indices[i + l] : top[l];
   }
-  std::vector<std::int32_t> marks(count + 1, 0);  // slot `count` absorbs the ends past the last
-  mark_ends(e, m, marks.data());
-  std::int32_t particle = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    particle = marks[k] > particle ? marks[k] : particle;
-    indices[k] = static_cast<std::size_t>(particle);
-  }
+  for (; i < n; ++i) top[0] = indices[i] > top[0] ? indices[i] : top[0];
+  return *std::max_element(top, top + kLanes);
 }
 
 template <class T>

@@ -47,14 +47,25 @@ struct NormalisedWeights {
 /// arrays untouched.
 NormalisedWeights normalise_log_weights(double* log_w, double* linear, std::size_t n);
 
+/// Relative weights for resampling right away: linear[i] = exp(log_w[i] - max log_w) in single
+/// precision (a weight below e^-87 of the largest is 0), and the ESS fraction. log_w is left as
+/// it is (resampling makes it uniform). usable = false when every weight was -inf or any NaN.
+NormalisedWeights resampling_weights(const double* log_w, float* linear, std::size_t n);
+
 /// linear[i] = exp(log_w[i] - max log_w) (unnormalised, largest 1); returns their sum.
 double relative_weights(const double* log_w, double* linear, std::size_t n);
 
-/// Systematic resampling of `count` particles from normalised weights w (n of them): slot k takes
-/// the particle whose cumulative-weight interval holds (k + offset) / count. Indices ascend. Two
-/// branch-free passes: each particle's last slot, then a prefix count.
+/// Systematic resampling of `count` particles from weights w (n of them, any positive total):
+/// slot k takes the particle whose interval of cumulative weight / total holds
+/// (k + offset) / count. Indices ascend. Branch-free passes: each particle's last slot, then a
+/// running maximum.
 void systematic_indices(const double* w, std::size_t n, double offset, std::size_t count,
                         std::size_t* indices);
+void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
+                        std::size_t* indices);
+
+/// The largest of n > 0 indices (the bounds check before a gather).
+std::size_t largest_index(const std::size_t* indices, std::size_t n);
 
 /// out row r, slot k = in row r, particle indices[k]; in has n_in columns, out `count`.
 void gather_rows(const double* in, std::size_t n_in, std::size_t rows,

@@ -12,7 +12,6 @@
 
 #include <Eigen/Core>
 
-#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
 #include <type_traits>
@@ -39,7 +38,7 @@ struct ParticlePortion {
   /// Replaces the particles by the ones at `indices` (which may repeat) and makes the weights
   /// uniform: the resampled set represents the posterior by its density alone.
   void resample(const std::vector<std::size_t>& indices) {
-    if (!indices.empty() && *std::max_element(indices.begin(), indices.end()) >= size())
+    if (!indices.empty() && kernels::largest_index(indices.data(), indices.size()) >= size())
       throw std::out_of_range("ParticlePortion::resample: bad index");
     spare_.resize(Dim, Eigen::Index(indices.size()));
     kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(),

@@ -6,6 +6,7 @@
 #include "particles/resampling.h"
 
 #include <cmath>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -21,16 +22,34 @@ void require_positive(double value, const char* name) {
 template <int Dim>
 bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted,
                                   const ResamplingOptions& options, Random& random,
-                                  Eigen::VectorXd& linear, double& ess, bool& resampled) {
+                                  ResampleScratch& scratch, double& ess, bool& resampled) {
   resampled = false;
-  if (portion.weights.uniform()) {
-    ess = 1.0;
+  ess = 1.0;
+  if (portion.weights.uniform()) return true;
+  const std::size_t n = portion.size();
+  if (reweighted && options.every_frame &&
+      options.scheme == mrpt::bayes::CParticleFilter::prSystematic) {
+    // Resampling follows at once (the paper's default): relative weights in single precision
+    // are all it needs, and normalising the log-weights first would be undone by the reset.
+    scratch.relative.resize(n);
+    const kernels::NormalisedWeights w =
+        kernels::resampling_weights(portion.weights.log().data(), scratch.relative.data(), n);
+    resampled = true;
+    if (!w.usable) {
+      portion.weights.reset();  // uniform weights resample to the same particles
+      return false;
+    }
+    ess = w.ess_fraction;
+    scratch.indices.resize(n);
+    kernels::systematic_indices(scratch.relative.data(), n, random.uniform(), n,
+                                scratch.indices.data());
+    portion.resample(scratch.indices);
     return true;
   }
-  const kernels::NormalisedWeights normalised = portion.weights.normalise(linear);
-  ess = normalised.usable ? normalised.ess_fraction : 1.0 / static_cast<double>(portion.size());
+  const kernels::NormalisedWeights normalised = portion.weights.normalise(scratch.linear);
+  if (normalised.usable) ess = normalised.ess_fraction;
   if (reweighted && should_resample(options, ess)) {
-    portion.resample(resample_indices(linear, portion.size(), options.scheme, random));
+    portion.resample(resample_indices(scratch.linear, n, options.scheme, random));
     resampled = true;
   }
   return normalised.usable;
@@ -137,10 +156,10 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
 ResampleReport PoseParticleFilter::normalise_and_resample() {
   ResampleReport report;
   const bool translation_ok = normalise_and_maybe_resample(
-      translation_, translation_reweighted_, options_.resampling, random_, linear_weights_,
+      translation_, translation_reweighted_, options_.resampling, random_, scratch_,
       report.ess_translation, report.resampled_translation);
   const bool rotation_ok = normalise_and_maybe_resample(
-      rotation_, rotation_reweighted_, options_.resampling, random_, linear_weights_,
+      rotation_, rotation_reweighted_, options_.resampling, random_, scratch_,
       report.ess_rotation, report.resampled_rotation);
   report.weights_recovered = !translation_ok || !rotation_ok;
   translation_reweighted_ = translation_reweighted_ && !report.resampled_translation;

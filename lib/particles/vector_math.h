@@ -217,6 +217,30 @@ OPF_ALWAYS_INLINE void sincos(float x, float& s, float& c) {
   c = (quadrant == 1 || quadrant == 2) ? -c0 : c0;
 }
 
+/// e^x in float for x <= 0 (Cephes expf); exactly 0 below -87, where e^x would be subnormal.
+/// NaN gives NaN.
+OPF_ALWAYS_INLINE float exp_nonpositive(float x) {
+  constexpr float kMagic = 12582912.0f;  // 1.5 * 2^23: adding it rounds to an integer
+  const bool underflow = x < -87.0f;
+  const float clamped = underflow ? -87.0f : x;
+  const float shifted = clamped * 1.44269504088896341f + kMagic;
+  const std::int32_t n = std::bit_cast<std::int32_t>(shifted) - std::bit_cast<std::int32_t>(kMagic);
+  const float k = shifted - kMagic;
+  const float r = (clamped - k * 0.693359375f) + k * 2.12194440e-4f;
+  const float z = r * r;
+  const float p =
+      (((((1.9875691500E-4f * r + 1.3981999507E-3f) * r + 8.3334519073E-3f) * r +
+         4.1665795894E-2f) *
+            r +
+        1.6666665459E-1f) *
+           r +
+       5.0000001201E-1f) *
+          z +
+      r + 1.0f;
+  const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(n + 127) << 23);
+  return underflow ? 0.0f : (x != x ? x : p * scale);
+}
+
 /// atan2(y, x) / y in float for y >= 0 and x > 0, with its limit 1 / x at y = 0 (Cephes atanf
 /// after reducing the ratio to [-tan(pi/8), tan(pi/8)]).
 OPF_ALWAYS_INLINE float atan2_nonnegative_over_y(float y, float x) {
