@@ -132,8 +132,8 @@ void BM_ResampleRotationPortion(benchmark::State& state) {
   const Eigen::VectorXd w = typical_weights(particles);
   Random random(2);
   for (auto _ : state)
-    particles.resample(resample_indices(w, particles.size(),
-                                        mrpt::bayes::CParticleFilter::prSystematic, random));
+    particles.resample(
+        resample_indices(w, particles.size(), mrpt::bayes::CParticleFilter::prSystematic, random));
   per_particle(state);
 }
 
@@ -162,7 +162,8 @@ void BM_OccluderSearch(benchmark::State& state) {
   std::vector<OccluderCandidate> candidates;
   for (std::size_t i = 0; i < k; ++i) {
     const Eigen::Vector3d mean(random.uniform(), random.uniform(), 0.05 * random.uniform());
-    const Eigen::Matrix3d covariance = (1e-4 * (1.0 + random.uniform())) * Eigen::Matrix3d::Identity();
+    const Eigen::Matrix3d covariance =
+        (1e-4 * (1.0 + random.uniform())) * Eigen::Matrix3d::Identity();
     candidates.push_back({"object" + std::to_string(i), mean, covariance});
   }
   OccluderOptions options;
@@ -186,10 +187,10 @@ BENCHMARK(BM_LikelihoodRotation)->Apply(particle_counts);
 BENCHMARK(BM_NormaliseWithEss)->Apply(particle_counts);
 BENCHMARK(BM_Resample)
     ->ArgNames({"n", "scheme"})
-    ->ArgsProduct({{5000}, {mrpt::bayes::CParticleFilter::prMultinomial,
-                            mrpt::bayes::CParticleFilter::prResidual,
-                            mrpt::bayes::CParticleFilter::prStratified,
-                            mrpt::bayes::CParticleFilter::prSystematic}})
+    ->ArgsProduct(
+        {{5000},
+         {mrpt::bayes::CParticleFilter::prMultinomial, mrpt::bayes::CParticleFilter::prResidual,
+          mrpt::bayes::CParticleFilter::prStratified, mrpt::bayes::CParticleFilter::prSystematic}})
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ResampleRotationPortion)->Apply(particle_counts);
 BENCHMARK(BM_TranslationMoments)

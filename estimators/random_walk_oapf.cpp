@@ -186,9 +186,9 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
   predict_random_walk(
       translation_.particles,
       step_spreads(translation_, p.process_noise_translation, dt, options_.spread_growth), noise_);
-  predict_random_walk(
-      rotation_.particles,
-      step_spreads(rotation_, p.process_noise_rotation, dt, options_.spread_growth), noise_);
+  predict_random_walk(rotation_.particles,
+                      step_spreads(rotation_, p.process_noise_rotation, dt, options_.spread_growth),
+                      noise_);
 
   const ChainStep chain = chain_step(options_, dt);
   Eigen::VectorXd translation_visible, rotation_visible;
@@ -206,7 +206,7 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
       reset(translation_, translation_.particles.size());
       scatter_around(translation_.particles, translation_of(*measurement), sigma_t, noise_);
       translation_visible = visible_exponents(translation_.particles, translation_of(*measurement),
-                                               sigma_t * sigma_t);
+                                              sigma_t * sigma_t);
     }
     if (p.reset_gate > 0.0 && rotation_visible.maxCoeff() < gate) {
       reset(rotation_, rotation_.particles.size());

@@ -4,9 +4,9 @@ namespace opf {
 
 double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
                          double variance) {
-  return kernels::translation_exponents(
-      particles.states.data(), particles.size(), {measurement.x(), measurement.y(), measurement.z()},
-      -0.5 / variance, particles.weights.log().data(), true);
+  return kernels::translation_exponents(particles.states.data(), particles.size(),
+                                        {measurement.x(), measurement.y(), measurement.z()},
+                                        -0.5 / variance, particles.weights.log().data(), true);
 }
 
 double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
@@ -17,18 +17,16 @@ double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond&
                                      particles.weights.log().data(), true);
 }
 
-double gaussian_exponents(const TranslationParticles& particles,
-                          const Eigen::Vector3d& measurement, double variance,
-                          Eigen::VectorXd& exponents) {
+double gaussian_exponents(const TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                          double variance, Eigen::VectorXd& exponents) {
   exponents.resize(particles.states.cols());
   return kernels::translation_exponents(particles.states.data(), particles.size(),
                                         {measurement.x(), measurement.y(), measurement.z()},
                                         -0.5 / variance, exponents.data(), false);
 }
 
-double gaussian_exponents(const RotationParticles& particles,
-                          const Eigen::Quaterniond& measurement, double variance,
-                          Eigen::VectorXd& exponents) {
+double gaussian_exponents(const RotationParticles& particles, const Eigen::Quaterniond& measurement,
+                          double variance, Eigen::VectorXd& exponents) {
   const Eigen::Quaterniond z = measurement.normalized();
   exponents.resize(particles.states.cols());
   return kernels::rotation_exponents(particles.states.data(), particles.size(),

@@ -20,11 +20,9 @@ double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond&
 
 /// The exponents alone, -0.5 d_i^2 / variance per particle, into `exponents` (weights
 /// untouched); returns the largest.
-double gaussian_exponents(const TranslationParticles& particles,
-                          const Eigen::Vector3d& measurement, double variance,
-                          Eigen::VectorXd& exponents);
-double gaussian_exponents(const RotationParticles& particles,
-                          const Eigen::Quaterniond& measurement, double variance,
-                          Eigen::VectorXd& exponents);
+double gaussian_exponents(const TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                          double variance, Eigen::VectorXd& exponents);
+double gaussian_exponents(const RotationParticles& particles, const Eigen::Quaterniond& measurement,
+                          double variance, Eigen::VectorXd& exponents);
 
 }  // namespace opf

@@ -24,7 +24,7 @@ using State = std::array<std::array<std::uint64_t, GaussianSampler::kLanes>, 4>;
 
 // One round: sixteen 64-bit draws, one per lane, turned into 32 samples. The top 24 bits make the
 // radius' uniform in (0, 1]; the next 24 the angle: two bits pick the quadrant, 22 the angle in
-// it, so sin and cos need polynomials on [0, pi/2] only.
+// it, so sin and cos need polynomials on [-pi/4, pi/4] only.
 OPF_ALWAYS_INLINE void normal_block(State& s, float* out) {
   constexpr int kLanes = GaussianSampler::kLanes;
   for (int l = 0; l < kLanes; ++l) {
@@ -41,11 +41,14 @@ OPF_ALWAYS_INLINE void normal_block(State& s, float* out) {
     const auto angle_bits = static_cast<std::int32_t>((r >> 16) & 0xffffff);
     const float u = (static_cast<float>(radius_bits) + 1.0f) * 0x1.0p-24f;
     const float radius = std::sqrt(-2.0f * vmath::log_positive(u));
+    // The angle q pi/2 + x with x uniform in [-pi/4, pi/4): uniform on the circle (a turn by
+    // -pi/4 of the usual [0, 2 pi)), and sin x, cos x need the short polynomials only.
     const std::int32_t quadrant = angle_bits >> 22;
     const float x = (static_cast<float>(angle_bits & 0x3fffff) + 0.5f) *
-                    static_cast<float>(vmath::kHalfPi * 0x1.0p-22);
+                        static_cast<float>(vmath::kHalfPi * 0x1.0p-22) -
+                    static_cast<float>(vmath::kQuarterPi);
     float sin_x, cos_x;
-    vmath::sincos_quadrant(x, sin_x, cos_x);
+    vmath::sincos_reduced(x, sin_x, cos_x);
     // Rotating by the quadrant: (sin, cos) of x + q pi / 2.
     const bool odd = (quadrant & 1) != 0;
     const float a = odd ? cos_x : sin_x;

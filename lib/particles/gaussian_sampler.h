@@ -21,8 +21,8 @@ class GaussianSampler {
 
   explicit GaussianSampler(std::uint64_t seed);
 
-  /// Fills `out` with independent N(0, 1) samples. The stream advances by whole blocks of kBlock, so
-  /// the values depend on the lengths requested, not only on the count in total.
+  /// Fills `out` with independent N(0, 1) samples. The stream advances by whole blocks of kBlock,
+  /// so the values depend on the lengths requested, not only on the count in total.
   void fill(std::span<float> out);
 
   /// `count` fresh samples in a buffer the sampler owns (valid until the next draw), so a filter

@@ -23,10 +23,9 @@ struct Quat {
 
 // Hamilton product a * b.
 OPF_ALWAYS_INLINE Quat multiply(const Quat& a, const Quat& b) {
-  return {a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
-          a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
-          a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w,
-          a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
+  return {
+      a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y, a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
+      a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w, a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z};
 }
 
 OPF_ALWAYS_INLINE Quat normalised(const Quat& q) {
@@ -393,13 +392,13 @@ OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __res
   return sum;
 }
 
-OPF_KERNEL void systematic_indices(const double* w, std::size_t n, double offset,
-                                  std::size_t count, std::size_t* indices) {
+OPF_KERNEL void systematic_indices(const double* w, std::size_t n, double offset, std::size_t count,
+                                   std::size_t* indices) {
   systematic(w, n, offset, count, indices);
 }
 
-OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset,
-                                  std::size_t count, std::size_t* indices) {
+OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
+                                   std::size_t* indices) {
   systematic(w, n, offset, count, indices);
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // The per-particle loops of a filter step over structure-of-arrays storage: a portion of n
 // particles of dimension D is D contiguous rows of n values: x..., y..., z... in double for
-// translation; x..., y..., z..., w... in float for rotation quaternions. Each kernel is one pass that vectorises, compiled for
-// the CPU at hand (kernel_dispatch.h). The filters call these through their typed steps
-// (random_walk_model.h, gaussian_likelihood.h, log_weights.h, resampling.h,
+// translation; x..., y..., z..., w... in float for rotation quaternions. Each kernel is one pass
+// that vectorises, compiled for the CPU at hand (kernel_dispatch.h). The filters call these through
+// their typed steps (random_walk_model.h, gaussian_likelihood.h, log_weights.h, resampling.h,
 // particle_statistics.h); nothing else needs them.
 
 #include <array>
@@ -68,10 +68,10 @@ void systematic_indices(const float* w, std::size_t n, double offset, std::size_
 std::size_t largest_index(const std::size_t* indices, std::size_t n);
 
 /// out row r, slot k = in row r, particle indices[k]; in has n_in columns, out `count`.
-void gather_rows(const double* in, std::size_t n_in, std::size_t rows,
-                 const std::size_t* indices, std::size_t count, double* out);
-void gather_rows(const float* in, std::size_t n_in, std::size_t rows,
-                 const std::size_t* indices, std::size_t count, float* out);
+void gather_rows(const double* in, std::size_t n_in, std::size_t rows, const std::size_t* indices,
+                 std::size_t count, double* out);
+void gather_rows(const float* in, std::size_t n_in, std::size_t rows, const std::size_t* indices,
+                 std::size_t count, float* out);
 
 /// Weighted sums about a reference point (for precision far from the origin): total weight,
 /// sum w (x - ref) and the upper triangle of sum w (x - ref)(x - ref)^T (xx, xy, xz, yy, yz, zz).

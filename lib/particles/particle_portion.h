@@ -41,8 +41,7 @@ struct ParticlePortion {
     if (!indices.empty() && kernels::largest_index(indices.data(), indices.size()) >= size())
       throw std::out_of_range("ParticlePortion::resample: bad index");
     spare_.resize(Dim, Eigen::Index(indices.size()));
-    kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(),
-                         spare_.data());
+    kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(), spare_.data());
     std::swap(states, spare_);
     if (weights.size() != indices.size()) weights = LogWeights(indices.size());
     weights.reset();

@@ -54,8 +54,7 @@ RotationMoments rotation_moments(const RotationParticles& particles) {
   const double* w = weights_or_uniform(particles.weights, linear);
   const std::size_t n = particles.size();
   const double total = w ? linear.sum() : static_cast<double>(n);
-  const std::array<double, 10> u =
-      kernels::quaternion_second_moment(particles.states.data(), n, w);
+  const std::array<double, 10> u = kernels::quaternion_second_moment(particles.states.data(), n, w);
   Eigen::Matrix4d m;
   m << u[0], u[1], u[2], u[3], u[1], u[4], u[5], u[6], u[2], u[5], u[7], u[8], u[3], u[6], u[8],
       u[9];

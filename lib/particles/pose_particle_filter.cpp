@@ -6,9 +6,9 @@
 #include "particles/resampling.h"
 
 #include <cmath>
-#include <vector>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -158,9 +158,9 @@ ResampleReport PoseParticleFilter::normalise_and_resample() {
   const bool translation_ok = normalise_and_maybe_resample(
       translation_, translation_reweighted_, options_.resampling, random_, scratch_,
       report.ess_translation, report.resampled_translation);
-  const bool rotation_ok = normalise_and_maybe_resample(
-      rotation_, rotation_reweighted_, options_.resampling, random_, scratch_,
-      report.ess_rotation, report.resampled_rotation);
+  const bool rotation_ok =
+      normalise_and_maybe_resample(rotation_, rotation_reweighted_, options_.resampling, random_,
+                                   scratch_, report.ess_rotation, report.resampled_rotation);
   report.weights_recovered = !translation_ok || !rotation_ok;
   translation_reweighted_ = translation_reweighted_ && !report.resampled_translation;
   rotation_reweighted_ = rotation_reweighted_ && !report.resampled_rotation;

@@ -130,17 +130,16 @@ OPF_ALWAYS_INLINE void sincos(double x, double& s, double& c) {
                 8.33333333332211858878E-3) *
                    z -
                1.66666666666666307295E-1);
-  const double cos_r =
-      1.0 - 0.5 * z +
-      z * z *
-          (((((-1.13585365213876817300E-11 * z + 2.08757008419747316778E-9) * z -
-              2.75573141792967388112E-7) *
-                 z +
-             2.48015872888517045348E-5) *
-                z -
-            1.38888888888730564116E-3) *
-               z +
-           4.16666666666665929218E-2);
+  const double cos_r = 1.0 - 0.5 * z +
+                       z * z *
+                           (((((-1.13585365213876817300E-11 * z + 2.08757008419747316778E-9) * z -
+                               2.75573141792967388112E-7) *
+                                  z +
+                              2.48015872888517045348E-5) *
+                                 z -
+                             1.38888888888730564116E-3) *
+                                z +
+                            4.16666666666665929218E-2);
   const std::int64_t quadrant = n & 3;
   const bool swap = (quadrant & 1) != 0;
   const double s0 = swap ? cos_r : sin_r;
@@ -177,19 +176,12 @@ OPF_ALWAYS_INLINE float log_positive(float x) {
   return (m + y) + fe * 0.693359375f;
 }
 
-/// sin and cos of x in [0, pi/2] in float: Taylor polynomials to x^11 and x^12 (error below
-/// 1e-8 over the interval, under float's resolution).
-OPF_ALWAYS_INLINE void sincos_quadrant(float x, float& s, float& c) {
+/// sin and cos of x in [-pi/4, pi/4] in float: Cephes' sinf/cosf polynomials (about 1e-7).
+OPF_ALWAYS_INLINE void sincos_reduced(float x, float& s, float& c) {
   const float z = x * x;
-  s = x * (1.0f +
-           z * (-1.0f / 6 +
-                z * (1.0f / 120 +
-                     z * (-1.0f / 5040 + z * (1.0f / 362880 + z * (-1.0f / 39916800))))));
-  c = 1.0f +
-      z * (-0.5f +
-           z * (1.0f / 24 +
-                z * (-1.0f / 720 +
-                     z * (1.0f / 40320 + z * (-1.0f / 3628800 + z * (1.0f / 479001600))))));
+  s = ((-1.9515295891E-4f * z + 8.3321608736E-3f) * z - 1.6666654611E-1f) * z * x + x;
+  c = ((2.443315711809948E-5f * z - 1.388731625493765E-3f) * z + 4.166664568298827E-2f) * z * z -
+      0.5f * z + 1.0f;
 }
 
 // ---- Single precision, for the parts of a step whose results need 1e-7 relative accuracy only
@@ -204,12 +196,10 @@ OPF_ALWAYS_INLINE void sincos(float x, float& s, float& c) {
   const std::int32_t quadrant =
       (std::bit_cast<std::int32_t>(shifted) - std::bit_cast<std::int32_t>(kMagic)) & 3;
   const float k = shifted - kMagic;
-  const float r = ((x - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188216e-8f;
-  const float z = r * r;
-  const float sin_r = ((-1.9515295891E-4f * z + 8.3321608736E-3f) * z - 1.6666654611E-1f) * z * r + r;
-  const float cos_r =
-      ((2.443315711809948E-5f * z - 1.388731625493765E-3f) * z + 4.166664568298827E-2f) * z * z -
-      0.5f * z + 1.0f;
+  const float r =
+      ((x - k * 1.5703125f) - k * 4.837512969970703125e-4f) - k * 7.54978995489188216e-8f;
+  float sin_r, cos_r;
+  sincos_reduced(r, sin_r, cos_r);
   const bool swap = (quadrant & 1) != 0;
   const float s0 = swap ? cos_r : sin_r;
   const float c0 = swap ? sin_r : cos_r;
@@ -228,15 +218,14 @@ OPF_ALWAYS_INLINE float exp_nonpositive(float x) {
   const float k = shifted - kMagic;
   const float r = (clamped - k * 0.693359375f) + k * 2.12194440e-4f;
   const float z = r * r;
-  const float p =
-      (((((1.9875691500E-4f * r + 1.3981999507E-3f) * r + 8.3334519073E-3f) * r +
-         4.1665795894E-2f) *
-            r +
-        1.6666665459E-1f) *
-           r +
-       5.0000001201E-1f) *
-          z +
-      r + 1.0f;
+  const float p = (((((1.9875691500E-4f * r + 1.3981999507E-3f) * r + 8.3334519073E-3f) * r +
+                     4.1665795894E-2f) *
+                        r +
+                    1.6666665459E-1f) *
+                       r +
+                   5.0000001201E-1f) *
+                      z +
+                  r + 1.0f;
   const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(n + 127) << 23);
   return underflow ? 0.0f : (x != x ? x : p * scale);
 }
@@ -252,15 +241,15 @@ OPF_ALWAYS_INLINE float atan2_nonnegative_over_y(float y, float x) {
   const float num = steep ? -x : (middle ? y - x : y);
   float den = steep ? y : (middle ? y + x : x);
   den = den > 0.0f ? den : 1.0f;
-  const float base = steep ? static_cast<float>(kHalfPi) : (middle ? static_cast<float>(kQuarterPi) : 0.0f);
+  const float base =
+      steep ? static_cast<float>(kHalfPi) : (middle ? static_cast<float>(kQuarterPi) : 0.0f);
   const float u = num / den;
   const float z = u * u;
   // atan(u) = u series
-  const float series =
-      (((8.05374449538e-2f * z - 1.38776856032E-1f) * z + 1.99777106478E-1f) * z -
-       3.33329491539E-1f) *
-          z +
-      1.0f;
+  const float series = (((8.05374449538e-2f * z - 1.38776856032E-1f) * z + 1.99777106478E-1f) * z -
+                        3.33329491539E-1f) *
+                           z +
+                       1.0f;
   // Small ratio: u = y / x, so u series / y = series / x, finite as y -> 0.
   const float numerator = small ? series : base + u * series;
   float denominator = small ? x : y;

@@ -1,0 +1,243 @@
+#include "particles/particle_kernels.h"
+
+#include "core/so3.h"
+#include "particles/random.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <vector>
+
+namespace opf {
+namespace {
+
+// Random unit quaternions near `centre` with `spread` rad of tangent noise, as four rows.
+std::vector<float> quaternion_rows(std::size_t n, const Eigen::Quaterniond& centre, double spread,
+                                   Random& random) {
+  std::vector<float> q(4 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d e(random.normal(), random.normal(), random.normal());
+    const Eigen::Quaterniond v = centre * so3::exp(spread * e);
+    for (int r = 0; r < 4; ++r) q[r * n + i] = static_cast<float>(v.coeffs()[r]);
+  }
+  return q;
+}
+
+Eigen::Quaterniond column(const std::vector<float>& q, std::size_t n, std::size_t i) {
+  return Eigen::Quaterniond(q[3 * n + i], q[i], q[n + i], q[2 * n + i]);
+}
+
+// The textbook walk over the cumulative weights (the definition of systematic resampling).
+std::vector<std::size_t> reference_systematic(const std::vector<double>& w, double offset) {
+  const double total = std::accumulate(w.begin(), w.end(), 0.0);
+  std::vector<std::size_t> indices;
+  double cumulative = w[0] / total;
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < w.size(); ++k) {
+    const double u = (static_cast<double>(k) + offset) / static_cast<double>(w.size());
+    while (u >= cumulative && j + 1 < w.size()) cumulative += w[++j] / total;
+    indices.push_back(j);
+  }
+  return indices;
+}
+
+TEST(ParticleKernels, SystematicIndicesFollowTheCumulativeWeights) {
+  Random random(1);
+  for (std::size_t n : {2, 7, 100, 1001, 5000}) {
+    std::vector<double> w(n);
+    for (double& v : w) v = std::exp(-8.0 * random.uniform());  // spans three decades
+    const double offset = random.uniform();
+    std::vector<std::size_t> indices(n);
+    kernels::systematic_indices(w.data(), n, offset, n, indices.data());
+    const std::vector<std::size_t> expected = reference_systematic(w, offset);
+    // Both walks add the same weights in a different order; a slot may change particle only
+    // where a position falls within rounding of a boundary, which these draws never do.
+    EXPECT_EQ(indices, expected) << n;
+    std::vector<float> wf(w.begin(), w.end());
+    kernels::systematic_indices(wf.data(), n, offset, n, indices.data());
+    std::size_t differing = 0;
+    const std::vector<std::size_t> expected_f =
+        reference_systematic(std::vector<double>(wf.begin(), wf.end()), offset);
+    for (std::size_t k = 0; k < n; ++k) differing += indices[k] != expected_f[k];
+    EXPECT_EQ(differing, 0u) << n;
+  }
+}
+
+TEST(ParticleKernels, SystematicResamplingOfEqualWeightsKeepsEveryParticle) {
+  std::vector<double> w(1000, 3.0);
+  std::vector<std::size_t> indices(1000);
+  kernels::systematic_indices(w.data(), w.size(), 0.37, w.size(), indices.data());
+  for (std::size_t k = 0; k < indices.size(); ++k) EXPECT_EQ(indices[k], k);
+  // One particle with all the weight takes every slot.
+  std::vector<double> one(50, 0.0);
+  one[17] = 1.0;
+  kernels::systematic_indices(one.data(), one.size(), 0.5, 20, indices.data());
+  for (std::size_t k = 0; k < 20; ++k) EXPECT_EQ(indices[k], 17u);
+}
+
+TEST(ParticleKernels, PerturbQuaternionsIsTheTangentRandomWalk) {
+  Random random(2);
+  const std::size_t n = 1003;  // not a multiple of any vector width
+  const Eigen::Quaterniond centre = so3::exp(Eigen::Vector3d(0.3, -1.2, 2.0));
+  std::vector<float> q = quaternion_rows(n, centre, 0.3, random);
+  const std::vector<float> before = q;
+  std::vector<float> noise(3 * n);
+  for (float& v : noise) v = static_cast<float>(3.0 * random.normal());  // up to ~12 sigma
+  std::vector<double> sigma(n);
+  for (double& s : sigma) s = 0.5 * random.uniform();  // steps up to ~6 rad
+  kernels::perturb_quaternions(q.data(), n, noise.data(), 0.0, sigma.data());
+  double worst_angle = 0.0, worst_norm = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Vector3d step =
+        sigma[i] * Eigen::Vector3d(noise[i], noise[n + i], noise[2 * n + i]);
+    const Eigen::Quaterniond expected = column(before, n, i) * so3::exp(step);
+    worst_angle = std::max(worst_angle, so3::angle_between(column(q, n, i), expected));
+    worst_norm = std::max(worst_norm, std::abs(column(q, n, i).norm() - 1.0));
+  }
+  // Single precision: a few float epsilons (1.2e-7) of angle and of norm.
+  EXPECT_LT(worst_angle, 1e-6);
+  EXPECT_LT(worst_norm, 5e-7);
+}
+
+TEST(ParticleKernels, RotateQuaternionsTurnsEveryParticle) {
+  Random random(3);
+  const std::size_t n = 77;
+  std::vector<float> q = quaternion_rows(n, Eigen::Quaterniond::Identity(), 1.0, random);
+  const std::vector<float> before = q;
+  const Eigen::Quaterniond turn = so3::exp(Eigen::Vector3d(0.1, 0.7, -0.4));
+  kernels::rotate_quaternions(q.data(), n, {turn.x(), turn.y(), turn.z(), turn.w()});
+  for (std::size_t i = 0; i < n; ++i)
+    EXPECT_LT(so3::angle_between(column(q, n, i), turn * column(before, n, i)), 1e-6);
+}
+
+TEST(ParticleKernels, RotationExponentsAreMinusHalfSquaredAnglesOverVariance) {
+  Random random(4);
+  const std::size_t n = 1001;
+  const Eigen::Quaterniond z = so3::exp(Eigen::Vector3d(1.0, 0.5, -2.0));
+  // Angles from near 0 to near pi: every range of the arctangent.
+  const std::vector<float> q = quaternion_rows(n, z, 1.5, random);
+  const double variance = 0.0025, scale = -0.5 / variance;
+  std::vector<double> out(n, 1.0);
+  const double best = kernels::rotation_exponents(q.data(), n, {z.x(), z.y(), z.z(), z.w()}, scale,
+                                                  out.data(), true);
+  double expected_best = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = so3::angle_between(column(q, n, i), z);
+    const double expected = scale * angle * angle;
+    expected_best = std::max(expected_best, expected);
+    // float angles: relative 1e-6 of the exponent, or 1e-6 absolute near 0
+    EXPECT_NEAR(out[i], 1.0 + expected, 1e-6 * std::abs(expected) + 1e-6) << i;
+  }
+  EXPECT_NEAR(best, expected_best, 1e-6 * std::abs(expected_best) + 1e-6);
+}
+
+TEST(ParticleKernels, TranslationExponentsOverwriteOrAccumulate) {
+  const std::size_t n = 9;
+  std::vector<double> x(3 * n);
+  for (std::size_t i = 0; i < 3 * n; ++i) x[i] = 0.1 * static_cast<double>(i);
+  std::vector<double> out(n, 5.0);
+  const std::array<double, 3> z{0.2, 1.1, 2.0};
+  const double best = kernels::translation_exponents(x.data(), n, z, -2.0, out.data(), false);
+  double expected_best = -1e300;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d2 =
+        std::pow(x[i] - z[0], 2) + std::pow(x[n + i] - z[1], 2) + std::pow(x[2 * n + i] - z[2], 2);
+    EXPECT_NEAR(out[i], -2.0 * d2, 1e-14);
+    expected_best = std::max(expected_best, -2.0 * d2);
+  }
+  EXPECT_DOUBLE_EQ(best, expected_best);
+  const std::vector<double> first = out;
+  kernels::translation_exponents(x.data(), n, z, -2.0, out.data(), true);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(out[i], 2.0 * first[i], 1e-14);
+}
+
+TEST(ParticleKernels, NormalisationAndResamplingWeights) {
+  const std::size_t n = 1000;
+  std::vector<double> log_w(n), linear(n);
+  for (std::size_t i = 0; i < n; ++i) log_w[i] = -1000.0 - 0.01 * static_cast<double>(i);
+  std::vector<double> original = log_w;
+  std::vector<float> relative(n);
+  const kernels::NormalisedWeights fast =
+      kernels::resampling_weights(log_w.data(), relative.data(), n);
+  const kernels::NormalisedWeights exact =
+      kernels::normalise_log_weights(log_w.data(), linear.data(), n);
+  ASSERT_TRUE(exact.usable);
+  ASSERT_TRUE(fast.usable);
+  double sum = 0.0, sum_squares = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double w = std::exp(original[i] - original[0]);
+    sum += w;
+    sum_squares += w * w;
+    // The exponent is rounded to float first: relative error |x| 2^-24 plus the exp's own.
+    const double x = original[i] - original[0];
+    EXPECT_NEAR(relative[i], w, (std::abs(x) + 2.0) * 1.2e-7 * w);
+  }
+  const double ess = sum * sum / (static_cast<double>(n) * sum_squares);
+  EXPECT_NEAR(exact.ess_fraction, ess, 1e-14);
+  EXPECT_NEAR(fast.ess_fraction, ess, 1e-6);
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_NEAR(linear[i], std::exp(original[i] - original[0]) / sum, 1e-15);
+    EXPECT_NEAR(std::exp(log_w[i]), linear[i], 1e-15);
+  }
+  log_w.assign(n, -std::numeric_limits<double>::infinity());
+  EXPECT_FALSE(kernels::normalise_log_weights(log_w.data(), linear.data(), n).usable);
+  EXPECT_FALSE(kernels::resampling_weights(log_w.data(), relative.data(), n).usable);
+  log_w.assign(n, 0.0);
+  log_w[500] = std::nan("");
+  EXPECT_FALSE(kernels::normalise_log_weights(log_w.data(), linear.data(), n).usable);
+}
+
+TEST(ParticleKernels, GatherAndLargestIndex) {
+  const std::vector<double> in{0, 1, 2, 3, 10, 11, 12, 13};  // two rows of four
+  const std::vector<std::size_t> indices{3, 3, 0, 2, 1};
+  std::vector<double> out(10);
+  kernels::gather_rows(in.data(), 4, 2, indices.data(), indices.size(), out.data());
+  EXPECT_EQ(out, (std::vector<double>{3, 3, 0, 2, 1, 13, 13, 10, 12, 11}));
+  std::vector<std::size_t> many(1003, 4);
+  many[777] = 901;
+  EXPECT_EQ(kernels::largest_index(many.data(), many.size()), 901u);
+}
+
+TEST(ParticleKernels, MomentSumsMatchDirectSums) {
+  Random random(5);
+  const std::size_t n = 513;
+  std::vector<double> x(3 * n), w(n);
+  for (double& v : x) v = 1000.0 + random.normal();  // far from the origin
+  for (double& v : w) v = random.uniform();
+  const std::array<double, 3> ref{x[0], x[n], x[2 * n]};
+  const kernels::TranslationSums s = kernels::translation_sums(x.data(), n, w.data(), ref);
+  double sw = 0, sx = 0, sxy = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sw += w[i];
+    sx += w[i] * (x[i] - ref[0]);
+    sxy += w[i] * (x[i] - ref[0]) * (x[n + i] - ref[1]);
+  }
+  EXPECT_NEAR(s.weight, sw, 1e-12);
+  EXPECT_NEAR(s.first[0], sx, 1e-11);
+  EXPECT_NEAR(s.second[1], sxy, 1e-11);
+
+  const Eigen::Quaterniond mean = so3::exp(Eigen::Vector3d(0.2, 0.1, -0.5));
+  const std::vector<float> q = quaternion_rows(n, mean, 0.2, random);
+  const std::array<double, 10> m = kernels::quaternion_second_moment(q.data(), n, w.data());
+  const std::array<double, 6> t = kernels::tangent_second_moment(
+      q.data(), n, nullptr, {-mean.x(), -mean.y(), -mean.z(), mean.w()});
+  double mxw = 0, tzz = 0, txy = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Quaterniond qi = column(q, n, i);
+    mxw += w[i] * qi.x() * qi.w();
+    const Eigen::Vector3d d = so3::log(mean.conjugate() * qi);
+    tzz += d.z() * d.z();
+    txy += d.x() * d.y();
+  }
+  EXPECT_NEAR(m[3], mxw, 1e-12);
+  // Single precision tangent vectors: 1e-6 relative.
+  EXPECT_NEAR(t[5], tzz, 1e-6 * tzz);
+  EXPECT_NEAR(t[1], txy, 1e-6 * tzz);
+}
+
+}  // namespace
+}  // namespace opf

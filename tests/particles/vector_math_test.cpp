@@ -1,0 +1,108 @@
+#include "particles/vector_math.h"
+
+#include "particles/random.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace opf {
+namespace {
+
+constexpr int kDraws = 200000;
+constexpr double kUlp = std::numeric_limits<double>::epsilon();  // 2.2e-16
+constexpr double kUlpF = std::numeric_limits<float>::epsilon();  // 1.2e-7
+
+// Bounds are two units in the last place of the result type (Cephes' own figure is about one),
+// except where a reduction step adds its own rounding (stated per test).
+
+TEST(VectorMath, ExpNonPositiveMatchesLibmToTwoUlp) {
+  Random random(1);
+  double worst = 0.0;
+  for (int i = 0; i < kDraws; ++i) {
+    const double x = i % 2 ? -708.0 * random.uniform() : -random.uniform();
+    worst = std::max(worst, std::abs(vmath::exp_nonpositive(x) / std::exp(x) - 1.0));
+  }
+  EXPECT_LT(worst, 2 * kUlp);
+  EXPECT_EQ(vmath::exp_nonpositive(0.0), 1.0);
+  EXPECT_EQ(vmath::exp_nonpositive(-708.5), 0.0);  // would be subnormal
+  EXPECT_EQ(vmath::exp_nonpositive(-std::numeric_limits<double>::infinity()), 0.0);
+  EXPECT_TRUE(std::isnan(vmath::exp_nonpositive(std::nan(""))));
+}
+
+TEST(VectorMath, Atan2NonNegativeMatchesLibmOverEveryRange) {
+  Random random(2);
+  double worst = 0.0, worst_over_y = 0.0;
+  for (int i = 0; i < kDraws; ++i) {
+    // Ratios from 1e-7 to 1e7 reach each of the three reduction ranges.
+    const double y = std::pow(10.0, 14.0 * random.uniform() - 7.0), x = random.uniform() + 1e-3;
+    const double reference = std::atan2(y, x);
+    worst = std::max(worst, std::abs(vmath::atan2_nonnegative(y, x) / reference - 1.0));
+    worst_over_y = std::max(worst_over_y,
+                            std::abs(vmath::atan2_nonnegative_over_y(y, x) * y / reference - 1.0));
+  }
+  EXPECT_LT(worst, 2 * kUlp);
+  EXPECT_LT(worst_over_y, 5 * kUlp);  // one more division and product
+  EXPECT_EQ(vmath::atan2_nonnegative(0.0, 0.0), 0.0);
+  EXPECT_NEAR(vmath::atan2_nonnegative(1.0, 0.0), M_PI / 2, kUlp);
+  // The limit at y = 0 is 1 / x.
+  EXPECT_DOUBLE_EQ(vmath::atan2_nonnegative_over_y(0.0, 0.5), 2.0);
+}
+
+TEST(VectorMath, SinCosMatchLibm) {
+  Random random(3);
+  double worst = 0.0;
+  float worst_float = 0.0f;
+  for (int i = 0; i < kDraws; ++i) {
+    const double x = 200.0 * (random.uniform() - 0.5);
+    double s, c;
+    vmath::sincos(x, s, c);
+    worst = std::max({worst, std::abs(s - std::sin(x)), std::abs(c - std::cos(x))});
+    const auto xf = static_cast<float>(x);
+    float sf, cf;
+    vmath::sincos(xf, sf, cf);
+    worst_float = std::max({worst_float, static_cast<float>(std::abs(sf - std::sin(double(xf)))),
+                            static_cast<float>(std::abs(cf - std::cos(double(xf))))});
+  }
+  EXPECT_LT(worst, 2 * kUlp);
+  EXPECT_LT(worst_float, 2 * kUlpF);
+}
+
+TEST(VectorMath, SinglePrecisionLogExpAndArctangent) {
+  Random random(4);
+  double worst_log = 0.0, worst_exp = 0.0, worst_atan = 0.0;
+  for (int i = 0; i < kDraws; ++i) {
+    const auto u = static_cast<float>((random.next() >> 40) + 1) * 0x1.0p-24f;  // (0, 1]
+    if (u != 1.0f)
+      worst_log = std::max(worst_log, std::abs(vmath::log_positive(u) / std::log(double(u)) - 1.0));
+    const auto x = static_cast<float>(-87.0 * random.uniform());
+    worst_exp =
+        std::max(worst_exp, std::abs(vmath::exp_nonpositive(x) / std::exp(double(x)) - 1.0));
+    const auto y = static_cast<float>(std::pow(10.0, 10.0 * random.uniform() - 5.0));
+    const auto w = static_cast<float>(random.uniform() + 1e-3);
+    const double reference = std::atan2(double(y), double(w));
+    worst_atan =
+        std::max(worst_atan, std::abs(vmath::atan2_nonnegative_over_y(y, w) * y / reference - 1.0));
+  }
+  EXPECT_LT(worst_log, 2 * kUlpF);
+  EXPECT_LT(worst_exp, 2 * kUlpF);
+  EXPECT_LT(worst_atan, 4 * kUlpF);  // reduction, polynomial and the final division
+  EXPECT_EQ(vmath::exp_nonpositive(-88.0f), 0.0f);
+  EXPECT_EQ(vmath::log_positive(1.0f), 0.0f);
+}
+
+TEST(VectorMath, ReducedSinCosIsAccurateOnItsInterval) {
+  float worst = 0.0f;
+  for (int i = -1000; i <= 1000; ++i) {
+    const float x = static_cast<float>(M_PI / 4) * static_cast<float>(i) / 1000.0f;
+    float s, c;
+    vmath::sincos_reduced(x, s, c);
+    worst = std::max({worst, static_cast<float>(std::abs(s - std::sin(double(x)))),
+                      static_cast<float>(std::abs(c - std::cos(double(x))))});
+  }
+  EXPECT_LT(worst, 2 * kUlpF);
+}
+
+}  // namespace
+}  // namespace opf
