@@ -2,6 +2,9 @@
 
 #include "estimators/estimator_settings_yaml.h"
 
+#include <algorithm>
+#include <thread>
+
 namespace opf::cli {
 
 std::vector<OptionSpec> estimator_option_specs() {
@@ -9,6 +12,9 @@ std::vector<OptionSpec> estimator_option_specs() {
       {"config", "FILE.yaml", "estimator options (see experiments/configs/estimators.yaml)"},
       {"particles", "N", "particles per portion (translation and rotation); default 5000"},
       {"seed", "S", "seed of every random draw; the same seed gives identical output (default 1)"},
+      {"threads", "N",
+       "threads that step the objects of a frame (default: the machine's cores); the output is "
+       "the same for any N"},
   };
 }
 
@@ -20,6 +26,14 @@ EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& 
     settings.pf.translation_particles = settings.pf.rotation_particles = *particles;
   }
   return settings;
+}
+
+std::size_t threads_from(const Arguments& args) {
+  if (const auto threads = args.get_count("threads")) {
+    if (*threads == 0) throw UsageError{"option '--threads' must be at least 1"};
+    return *threads;
+  }
+  return std::max(1u, std::thread::hardware_concurrency());
 }
 
 std::uint64_t seed_from(const Arguments& args) {

@@ -47,9 +47,9 @@ TruthTable truth_table(const MeasurementLog& truth) {
 }
 
 RunErrors run_once(const MeasurementLog& log, const TruthTable& truth, const std::string& name,
-                   const EstimatorSettings& settings, std::uint64_t seed,
+                   const EstimatorSettings& settings, std::uint64_t seed, std::size_t threads,
                    const std::string& truth_path) {
-  Tracker tracker(make_estimator_factory(name, settings), seed);
+  Tracker tracker(make_estimator_factory(name, settings), seed, threads);
   ErrorAccumulator errors;
   for (const Frame& frame : log.frames) {
     for (const Estimate& estimate : tracker.step(frame)) {
@@ -90,6 +90,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   const EstimatorSettings settings = settings_from(args);
   const std::uint64_t base_seed = seed_from(args);
+  const std::size_t threads = threads_from(args);
 
   const MeasurementLog log = read_measurement_log(in);
   const TruthTable truth = truth_table(read_measurement_log(truth_path));
@@ -103,7 +104,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
     std::vector<double> translation, paper, geodesic, unobserved;
     for (std::size_t k = 0; k < seeds; ++k) {
       const RunErrors r =
-          run_once(log, truth, name, settings, derive_seed(base_seed, k), truth_path);
+          run_once(log, truth, name, settings, derive_seed(base_seed, k), threads, truth_path);
       translation.push_back(r.translation);
       paper.push_back(r.rotation_paper);
       geodesic.push_back(r.rotation_geodesic);

@@ -37,6 +37,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   settings_from(args);  // a bad --config fails before any rendering
   const std::uint64_t seed = seed_from(args);
+  const std::size_t threads = threads_from(args);
 
   std::vector<experiments::ExperimentResults> all;
   std::vector<std::filesystem::path> figures;
@@ -50,14 +51,15 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
         args, config.estimator_config.empty() ? EstimatorSettings{}
                                               : load_estimator_settings(config.estimator_config));
     if (config.closed_loop) {
-      all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress));
+      all.push_back(
+          experiments::run_closed_loop(config, names, settings, seeds, seed, progress, threads));
       for (auto& figure : experiments::write_figures(out, config, {}, all.back()))
         figures.push_back(std::move(figure));
       continue;
     }
     const experiments::Observation observation = experiments::observe_experiment(config, progress);
-    all.push_back(
-        experiments::run_open_loop(config, observation, names, settings, seeds, seed, progress));
+    all.push_back(experiments::run_open_loop(config, observation, names, settings, seeds, seed,
+                                             progress, threads));
     for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
       figures.push_back(std::move(figure));
   }

@@ -48,7 +48,7 @@ int track_command(const std::vector<std::string>& raw) {
   const EstimatorSettings settings = settings_from(args);
 
   const MeasurementLog log = read_measurement_log(in);
-  Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args));
+  Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args), threads_from(args));
   std::size_t rows = 0;
   write_file_atomically(out, [&](std::ostream& os) {
     write_estimate_header(os);

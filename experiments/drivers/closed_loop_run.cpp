@@ -25,7 +25,8 @@ const sim::Body& body_named(const sim::ScriptedScene& scene, const std::string& 
 ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
                                   const std::vector<std::string>& estimators,
                                   const EstimatorSettings& settings, std::size_t seeds,
-                                  std::uint64_t base_seed, const Progress& progress) {
+                                  std::uint64_t base_seed, const Progress& progress,
+                                  std::size_t threads) {
   if (!config.closed_loop)
     throw std::invalid_argument("run_closed_loop: not a closed-loop experiment");
   const sim::ClosedLoopSettings& loop = *config.closed_loop;
@@ -48,7 +49,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
       Eigen::Vector3d robot_velocity = Eigen::Vector3d::Zero();
 
       Random noise = measurement_noise(seed);
-      Tracker tracker(make_estimator_factory(name, settings), seed);
+      Tracker tracker(make_estimator_factory(name, settings), seed, threads);
       ErrorAccumulator errors;
       DropOutcome drop;
       Eigen::Vector3d release_position = Eigen::Vector3d::Zero();

@@ -13,6 +13,7 @@ namespace opf::experiments {
 ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
                                   const std::vector<std::string>& estimators,
                                   const EstimatorSettings& settings, std::size_t seeds,
-                                  std::uint64_t base_seed, const Progress& progress = {});
+                                  std::uint64_t base_seed, const Progress& progress = {},
+                                  std::size_t threads = 1);
 
 }  // namespace opf::experiments

@@ -24,7 +24,8 @@ void report_progress(const Progress& progress, const sim::ExperimentConfig& conf
 ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Observation& observation,
                                 const std::vector<std::string>& estimators,
                                 const EstimatorSettings& settings, std::size_t seeds,
-                                std::uint64_t base_seed, const Progress& progress) {
+                                std::uint64_t base_seed, const Progress& progress,
+                                std::size_t threads) {
   if (observation.truth.size() != observation.camera.size())
     throw std::invalid_argument("run_open_loop: truth and camera frames differ in number");
   ExperimentResults results{config.name, estimators, seeds, {}, {}, {}};
@@ -40,7 +41,7 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
 
     for (const std::string& name : estimators) {
       report_progress(progress, config, name, s, seeds);
-      Tracker tracker(make_estimator_factory(name, settings), seed);
+      Tracker tracker(make_estimator_factory(name, settings), seed, threads);
       ErrorAccumulator errors;
       for (std::size_t k = 0; k < frames.size(); ++k) {
         const sim::SceneSnapshot& truth = observation.truth[k];

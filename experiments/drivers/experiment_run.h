@@ -74,6 +74,7 @@ void report_progress(const Progress& progress, const sim::ExperimentConfig& conf
 ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Observation& observation,
                                 const std::vector<std::string>& estimators,
                                 const EstimatorSettings& settings, std::size_t seeds,
-                                std::uint64_t base_seed, const Progress& progress = {});
+                                std::uint64_t base_seed, const Progress& progress = {},
+                                std::size_t threads = 1);
 
 }  // namespace opf::experiments

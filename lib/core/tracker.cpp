@@ -8,8 +8,8 @@
 
 namespace opf {
 
-Tracker::Tracker(EstimatorFactory factory, std::uint64_t seed)
-    : factory_(std::move(factory)), seed_(seed) {
+Tracker::Tracker(EstimatorFactory factory, std::uint64_t seed, std::size_t threads)
+    : factory_(std::move(factory)), seed_(seed), pool_(std::make_unique<WorkerPool>(threads)) {
   if (!factory_) throw std::invalid_argument("Tracker: no estimator factory");
 }
 
@@ -26,10 +26,10 @@ const std::vector<Estimate>& Tracker::step(const Frame& frame) {
   // Every estimator sees the same, previous-frame picture of the others, whatever the order.
   const std::vector<Estimate> previous = estimates_;
   const EnsembleView view{frame, previous};
-  for (std::size_t i = 0; i < objects_.size(); ++i) {
+  pool_->for_each(objects_.size(), [&](std::size_t i) {
     const Detection* detection = frame.find(objects_[i]);
     estimates_[i] = estimators_[i]->step(frame.t, detection ? &detection->pose : nullptr, view);
-  }
+  });
   for (const Detection& detection : frame.detections) {
     if (std::find(objects_.begin(), objects_.end(), detection.object) != objects_.end()) continue;
     const std::uint64_t object_seed = derive_seed(seed_, objects_.size());

@@ -1,10 +1,13 @@
 #pragma once
 // The Tracker: one estimator per object, created at the object's first detection, stepped frame by
-// frame. Objects are kept in order of first appearance, which makes runs deterministic.
+// frame. Objects are kept in order of first appearance, which makes runs deterministic. The
+// estimators of one frame run in parallel over a worker pool: each sees only the previous frame's
+// estimates of the others, so the results are the same for any number of threads.
 
 #include "core/estimate.h"
 #include "core/estimator.h"
 #include "core/frame.h"
+#include "core/worker_pool.h"
 
 #include <cstdint>
 #include <functional>
@@ -20,7 +23,8 @@ using EstimatorFactory =
 
 class Tracker {
  public:
-  Tracker(EstimatorFactory factory, std::uint64_t seed);
+  /// `threads` >= 1 threads step the objects of a frame (1: all on the caller's thread).
+  Tracker(EstimatorFactory factory, std::uint64_t seed, std::size_t threads = 1);
 
   /// Steps every known object through `frame` (timestamps must increase) and returns one estimate
   /// per object seen so far, in order of first appearance.
@@ -40,6 +44,7 @@ class Tracker {
   std::vector<Estimate> hypotheses_;
   bool has_stepped_ = false;
   double last_t_ = 0.0;
+  std::unique_ptr<WorkerPool> pool_;
 };
 
 }  // namespace opf

@@ -71,65 +71,89 @@ OPF_ALWAYS_INLINE void perturb(float* __restrict q, std::size_t n, const float* 
   }
 }
 
+// Sums over particles run in fixed lanes: particle i adds to lane i mod W (W = one 512-bit
+// vector), and the lanes are added up in a fixed order at the end. Unlike `omp simd reduction`,
+// whose partial sums follow the vector width and the array's alignment, the result is then the
+// same whatever the CPU, the heap address or the thread. `terms(i, l, lanes)` adds particle i's
+// terms to lanes[k][l].
+template <class T, int K>
+struct LaneSums {
+  static constexpr std::size_t kWidth = 64 / sizeof(T);
+  alignas(64) T lanes[K][kWidth] = {};
+
+  std::array<double, K> totals() const {
+    std::array<double, K> total{};
+    for (int k = 0; k < K; ++k)
+      for (std::size_t l = 0; l < kWidth; ++l) total[k] += static_cast<double>(lanes[k][l]);
+    return total;
+  }
+};
+
+template <class T, int K, class Terms>
+OPF_ALWAYS_INLINE std::array<double, K> sum_in_lanes(std::size_t n, const Terms& terms) {
+  LaneSums<T, K> sums;
+  constexpr std::size_t kWidth = LaneSums<T, K>::kWidth;
+  std::size_t i = 0;
+  for (; i + kWidth <= n; i += kWidth) {
+#pragma omp simd
+    for (std::size_t l = 0; l < kWidth; ++l) terms(i + l, l, sums.lanes);
+  }
+  for (std::size_t l = 0; i < n; ++i, ++l) terms(i, l, sums.lanes);
+  return sums.totals();
+}
+
 template <bool kWeighted>
 OPF_ALWAYS_INLINE TranslationSums sums(const double* __restrict x, std::size_t n,
                                        const double* __restrict w,
                                        const std::array<double, 3> reference) {
   const double rx = reference[0], ry = reference[1], rz = reference[2];
-  double sw = 0, sx = 0, sy = 0, sz = 0, xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
-#pragma omp simd reduction(+ : sw, sx, sy, sz, xx, xy, xz, yy, yz, zz)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double wi = kWeighted ? w[i] : 1.0;
-    const double dx = x[i] - rx, dy = x[n + i] - ry, dz = x[2 * n + i] - rz;
-    sw += wi;
-    sx += wi * dx;
-    sy += wi * dy;
-    sz += wi * dz;
-    xx += wi * dx * dx;
-    xy += wi * dx * dy;
-    xz += wi * dx * dz;
-    yy += wi * dy * dy;
-    yz += wi * dy * dz;
-    zz += wi * dz * dz;
-  }
-  return {sw, {sx, sy, sz}, {xx, xy, xz, yy, yz, zz}};
+  const std::array<double, 10> s =
+      sum_in_lanes<double, 10>(n, [=](std::size_t i, std::size_t l, double(&a)[10][8]) {
+        const double wi = kWeighted ? w[i] : 1.0;
+        const double dx = x[i] - rx, dy = x[n + i] - ry, dz = x[2 * n + i] - rz;
+        a[0][l] += wi;
+        a[1][l] += wi * dx;
+        a[2][l] += wi * dy;
+        a[3][l] += wi * dz;
+        a[4][l] += wi * dx * dx;
+        a[5][l] += wi * dx * dy;
+        a[6][l] += wi * dx * dz;
+        a[7][l] += wi * dy * dy;
+        a[8][l] += wi * dy * dz;
+        a[9][l] += wi * dz * dz;
+      });
+  return {s[0], {s[1], s[2], s[3]}, {s[4], s[5], s[6], s[7], s[8], s[9]}};
 }
 
 template <bool kWeighted>
 OPF_ALWAYS_INLINE std::array<double, 10> markley(const float* __restrict q, std::size_t n,
                                                  const double* __restrict w) {
-  double xx = 0, xy = 0, xz = 0, xw = 0, yy = 0, yz = 0, yw = 0, zz = 0, zw = 0, ww = 0;
-#pragma omp simd reduction(+ : xx, xy, xz, xw, yy, yz, yw, zz, zw, ww)
-  for (std::size_t i = 0; i < n; ++i) {
+  return sum_in_lanes<double, 10>(n, [=](std::size_t i, std::size_t l, double(&a)[10][8]) {
     const double wi = kWeighted ? w[i] : 1.0;
     const double vx = q[i], vy = q[n + i], vz = q[2 * n + i], vw = q[3 * n + i];
     const double wx = wi * vx, wy = wi * vy, wz = wi * vz;
-    xx += wx * vx;
-    xy += wx * vy;
-    xz += wx * vz;
-    xw += wx * vw;
-    yy += wy * vy;
-    yz += wy * vz;
-    yw += wy * vw;
-    zz += wz * vz;
-    zw += wz * vw;
-    ww += wi * vw * vw;
-  }
-  return {xx, xy, xz, xw, yy, yz, yw, zz, zw, ww};
+    a[0][l] += wx * vx;
+    a[1][l] += wx * vy;
+    a[2][l] += wx * vz;
+    a[3][l] += wx * vw;
+    a[4][l] += wy * vy;
+    a[5][l] += wy * vz;
+    a[6][l] += wy * vw;
+    a[7][l] += wz * vz;
+    a[8][l] += wz * vw;
+    a[9][l] += wi * vw * vw;
+  });
 }
 
-// Sums of the tangent outer products. Single precision throughout (sixteen lanes); the sums
-// are split over the simd lanes, each adding n/16 terms, so their rounding stays near 1e-6
-// relative for the counts we use.
+// Sums of the tangent outer products in single precision (sixteen lanes, each adding n/16
+// terms: rounding near 1e-6 relative for the counts we use).
 template <bool kWeighted>
 OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::size_t n,
                                                 const double* __restrict w, const Quat inverse) {
   // The invariants are copied to plain locals: GCC 12 does not vectorise this loop for AVX-512
   // when they are read through a reference.
   const float ix = inverse.x, iy = inverse.y, iz = inverse.z, iw = inverse.w;
-  float xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;
-#pragma omp simd reduction(+ : xx, xy, xz, yy, yz, zz)
-  for (std::size_t i = 0; i < n; ++i) {
+  return sum_in_lanes<float, 6>(n, [=](std::size_t i, std::size_t l, float(&a)[6][16]) {
     const float wi = kWeighted ? static_cast<float>(w[i]) : 1.0f;
     const Quat r = multiply({ix, iy, iz, iw}, load(q, n, i));
     // log on the hemisphere w >= 0: d = 2 atan2(|v|, w) v / |v|, -> 2 v / w as |v| -> 0.
@@ -138,14 +162,13 @@ OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::
     const float norm = std::sqrt(vx * vx + vy * vy + vz * vz);
     const float factor = 2.0f * vmath::atan2_nonnegative_over_y(norm, rw);
     const float dx = factor * vx, dy = factor * vy, dz = factor * vz;
-    xx += wi * dx * dx;
-    xy += wi * dx * dy;
-    xz += wi * dx * dz;
-    yy += wi * dy * dy;
-    yz += wi * dy * dz;
-    zz += wi * dz * dz;
-  }
-  return {xx, xy, xz, yy, yz, zz};
+    a[0][l] += wi * dx * dx;
+    a[1][l] += wi * dx * dy;
+    a[2][l] += wi * dx * dz;
+    a[3][l] += wi * dy * dy;
+    a[4][l] += wi * dy * dz;
+    a[5][l] += wi * dz * dz;
+  });
 }
 
 // Maximum reductions run in eight explicit lanes: GCC 12 leaves `omp simd reduction(max)` over
@@ -247,9 +270,9 @@ OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double o
   double* __restrict c = cumulative.data();
   double start[kLanes] = {};
   for (std::size_t s = 0; s + 1 < kLanes; ++s) {
-    double total = 0.0;
-#pragma omp simd reduction(+ : total)
-    for (std::size_t j = 0; j < length; ++j) total += c[s * length + j];
+    const double* segment = c + s * length;
+    const double total = sum_in_lanes<double, 1>(
+        length, [=](std::size_t j, std::size_t l, double(&a)[1][8]) { a[0][l] += segment[j]; })[0];
     start[s + 1] = start[s] + total;
   }
   for (std::size_t j = 0; j < length; ++j) {
@@ -343,14 +366,14 @@ OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
   bool nan = false;
   const double top = max_value(log_w, n, nan);
   if (nan || !std::isfinite(top)) return {false, 0.0};
-  double sum = 0.0, sum_squares = 0.0;
-#pragma omp simd reduction(+ : sum, sum_squares)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double w = vmath::exp_nonpositive(log_w[i] - top);
-    linear[i] = w;
-    sum += w;
-    sum_squares += w * w;
-  }
+  const std::array<double, 2> sums =
+      sum_in_lanes<double, 2>(n, [=](std::size_t i, std::size_t l, double(&a)[2][8]) {
+        const double w = vmath::exp_nonpositive(log_w[i] - top);
+        linear[i] = w;
+        a[0][l] += w;
+        a[1][l] += w * w;
+      });
+  const double sum = sums[0], sum_squares = sums[1];
   // Shift by the max first, then by the log-sum of the (small) shifted values: full precision.
   const double shift = top + std::log(sum);
   const double inverse_sum = 1.0 / sum;
@@ -368,28 +391,24 @@ OPF_KERNEL NormalisedWeights resampling_weights(const double* __restrict log_w,
   bool nan = false;
   const double top = max_value(log_w, n, nan);
   if (nan || !std::isfinite(top)) return {false, 0.0};
-  float sum = 0.0f, sum_squares = 0.0f;
-#pragma omp simd reduction(+ : sum, sum_squares)
-  for (std::size_t i = 0; i < n; ++i) {
-    const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
-    linear[i] = w;
-    sum += w;
-    sum_squares += w * w;
-  }
-  return {true, static_cast<double>(sum) * sum / (static_cast<double>(n) * sum_squares)};
+  const std::array<double, 2> sums =
+      sum_in_lanes<float, 2>(n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) {
+        const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
+        linear[i] = w;
+        a[0][l] += w;
+        a[1][l] += w * w;
+      });
+  return {true, sums[0] * sums[0] / (static_cast<double>(n) * sums[1])};
 }
 
 OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __restrict linear,
                                    std::size_t n) {
   bool nan = false;
   const double top = max_value(log_w, n, nan);
-  double sum = 0.0;
-#pragma omp simd reduction(+ : sum)
-  for (std::size_t i = 0; i < n; ++i) {
+  return sum_in_lanes<double, 1>(n, [=](std::size_t i, std::size_t l, double(&a)[1][8]) {
     linear[i] = vmath::exp_nonpositive(log_w[i] - top);
-    sum += linear[i];
-  }
-  return sum;
+    a[0][l] += linear[i];
+  })[0];
 }
 
 OPF_KERNEL void systematic_indices(const double* w, std::size_t n, double offset, std::size_t count,
