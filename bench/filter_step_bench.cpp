@@ -1,14 +1,20 @@
-// One full filter step per estimator (predict, measurement update, normalise, resample) over
-// particle counts, reported as particles per second so the cost curve over N is visible.
+// One full filter step per estimator (predict, measurement or OP update, normalise, resample,
+// estimate) over particle counts 100 ... 100 000 per portion, reported as particles per second
+// (both portions: 2N per step) so the cost curve over N is visible; the OPF's step while the
+// object is hidden (carried along its fitted trajectory under the inflated Q~); and the CV
+// Kalman filter, which has no particles.
 
 #include "core/pose_conversion.h"
 #include "core/so3.h"
 #include "estimators/cv_kalman.h"
 #include "estimators/object_permanence_filter.h"
-#include "estimators/standard_pf.h"
+#include "estimators/registry.h"
 #include "particles/random.h"
 
 #include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -35,26 +41,36 @@ const EnsembleView& empty_ensemble() {
   return view;
 }
 
-void BM_StandardPfStep(benchmark::State& state) {
-  PoseParticleFilterOptions options;
-  options.translation_particles = options.rotation_particles = std::size_t(state.range(0));
-  StandardParticleFilter pf(options, 7);
+EstimatorSettings with_particles(std::size_t n) {
+  EstimatorSettings settings;
+  settings.pf.translation_particles = settings.pf.rotation_particles = n;
+  return settings;
+}
+
+// A step with a measurement, through the registry as `opf track` builds it.
+void BM_EstimatorStep(benchmark::State& state, const std::string& name) {
+  const auto n = static_cast<std::size_t>(state.range(0));
+  const std::unique_ptr<Estimator> estimator =
+      make_estimator_factory(name, with_particles(n))("object", 7);
   const auto stream = measurements(256);
-  pf.initialise(0.0, stream[0]);
+  estimator->initialise(0.0, stream[0]);
   std::size_t k = 1;
   double t = 0.0;
   for (auto _ : state) {
     t += kDt;
-    benchmark::DoNotOptimize(pf.step(t, &stream[k++ % stream.size()], empty_ensemble()));
+    benchmark::DoNotOptimize(estimator->step(t, &stream[k++ % stream.size()], empty_ensemble()));
   }
-  // Both portions: 2N particles per step.
   state.SetItemsProcessed(state.iterations() * 2 * state.range(0));
 }
-BENCHMARK(BM_StandardPfStep)
-    ->RangeMultiplier(10)
-    ->Range(100, 100000)
-    ->Arg(5000)
-    ->Unit(benchmark::kMicrosecond);
+
+void particle_counts(benchmark::internal::Benchmark* b) {
+  b->ArgName("n")->RangeMultiplier(10)->Range(100, 100000)->Arg(3000)->Arg(5000)->Arg(30000);
+  b->Unit(benchmark::kMicrosecond);
+}
+
+BENCHMARK_CAPTURE(BM_EstimatorStep, opf, std::string("opf"))->Apply(particle_counts);
+BENCHMARK_CAPTURE(BM_EstimatorStep, pf, std::string("pf"))->Apply(particle_counts);
+BENCHMARK_CAPTURE(BM_EstimatorStep, oapf, std::string("oapf"))->Apply(particle_counts);
 
 // An OPF step while the object is hidden: predict, carry along the fitted trajectory, update
 // with the virtual measurement under the inflated Q~, resample. The fit itself happens once at
@@ -71,7 +87,7 @@ void BM_OpfHiddenStep(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(opf.step(t += kDt, nullptr, empty_ensemble()));
   state.SetItemsProcessed(state.iterations() * 2 * state.range(0));
 }
-BENCHMARK(BM_OpfHiddenStep)->Arg(1000)->Arg(5000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_OpfHiddenStep)->Apply(particle_counts);
 
 void BM_CvKalmanStep(benchmark::State& state) {
   ConstantVelocityKalman kf(CvKalmanOptions{});

@@ -80,10 +80,4 @@ void GaussianSampler::fill(std::span<float> out) {
   std::memcpy(out.data() + whole * kBlock, tail, rest * sizeof(float));
 }
 
-std::span<const float> GaussianSampler::draw(std::size_t count) {
-  buffer_.resize(count);
-  fill(buffer_);
-  return buffer_;
-}
-
 }  // namespace opf

@@ -9,7 +9,6 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <vector>
 
 namespace opf {
 
@@ -25,14 +24,9 @@ class GaussianSampler {
   /// so the values depend on the lengths requested, not only on the count in total.
   void fill(std::span<float> out);
 
-  /// `count` fresh samples in a buffer the sampler owns (valid until the next draw), so a filter
-  /// step allocates nothing.
-  std::span<const float> draw(std::size_t count);
-
  private:
   // s_[word][lane]: xoshiro256++ state, lane-minor so the eight lanes sit in one vector.
   alignas(64) std::array<std::array<std::uint64_t, kLanes>, 4> s_;
-  std::vector<float> buffer_;
 };
 
 }  // namespace opf

@@ -11,6 +11,7 @@ bool LogWeights::normalise() {
 }
 
 kernels::NormalisedWeights LogWeights::normalise(Eigen::VectorXd& linear) {
+  materialise();
   linear.resize(log_w_.size());
   const kernels::NormalisedWeights result =
       kernels::normalise_log_weights(log_w_.data(), linear.data(), size());
@@ -22,13 +23,16 @@ kernels::NormalisedWeights LogWeights::normalise(Eigen::VectorXd& linear) {
 }
 
 Eigen::VectorXd LogWeights::linear() const {
+  materialise();
   Eigen::VectorXd w(log_w_.size());
   const double sum = kernels::relative_weights(log_w_.data(), w.data(), size());
   return w / sum;
 }
 
 double LogWeights::effective_sample_fraction() const {
-  if (log_w_.size() == 0) return 0.0;
+  if (size_ == 0) return 0.0;
+  if (uniform_) return 1.0;
+  materialise();
   // Relative to the largest weight, so the ratio is computed without underflow.
   Eigen::VectorXd w(log_w_.size());
   const double sum = kernels::relative_weights(log_w_.data(), w.data(), size());
@@ -36,8 +40,14 @@ double LogWeights::effective_sample_fraction() const {
 }
 
 void LogWeights::reset() {
-  log_w_.setConstant(-std::log(static_cast<double>(std::max<Eigen::Index>(log_w_.size(), 1))));
+  log_w_ = Eigen::VectorXd();
   uniform_ = true;
+}
+
+void LogWeights::materialise() const {
+  if (static_cast<std::size_t>(log_w_.size()) == size_) return;
+  log_w_.setConstant(Eigen::Index(size_),
+                     -std::log(static_cast<double>(std::max<std::size_t>(size_, 1))));
 }
 
 }  // namespace opf

@@ -13,12 +13,17 @@ namespace opf {
 class LogWeights {
  public:
   /// `count` uniform weights.
-  explicit LogWeights(std::size_t count = 0) : log_w_(Eigen::Index(count)) { reset(); }
+  explicit LogWeights(std::size_t count = 0) : size_(count) {}
 
-  std::size_t size() const { return static_cast<std::size_t>(log_w_.size()); }
-  const Eigen::VectorXd& log() const { return log_w_; }
+  std::size_t size() const { return size_; }
+  /// The log-weights; uniform ones (-log N each) are written out on first access.
+  const Eigen::VectorXd& log() const {
+    materialise();
+    return log_w_;
+  }
   /// Write access; the weights are no longer known to be uniform.
   Eigen::VectorXd& log() {
+    materialise();
     uniform_ = false;
     return log_w_;
   }
@@ -41,14 +46,19 @@ class LogWeights {
   /// Normalised effective sample size (sum w)^2 / (N sum w^2), in (0, 1]; MRPT's convention.
   double effective_sample_fraction() const;
 
-  /// Uniform weights (log w = -log N, so they already sum to one).
+  /// Uniform weights (log w = -log N, so they already sum to one). Their storage is released:
+  /// uniform weights need none, and between steps a filter then holds its states alone (which
+  /// matters to an ensemble of many filters sharing one cache).
   void reset();
   /// True while the weights are known to be equal (after reset or resampling): statistics can
   /// then skip them.
   bool uniform() const { return uniform_; }
 
  private:
-  Eigen::VectorXd log_w_;
+  void materialise() const;
+
+  std::size_t size_ = 0;
+  mutable Eigen::VectorXd log_w_;  ///< empty while uniform and not yet asked for
   bool uniform_ = true;
 };
 

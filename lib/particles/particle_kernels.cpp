@@ -61,13 +61,14 @@ OPF_ALWAYS_INLINE float rotation_angle(const Quat& r) {
 }
 
 template <bool kPerParticle>
-OPF_ALWAYS_INLINE void perturb(float* __restrict q, std::size_t n, const float* __restrict noise,
-                               float sigma, const double* __restrict sigmas) {
+OPF_ALWAYS_INLINE void perturb(float* __restrict q, std::size_t stride, std::size_t count,
+                               const float* __restrict noise, float sigma,
+                               const double* __restrict sigmas) {
 #pragma omp simd
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     const float s = kPerParticle ? static_cast<float>(sigmas[i]) : sigma;
-    const Quat step = exp_tangent(s * noise[i], s * noise[n + i], s * noise[2 * n + i]);
-    store(q, n, i, normalised(multiply(load(q, n, i), step)));
+    const Quat step = exp_tangent(s * noise[i], s * noise[count + i], s * noise[2 * count + i]);
+    store(q, stride, i, normalised(multiply(load(q, stride, i), step)));
   }
 }
 
@@ -311,21 +312,18 @@ OPF_KERNEL void add_scaled_noise(double* __restrict x, const float* __restrict n
 }
 
 OPF_KERNEL void add_scaled_noise_per_particle(double* __restrict x, const float* __restrict noise,
-                                              const double* __restrict sigma, std::size_t rows,
-                                              std::size_t n) {
-  for (std::size_t r = 0; r < rows; ++r) {
+                                              const double* __restrict sigma, std::size_t count) {
 #pragma omp simd
-    for (std::size_t i = 0; i < n; ++i)
-      x[r * n + i] += sigma[i] * static_cast<double>(noise[r * n + i]);
-  }
+  for (std::size_t i = 0; i < count; ++i) x[i] += sigma[i] * static_cast<double>(noise[i]);
 }
 
-OPF_KERNEL void perturb_quaternions(float* q, std::size_t n, const float* noise, double sigma,
+OPF_KERNEL void perturb_quaternions(float* q, std::size_t stride, std::size_t count,
+                                    const float* noise, double sigma,
                                     const double* sigma_per_particle) {
   if (sigma_per_particle)
-    perturb<true>(q, n, noise, 0.0f, sigma_per_particle);
+    perturb<true>(q, stride, count, noise, 0.0f, sigma_per_particle);
   else
-    perturb<false>(q, n, noise, static_cast<float>(sigma), nullptr);
+    perturb<false>(q, stride, count, noise, static_cast<float>(sigma), nullptr);
 }
 
 OPF_KERNEL void rotate_quaternions(float* __restrict q, std::size_t n,

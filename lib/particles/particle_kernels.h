@@ -14,14 +14,15 @@ namespace opf::kernels {
 /// x[i] += sigma * noise[i] for i < count.
 void add_scaled_noise(double* x, const float* noise, double sigma, std::size_t count);
 
-/// x[r n + i] += sigma[i] * noise[r n + i] over `rows` rows of n: a spread per particle.
+/// x[i] += sigma[i] * noise[i] for i < count: a spread per particle.
 void add_scaled_noise_per_particle(double* x, const float* noise, const double* sigma,
-                                   std::size_t rows, std::size_t n);
+                                   std::size_t count);
 
-/// q_i <- normalise(q_i * exp(e_i)) with the tangent step e_i = s_i (noise rows 0..2 at i) and
+/// q_i <- normalise(q_i * exp(e_i)) for i < count, where q's rows are `stride` apart and the
+/// tangent step is e_i = s_i (noise[i], noise[count + i], noise[2 count + i]) with
 /// s_i = sigma_per_particle[i], or `sigma` when that is null.
-void perturb_quaternions(float* q, std::size_t n, const float* noise, double sigma,
-                         const double* sigma_per_particle);
+void perturb_quaternions(float* q, std::size_t stride, std::size_t count, const float* noise,
+                         double sigma, const double* sigma_per_particle);
 
 /// q_i <- normalise(r * q_i): every particle turned by the world-frame rotation r (x, y, z, w).
 void rotate_quaternions(float* q, std::size_t n, const std::array<double, 4>& r);

@@ -15,7 +15,6 @@
 #include <cstddef>
 #include <stdexcept>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace opf {
@@ -40,15 +39,14 @@ struct ParticlePortion {
   void resample(const std::vector<std::size_t>& indices) {
     if (!indices.empty() && kernels::largest_index(indices.data(), indices.size()) >= size())
       throw std::out_of_range("ParticlePortion::resample: bad index");
-    spare_.resize(Dim, Eigen::Index(indices.size()));
-    kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(), spare_.data());
-    std::swap(states, spare_);
+    // A fresh matrix rather than a kept spare: freed and allocated again step after step, the
+    // same memory serves every filter on a thread and stays in cache across an ensemble.
+    States next(Dim, Eigen::Index(indices.size()));
+    kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(), next.data());
+    states = std::move(next);
     if (weights.size() != indices.size()) weights = LogWeights(indices.size());
     weights.reset();
   }
-
- private:
-  States spare_;  ///< the previous generation's storage, reused so resampling does not allocate
 };
 
 using TranslationParticles = ParticlePortion<3>;

@@ -19,6 +19,14 @@ void require_positive(double value, const char* name) {
                                 " must be a positive number, got " + std::to_string(value));
 }
 
+// Buffers of one normalise_and_resample, allocated per call: freed and allocated again step
+// after step, the same memory serves every filter on a thread and stays in cache.
+struct ResampleScratch {
+  Eigen::VectorXd linear;
+  std::vector<float> relative;
+  std::vector<std::size_t> indices;
+};
+
 template <int Dim>
 bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted,
                                   const ResamplingOptions& options, Random& random,
@@ -155,12 +163,13 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
 
 ResampleReport PoseParticleFilter::normalise_and_resample() {
   ResampleReport report;
+  ResampleScratch scratch;
   const bool translation_ok = normalise_and_maybe_resample(
-      translation_, translation_reweighted_, options_.resampling, random_, scratch_,
+      translation_, translation_reweighted_, options_.resampling, random_, scratch,
       report.ess_translation, report.resampled_translation);
   const bool rotation_ok =
       normalise_and_maybe_resample(rotation_, rotation_reweighted_, options_.resampling, random_,
-                                   scratch_, report.ess_rotation, report.resampled_rotation);
+                                   scratch, report.ess_rotation, report.resampled_rotation);
   report.weights_recovered = !translation_ok || !rotation_ok;
   translation_reweighted_ = translation_reweighted_ && !report.resampled_translation;
   rotation_reweighted_ = rotation_reweighted_ && !report.resampled_rotation;

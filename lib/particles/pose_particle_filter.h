@@ -19,13 +19,6 @@
 
 namespace opf {
 
-/// Buffers of normalise_and_resample, kept by the filter so that a step does not allocate.
-struct ResampleScratch {
-  Eigen::VectorXd linear;
-  std::vector<float> relative;
-  std::vector<std::size_t> indices;
-};
-
 /// What the last normalise-and-resample step saw and did, per portion (MRPT's
 /// TParticleFilterStats, extended).
 struct ResampleReport {
@@ -98,7 +91,6 @@ class PoseParticleFilter {
   PoseParticleFilterOptions options_;
   Random random_;          ///< resampling draws
   GaussianSampler noise_;  ///< process and initialisation noise, in bulk
-  ResampleScratch scratch_;
   TranslationParticles translation_;
   RotationParticles rotation_;
   bool translation_reweighted_ = false;

@@ -94,7 +94,6 @@ TEST(GaussianSampler, AnyLengthIsFilledWithFiniteSamples) {
     sampler.fill(x);
     for (float v : x) EXPECT_TRUE(std::isfinite(v)) << count;
   }
-  EXPECT_EQ(sampler.draw(7).size(), 7u);
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ TEST(ParticleKernels, PerturbQuaternionsIsTheTangentRandomWalk) {
   for (float& v : noise) v = static_cast<float>(3.0 * random.normal());  // up to ~12 sigma
   std::vector<double> sigma(n);
   for (double& s : sigma) s = 0.5 * random.uniform();  // steps up to ~6 rad
-  kernels::perturb_quaternions(q.data(), n, noise.data(), 0.0, sigma.data());
+  kernels::perturb_quaternions(q.data(), n, n, noise.data(), 0.0, sigma.data());
   double worst_angle = 0.0, worst_norm = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d step =
