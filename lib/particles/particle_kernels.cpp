@@ -250,16 +250,16 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
   for (std::size_t i = 0; i < m; ++i) marks[ends[i]] = static_cast<std::int32_t>(i + 1);
 }
 
-template <class T>
+template <class T, class Index>
 OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double offset,
-                                  std::size_t count, std::size_t* __restrict indices) {
+                                  std::size_t count, Index* __restrict indices) {
   // Slot k takes the particle whose interval [C_{i-1}, C_i) of cumulative weight holds
   // (k + offset) / count. Particle i's slots end at e_i = ceil(count C_i - offset) (clamped to
   // [0, count]), and e is nondecreasing, so the particle of slot k is #{i : e_i <= k}: mark each
   // e_i with i + 1 (a later particle overwrites an earlier one) and take the running maximum.
   // No branch depends on the weights. The last particle takes any remainder left by rounding.
   if (n < 2 || count == 0) {
-    std::fill(indices, indices + count, std::size_t{0});
+    std::fill(indices, indices + count, Index{0});
     return;
   }
   // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
@@ -299,7 +299,7 @@ OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double o
   std::int32_t particle = 0;
   for (std::size_t k = 0; k < count; ++k) {
     particle = marks[k] > particle ? marks[k] : particle;
-    indices[k] = static_cast<std::size_t>(particle);
+    indices[k] = static_cast<Index>(particle);
   }
 }
 
@@ -419,8 +419,14 @@ OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset,
   systematic(w, n, offset, count, indices);
 }
 
-OPF_KERNEL std::size_t largest_index(const std::size_t* __restrict indices, std::size_t n) {
-  std::size_t top[kLanes] = {};
+OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
+                                   std::uint32_t* indices) {
+  systematic(w, n, offset, count, indices);
+}
+
+template <class Index>
+OPF_ALWAYS_INLINE std::size_t largest(const Index* __restrict indices, std::size_t n) {
+  Index top[kLanes] = {};
   std::size_t i = 0;
   for (; i + kLanes <= n; i += kLanes) {
 #pragma omp simd
@@ -431,9 +437,17 @@ OPF_KERNEL std::size_t largest_index(const std::size_t* __restrict indices, std:
   return *std::max_element(top, top + kLanes);
 }
 
-template <class T>
+OPF_KERNEL std::size_t largest_index(const std::size_t* indices, std::size_t n) {
+  return largest(indices, n);
+}
+
+OPF_KERNEL std::size_t largest_index(const std::uint32_t* indices, std::size_t n) {
+  return largest(indices, n);
+}
+
+template <class T, class Index>
 OPF_ALWAYS_INLINE void gather(const T* __restrict in, std::size_t n_in, std::size_t rows,
-                              const std::size_t* __restrict indices, std::size_t count,
+                              const Index* __restrict indices, std::size_t count,
                               T* __restrict out) {
   for (std::size_t r = 0; r < rows; ++r) {
     const T* row = in + r * n_in;
@@ -450,6 +464,18 @@ OPF_KERNEL void gather_rows(const double* __restrict in, std::size_t n_in, std::
 
 OPF_KERNEL void gather_rows(const float* __restrict in, std::size_t n_in, std::size_t rows,
                             const std::size_t* __restrict indices, std::size_t count,
+                            float* __restrict out) {
+  gather(in, n_in, rows, indices, count, out);
+}
+
+OPF_KERNEL void gather_rows(const double* __restrict in, std::size_t n_in, std::size_t rows,
+                            const std::uint32_t* __restrict indices, std::size_t count,
+                            double* __restrict out) {
+  gather(in, n_in, rows, indices, count, out);
+}
+
+OPF_KERNEL void gather_rows(const float* __restrict in, std::size_t n_in, std::size_t rows,
+                            const std::uint32_t* __restrict indices, std::size_t count,
                             float* __restrict out) {
   gather(in, n_in, rows, indices, count, out);
 }

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace opf::kernels {
 
@@ -64,14 +65,22 @@ void systematic_indices(const double* w, std::size_t n, double offset, std::size
                         std::size_t* indices);
 void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
                         std::size_t* indices);
+/// The same into 32-bit indices (n < 2^31): half the memory traffic for the gather after it.
+void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
+                        std::uint32_t* indices);
 
 /// The largest of n > 0 indices (the bounds check before a gather).
 std::size_t largest_index(const std::size_t* indices, std::size_t n);
+std::size_t largest_index(const std::uint32_t* indices, std::size_t n);
 
 /// out row r, slot k = in row r, particle indices[k]; in has n_in columns, out `count`.
 void gather_rows(const double* in, std::size_t n_in, std::size_t rows, const std::size_t* indices,
                  std::size_t count, double* out);
 void gather_rows(const float* in, std::size_t n_in, std::size_t rows, const std::size_t* indices,
+                 std::size_t count, float* out);
+void gather_rows(const double* in, std::size_t n_in, std::size_t rows, const std::uint32_t* indices,
+                 std::size_t count, double* out);
+void gather_rows(const float* in, std::size_t n_in, std::size_t rows, const std::uint32_t* indices,
                  std::size_t count, float* out);
 
 /// Weighted sums about a reference point (for precision far from the origin): total weight,

@@ -24,7 +24,7 @@ void require_positive(double value, const char* name) {
 struct ResampleScratch {
   Eigen::VectorXd linear;
   std::vector<float> relative;
-  std::vector<std::size_t> indices;
+  std::vector<std::uint32_t> indices;
 };
 
 template <int Dim>
@@ -36,7 +36,7 @@ bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted
   if (portion.weights.uniform()) return true;
   const std::size_t n = portion.size();
   if (reweighted && options.every_frame &&
-      options.scheme == mrpt::bayes::CParticleFilter::prSystematic) {
+      options.scheme == mrpt::bayes::CParticleFilter::prSystematic && n < (1u << 31)) {
     // Resampling follows at once (the paper's default): relative weights in single precision
     // are all it needs, and normalising the log-weights first would be undone by the reset.
     scratch.relative.resize(n);
