@@ -305,6 +305,16 @@ OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double o
 
 }  // namespace
 
+const char* instruction_set() {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(OPF_NO_DISPATCH)
+  if (__builtin_cpu_supports("x86-64-v4")) return "x86-64-v4 (AVX-512)";
+  if (__builtin_cpu_supports("x86-64-v3")) return "x86-64-v3 (AVX2, FMA)";
+  return "x86-64 baseline (SSE2)";
+#else
+  return "compiler default (no dispatch)";
+#endif
+}
+
 OPF_KERNEL void add_scaled_noise(double* __restrict x, const float* __restrict noise, double sigma,
                                  std::size_t count) {
 #pragma omp simd

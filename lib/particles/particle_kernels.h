@@ -12,6 +12,10 @@
 
 namespace opf::kernels {
 
+/// Which version of the kernels this CPU runs: "x86-64-v4 (AVX-512)", "x86-64-v3 (AVX2, FMA)" or
+/// "x86-64 baseline (SSE2)" (kernel_dispatch.h); for benchmark reports.
+const char* instruction_set();
+
 /// x[i] += sigma * noise[i] for i < count.
 void add_scaled_noise(double* x, const float* noise, double sigma, std::size_t count);
 

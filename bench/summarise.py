@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+"""Prints the performance targets of issue 5 against a Google Benchmark JSON report written by
+bench/run_benchmarks.sh (medians of the repetitions). Standard library only.
+
+    /usr/bin/python3 bench/summarise.py bench/results/HOST-DATE.json
+"""
+
+import json
+import sys
+
+
+def medians(report):
+    """Benchmark name (without the _median suffix) -> real time in microseconds."""
+    scale = {"ns": 1e-3, "us": 1.0, "ms": 1e3, "s": 1e6}
+    out = {}
+    for b in report["benchmarks"]:
+        if b.get("aggregate_name") == "median" or b.get("run_type") == "iteration":
+            name = b["run_name"] if "run_name" in b else b["name"]
+            out.setdefault(name, b["real_time"] * scale[b["time_unit"]])
+            if b.get("aggregate_name") == "median":
+                out[name] = b["real_time"] * scale[b["time_unit"]]
+    return out
+
+
+def main():
+    report = json.load(open(sys.argv[1], encoding="utf-8"))
+    t = medians(report)
+    c = report["context"]
+    print(f"\n{c.get('host_name')}: {c.get('num_cpus')} CPUs at {c.get('mhz_per_cpu')} MHz, "
+          f"{c.get('compiler')}, {c.get('build_type')}, kernels {c.get('particle_kernels')}")
+
+    def show(label, value, target, unit="us"):
+        if value is None:
+            print(f"  {label:58s} (not run)")
+            return
+        verdict = "meets" if value <= target else "MISSES"
+        print(f"  {label:58s} {value:9.1f} {unit}  target <= {target:g} {unit}: {verdict}")
+
+    show("OPF step, 5000 + 5000 particles", t.get("BM_EstimatorStep/opf/n:5000"), 50)
+    show("PF step, 5000 + 5000 particles", t.get("BM_EstimatorStep/pf/n:5000"), 50)
+    base = t.get("BM_EstimatorStep/opf/n:1000")
+    if base:
+        for n in (3000, 5000, 10000, 30000, 100000):
+            v = t.get(f"BM_EstimatorStep/opf/n:{n}")
+            if v:
+                ratio = v / (base * n / 1000)
+                print(f"  OPF step at {n:6d}: {v:9.1f} us = {ratio:4.2f} x the linear extrapolation "
+                      f"from 1000 (target <= 1.2): {'meets' if ratio <= 1.2 else 'MISSES'}")
+    for threads in (1, 2):
+        v = t.get(f"BM_EnsembleFrame/objects:64/threads:{threads}/real_time")
+        show(f"frame of 64 objects, {threads} thread(s)", v / 1e3 if v else None,
+             2 if threads == 2 else float("inf"), "ms")
+    v = t.get("BM_RenderAndDetectFrame")
+    show("render + detect a 640x480 frame", v / 1e3 if v else None, 10, "ms")
+
+
+if __name__ == "__main__":
+    main()
