@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace opf::kernels {
@@ -250,18 +251,16 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
   for (std::size_t i = 0; i < m; ++i) marks[ends[i]] = static_cast<std::int32_t>(i + 1);
 }
 
-template <class T, class Index>
-OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double offset,
-                                  std::size_t count, Index* __restrict indices) {
-  // Slot k takes the particle whose interval [C_{i-1}, C_i) of cumulative weight holds
-  // (k + offset) / count. Particle i's slots end at e_i = ceil(count C_i - offset) (clamped to
-  // [0, count]), and e is nondecreasing, so the particle of slot k is #{i : e_i <= k}: mark each
-  // e_i with i + 1 (a later particle overwrites an earlier one) and take the running maximum.
-  // No branch depends on the weights. The last particle takes any remainder left by rounding.
-  if (n < 2 || count == 0) {
-    std::fill(indices, indices + count, Index{0});
-    return;
-  }
+// Systematic resampling, first half: slot k (of `count`) takes the particle whose interval
+// [C_{i-1}, C_i) of cumulative weight / total holds (k + offset) / count. Particle i's slots end
+// at e_i = ceil(count C_i / total - offset) (clamped to [0, count]), and e is nondecreasing, so
+// the particle of slot k is #{i : e_i <= k}. This marks each e_i with i + 1 (a later particle
+// overwrites an earlier one); the running maximum of the marks over k is then slot k's particle.
+// No branch depends on the weights; the last particle takes any remainder left by rounding.
+// Returns count + 1 marks (the last absorbs ends past the last slot). Requires n >= 2.
+template <class T>
+OPF_ALWAYS_INLINE std::vector<std::int32_t> systematic_marks(const T* __restrict w, std::size_t n,
+                                                             double offset, std::size_t count) {
   // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
   // so the additions do not wait on each other.
   const std::size_t m = n - 1;  // the last particle's end is `count` by definition
@@ -294,12 +293,42 @@ OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double o
     const double end = std::ceil(per_weight * c[i] - offset);
     e[i] = static_cast<std::int32_t>(end < 0.0 ? 0.0 : (end > slots ? slots : end));
   }
-  std::vector<std::int32_t> marks(count + 1, 0);  // slot `count` absorbs the ends past the last
+  std::vector<std::int32_t> marks(count + 1, 0);
   mark_ends(e, m, marks.data());
+  return marks;
+}
+
+template <class T, class Index>
+OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double offset,
+                                  std::size_t count, Index* __restrict indices) {
+  if (n < 2 || count == 0) {
+    std::fill(indices, indices + count, Index{0});
+    return;
+  }
+  const std::vector<std::int32_t> marks = systematic_marks(w, n, offset, count);
   std::int32_t particle = 0;
   for (std::size_t k = 0; k < count; ++k) {
     particle = marks[k] > particle ? marks[k] : particle;
     indices[k] = static_cast<Index>(particle);
+  }
+}
+
+// Systematic resampling straight into the next generation's rows: the running maximum of the
+// marks picks each slot's particle and its Rows values are copied at once, without an index
+// array written and read back.
+template <int Rows, class T>
+OPF_ALWAYS_INLINE void systematic_gather(const float* __restrict w, std::size_t n, double offset,
+                                         const T* __restrict in, T* __restrict out) {
+  if (n < 2) {
+    std::copy(in, in + Rows * n, out);
+    return;
+  }
+  const std::vector<std::int32_t> marks = systematic_marks(w, n, offset, n);
+  std::int32_t particle = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    particle = marks[k] > particle ? marks[k] : particle;
+    const auto p = static_cast<std::size_t>(particle);
+    for (int r = 0; r < Rows; ++r) out[r * n + k] = in[r * n + p];
   }
 }
 
@@ -432,6 +461,18 @@ OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset,
 OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
                                    std::uint32_t* indices) {
   systematic(w, n, offset, count, indices);
+}
+
+OPF_KERNEL void systematic_resample(const float* w, std::size_t n, double offset, const double* in,
+                                    std::size_t rows, double* out) {
+  if (rows != 3) throw std::invalid_argument("systematic_resample: 3 rows of double expected");
+  systematic_gather<3>(w, n, offset, in, out);
+}
+
+OPF_KERNEL void systematic_resample(const float* w, std::size_t n, double offset, const float* in,
+                                    std::size_t rows, float* out) {
+  if (rows != 4) throw std::invalid_argument("systematic_resample: 4 rows of float expected");
+  systematic_gather<4>(w, n, offset, in, out);
 }
 
 template <class Index>

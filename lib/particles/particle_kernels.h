@@ -73,6 +73,14 @@ void systematic_indices(const float* w, std::size_t n, double offset, std::size_
 void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
                         std::uint32_t* indices);
 
+/// Systematic resampling of n particles into n, as systematic_indices, with the particles'
+/// rows (`rows` rows of n: 3 of double for translation, 4 of float for rotation) copied from
+/// `in` to `out` on the way: no index array is written and read back.
+void systematic_resample(const float* w, std::size_t n, double offset, const double* in,
+                         std::size_t rows, double* out);
+void systematic_resample(const float* w, std::size_t n, double offset, const float* in,
+                         std::size_t rows, float* out);
+
 /// The largest of n > 0 indices (the bounds check before a gather).
 std::size_t largest_index(const std::size_t* indices, std::size_t n);
 std::size_t largest_index(const std::uint32_t* indices, std::size_t n);

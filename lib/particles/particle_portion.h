@@ -48,6 +48,17 @@ struct ParticlePortion {
     if (weights.size() != indices.size()) weights = LogWeights(indices.size());
     weights.reset();
   }
+
+  /// Systematic resampling from relative weights (any positive total) with uniform position
+  /// `offset` in [0, 1), in one pass over the particles (kernels::systematic_resample).
+  void resample_systematic(const std::vector<float>& relative, double offset) {
+    if (relative.size() != size())
+      throw std::invalid_argument("ParticlePortion::resample_systematic: one weight per particle");
+    States next(Dim, states.cols());
+    kernels::systematic_resample(relative.data(), size(), offset, states.data(), Dim, next.data());
+    states = std::move(next);
+    weights.reset();
+  }
 };
 
 using TranslationParticles = ParticlePortion<3>;

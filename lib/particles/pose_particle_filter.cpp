@@ -24,7 +24,6 @@ void require_positive(double value, const char* name) {
 struct ResampleScratch {
   Eigen::VectorXd linear;
   std::vector<float> relative;
-  std::vector<std::uint32_t> indices;
 };
 
 template <int Dim>
@@ -48,10 +47,7 @@ bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted
       return false;
     }
     ess = w.ess_fraction;
-    scratch.indices.resize(n);
-    kernels::systematic_indices(scratch.relative.data(), n, random.uniform(), n,
-                                scratch.indices.data());
-    portion.resample(scratch.indices);
+    portion.resample_systematic(scratch.relative, random.uniform());
     return true;
   }
   const kernels::NormalisedWeights normalised = portion.weights.normalise(scratch.linear);
