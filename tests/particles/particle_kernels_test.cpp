@@ -67,6 +67,28 @@ TEST(ParticleKernels, SystematicIndicesFollowTheCumulativeWeights) {
   }
 }
 
+// The one-pass resampling copies exactly what the index walk selects.
+TEST(ParticleKernels, SystematicResampleCopiesTheSelectedParticles) {
+  Random random(6);
+  for (std::size_t n : {2, 9, 1000, 4099}) {
+    std::vector<float> w(n);
+    for (float& v : w) v = static_cast<float>(std::exp(-6.0 * random.uniform()));
+    const double offset = random.uniform();
+    std::vector<std::size_t> indices(n);
+    kernels::systematic_indices(w.data(), n, offset, n, indices.data());
+    std::vector<double> translation(3 * n), moved(3 * n), expected(3 * n);
+    for (double& v : translation) v = random.normal();
+    kernels::systematic_resample(w.data(), n, offset, translation.data(), 3, moved.data());
+    kernels::gather_rows(translation.data(), n, 3, indices.data(), n, expected.data());
+    EXPECT_EQ(moved, expected) << n;
+    std::vector<float> rotation(4 * n), turned(4 * n), expected_rotation(4 * n);
+    for (float& v : rotation) v = static_cast<float>(random.normal());
+    kernels::systematic_resample(w.data(), n, offset, rotation.data(), 4, turned.data());
+    kernels::gather_rows(rotation.data(), n, 4, indices.data(), n, expected_rotation.data());
+    EXPECT_EQ(turned, expected_rotation) << n;
+  }
+}
+
 TEST(ParticleKernels, SystematicResamplingOfEqualWeightsKeepsEveryParticle) {
   std::vector<double> w(1000, 3.0);
   std::vector<std::size_t> indices(1000);
