@@ -1,6 +1,7 @@
 #include "particles/gaussian_sampler.h"
 
 #include "particles/kernel_dispatch.h"
+#include "particles/random.h"
 #include "particles/vector_math.h"
 
 #include <cmath>
@@ -8,13 +9,6 @@
 
 namespace opf {
 namespace {
-
-std::uint64_t splitmix64(std::uint64_t& state) {
-  std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 OPF_ALWAYS_INLINE std::uint64_t rotl(std::uint64_t x, int k) {
   return (x << k) | (x >> (64 - k));

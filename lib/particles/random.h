@@ -8,6 +8,10 @@
 
 namespace opf {
 
+/// One step of splitmix64 (Vigna): advances `state` and returns a well-mixed 64-bit word. Seeds
+/// the generators' states from a single seed.
+std::uint64_t splitmix64(std::uint64_t& state);
+
 /// Mixes a base seed with an index (an object's number, a run's number) into an independent seed.
 std::uint64_t derive_seed(std::uint64_t seed, std::uint64_t index);
 
