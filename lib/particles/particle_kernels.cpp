@@ -178,10 +178,10 @@ OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::
 // vmaxpd. NaN terms never win a lane.
 constexpr std::size_t kLanes = 8;
 
-template <class T>
-OPF_ALWAYS_INLINE T lanes_max(const T (&lanes)[kLanes]) {
+template <class T, std::size_t W>
+OPF_ALWAYS_INLINE T lanes_max(const T (&lanes)[W]) {
   T top = lanes[0];
-  for (std::size_t l = 1; l < kLanes; ++l) top = lanes[l] > top ? lanes[l] : top;
+  for (std::size_t l = 1; l < W; ++l) top = lanes[l] > top ? lanes[l] : top;
   return top;
 }
 
@@ -215,9 +215,7 @@ OPF_ALWAYS_INLINE double write_exponents(std::size_t n, double* __restrict out, 
     for (std::size_t j = 0; j < size; ++j)
       out[begin + j] = keep * out[begin + j] + static_cast<double>(block[j]);
   }
-  T top = best[0];
-  for (std::size_t l = 1; l < kWidth; ++l) top = best[l] > top ? best[l] : top;
-  return static_cast<double>(top);
+  return static_cast<double>(lanes_max(best));
 }
 
 // The largest value, and whether any is NaN.
@@ -261,6 +259,8 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
 template <class T>
 OPF_ALWAYS_INLINE std::vector<std::int32_t> systematic_marks(const T* __restrict w, std::size_t n,
                                                              double offset, std::size_t count) {
+  if (n >= (std::size_t{1} << 31) || count >= (std::size_t{1} << 31))
+    throw std::length_error("systematic resampling: 2^31 particles or more");
   // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
   // so the additions do not wait on each other.
   const std::size_t m = n - 1;  // the last particle's end is `count` by definition
@@ -458,11 +458,6 @@ OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset,
   systematic(w, n, offset, count, indices);
 }
 
-OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
-                                   std::uint32_t* indices) {
-  systematic(w, n, offset, count, indices);
-}
-
 OPF_KERNEL void systematic_resample(const float* w, std::size_t n, double offset, const double* in,
                                     std::size_t rows, double* out) {
   if (rows != 3) throw std::invalid_argument("systematic_resample: 3 rows of double expected");
@@ -492,10 +487,6 @@ OPF_KERNEL std::size_t largest_index(const std::size_t* indices, std::size_t n) 
   return largest(indices, n);
 }
 
-OPF_KERNEL std::size_t largest_index(const std::uint32_t* indices, std::size_t n) {
-  return largest(indices, n);
-}
-
 template <class T, class Index>
 OPF_ALWAYS_INLINE void gather(const T* __restrict in, std::size_t n_in, std::size_t rows,
                               const Index* __restrict indices, std::size_t count,
@@ -515,18 +506,6 @@ OPF_KERNEL void gather_rows(const double* __restrict in, std::size_t n_in, std::
 
 OPF_KERNEL void gather_rows(const float* __restrict in, std::size_t n_in, std::size_t rows,
                             const std::size_t* __restrict indices, std::size_t count,
-                            float* __restrict out) {
-  gather(in, n_in, rows, indices, count, out);
-}
-
-OPF_KERNEL void gather_rows(const double* __restrict in, std::size_t n_in, std::size_t rows,
-                            const std::uint32_t* __restrict indices, std::size_t count,
-                            double* __restrict out) {
-  gather(in, n_in, rows, indices, count, out);
-}
-
-OPF_KERNEL void gather_rows(const float* __restrict in, std::size_t n_in, std::size_t rows,
-                            const std::uint32_t* __restrict indices, std::size_t count,
                             float* __restrict out) {
   gather(in, n_in, rows, indices, count, out);
 }

@@ -61,7 +61,8 @@ NormalisedWeights resampling_weights(const double* log_w, float* linear, std::si
 /// linear[i] = exp(log_w[i] - max log_w) (unnormalised, largest 1); returns their sum.
 double relative_weights(const double* log_w, double* linear, std::size_t n);
 
-/// Systematic resampling of `count` particles from weights w (n of them, any positive total):
+/// Systematic resampling of `count` particles from weights w (n of them, any positive total;
+/// n and count below 2^31, else std::length_error):
 /// slot k takes the particle whose interval of cumulative weight / total holds
 /// (k + offset) / count. Indices ascend. Branch-free passes: each particle's last slot, then a
 /// running maximum.
@@ -69,9 +70,6 @@ void systematic_indices(const double* w, std::size_t n, double offset, std::size
                         std::size_t* indices);
 void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
                         std::size_t* indices);
-/// The same into 32-bit indices (n < 2^31): half the memory traffic for the gather after it.
-void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
-                        std::uint32_t* indices);
 
 /// Systematic resampling of n particles into n, as systematic_indices, with the particles'
 /// rows (`rows` rows of n: 3 of double for translation, 4 of float for rotation) copied from
@@ -83,16 +81,11 @@ void systematic_resample(const float* w, std::size_t n, double offset, const flo
 
 /// The largest of n > 0 indices (the bounds check before a gather).
 std::size_t largest_index(const std::size_t* indices, std::size_t n);
-std::size_t largest_index(const std::uint32_t* indices, std::size_t n);
 
 /// out row r, slot k = in row r, particle indices[k]; in has n_in columns, out `count`.
 void gather_rows(const double* in, std::size_t n_in, std::size_t rows, const std::size_t* indices,
                  std::size_t count, double* out);
 void gather_rows(const float* in, std::size_t n_in, std::size_t rows, const std::size_t* indices,
-                 std::size_t count, float* out);
-void gather_rows(const double* in, std::size_t n_in, std::size_t rows, const std::uint32_t* indices,
-                 std::size_t count, double* out);
-void gather_rows(const float* in, std::size_t n_in, std::size_t rows, const std::uint32_t* indices,
                  std::size_t count, float* out);
 
 /// Weighted sums about a reference point (for precision far from the origin): total weight,

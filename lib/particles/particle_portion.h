@@ -36,8 +36,7 @@ struct ParticlePortion {
 
   /// Replaces the particles by the ones at `indices` (which may repeat) and makes the weights
   /// uniform: the resampled set represents the posterior by its density alone.
-  template <class Index>
-  void resample(const std::vector<Index>& indices) {
+  void resample(const std::vector<std::size_t>& indices) {
     if (!indices.empty() && kernels::largest_index(indices.data(), indices.size()) >= size())
       throw std::out_of_range("ParticlePortion::resample: bad index");
     // A fresh matrix rather than a kept spare: freed and allocated again step after step, the

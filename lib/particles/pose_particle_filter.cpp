@@ -35,7 +35,7 @@ bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted
   if (portion.weights.uniform()) return true;
   const std::size_t n = portion.size();
   if (reweighted && options.every_frame &&
-      options.scheme == mrpt::bayes::CParticleFilter::prSystematic && n < (1u << 31)) {
+      options.scheme == mrpt::bayes::CParticleFilter::prSystematic) {
     // Resampling follows at once (the paper's default): relative weights in single precision
     // are all it needs, and normalising the log-weights first would be undone by the reset.
     scratch.relative.resize(n);
