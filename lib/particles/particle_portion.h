@@ -31,7 +31,6 @@ struct ParticlePortion {
   void resize(std::size_t count) {
     states.resize(Dim, Eigen::Index(count));
     weights = LogWeights(count);
-    weights.reset();
   }
 
   /// Replaces the particles by the ones at `indices` (which may repeat) and makes the weights
@@ -44,8 +43,7 @@ struct ParticlePortion {
     States next(Dim, Eigen::Index(indices.size()));
     kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(), next.data());
     states = std::move(next);
-    if (weights.size() != indices.size()) weights = LogWeights(indices.size());
-    weights.reset();
+    weights = LogWeights(indices.size());
   }
 
   /// Systematic resampling from relative weights (any positive total) with uniform position

@@ -19,17 +19,12 @@ void require_positive(double value, const char* name) {
                                 " must be a positive number, got " + std::to_string(value));
 }
 
-// Buffers of one normalise_and_resample, allocated per call: freed and allocated again step
-// after step, the same memory serves every filter on a thread and stays in cache.
-struct ResampleScratch {
-  Eigen::VectorXd linear;
-  std::vector<float> relative;
-};
-
+// The weight buffers are allocated per call rather than kept by the filter: freed and allocated
+// again step after step, the same memory serves every filter on a thread and stays in cache.
 template <int Dim>
 bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted,
-                                  const ResamplingOptions& options, Random& random,
-                                  ResampleScratch& scratch, double& ess, bool& resampled) {
+                                  const ResamplingOptions& options, Random& random, double& ess,
+                                  bool& resampled) {
   resampled = false;
   ess = 1.0;
   if (portion.weights.uniform()) return true;
@@ -38,22 +33,23 @@ bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted
       options.scheme == mrpt::bayes::CParticleFilter::prSystematic) {
     // Resampling follows at once (the paper's default): relative weights in single precision
     // are all it needs, and normalising the log-weights first would be undone by the reset.
-    scratch.relative.resize(n);
+    std::vector<float> relative(n);
     const kernels::NormalisedWeights w =
-        kernels::resampling_weights(portion.weights.log().data(), scratch.relative.data(), n);
+        kernels::resampling_weights(portion.weights.log().data(), relative.data(), n);
     resampled = true;
     if (!w.usable) {
       portion.weights.reset();  // uniform weights resample to the same particles
       return false;
     }
     ess = w.ess_fraction;
-    portion.resample_systematic(scratch.relative, random.uniform());
+    portion.resample_systematic(relative, random.uniform());
     return true;
   }
-  const kernels::NormalisedWeights normalised = portion.weights.normalise(scratch.linear);
+  Eigen::VectorXd linear;
+  const kernels::NormalisedWeights normalised = portion.weights.normalise(linear);
   if (normalised.usable) ess = normalised.ess_fraction;
   if (reweighted && should_resample(options, ess)) {
-    portion.resample(resample_indices(scratch.linear, n, options.scheme, random));
+    portion.resample(resample_indices(linear, n, options.scheme, random));
     resampled = true;
   }
   return normalised.usable;
@@ -159,13 +155,12 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
 
 ResampleReport PoseParticleFilter::normalise_and_resample() {
   ResampleReport report;
-  ResampleScratch scratch;
-  const bool translation_ok = normalise_and_maybe_resample(
-      translation_, translation_reweighted_, options_.resampling, random_, scratch,
-      report.ess_translation, report.resampled_translation);
+  const bool translation_ok =
+      normalise_and_maybe_resample(translation_, translation_reweighted_, options_.resampling,
+                                   random_, report.ess_translation, report.resampled_translation);
   const bool rotation_ok =
       normalise_and_maybe_resample(rotation_, rotation_reweighted_, options_.resampling, random_,
-                                   scratch, report.ess_rotation, report.resampled_rotation);
+                                   report.ess_rotation, report.resampled_rotation);
   report.weights_recovered = !translation_ok || !rotation_ok;
   translation_reweighted_ = translation_reweighted_ && !report.resampled_translation;
   rotation_reweighted_ = rotation_reweighted_ && !report.resampled_rotation;
