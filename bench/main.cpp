@@ -1,11 +1,13 @@
 // The benchmark program's entry point: Google Benchmark's own, plus the build facts a reader of
 // the JSON report needs next to the machine facts it records anyway (CPU, caches, load).
 
+#include "core/heap_policy.h"
 #include "particles/particle_kernels.h"
 
 #include <benchmark/benchmark.h>
 
 int main(int argc, char** argv) {
+  opf::retain_freed_heap_memory();  // as the `opf` program does (core/heap_policy.h)
   benchmark::AddCustomContext("compiler", "g++ " __VERSION__);
   benchmark::AddCustomContext("build_type", OPF_BUILD_TYPE);
   benchmark::AddCustomContext("cxx_flags", OPF_CXX_FLAGS);

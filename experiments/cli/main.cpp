@@ -1,6 +1,7 @@
 // The `opf` command-line program: `opf <command> [options]`, `opf <command> --help`.
 
 #include "arguments.h"
+#include "core/heap_policy.h"
 #include "evaluate_command.h"
 #include "experiment_commands.h"
 #include "render_command.h"
@@ -30,6 +31,7 @@ constexpr const char* kHelp =
 }  // namespace
 
 int main(int argc, char** argv) {
+  opf::retain_freed_heap_memory();  // the filters free and allocate particles every step
   const std::vector<std::string> all(argv + 1, argv + argc);
   if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
     std::cout << kHelp;

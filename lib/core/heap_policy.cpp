@@ -1,0 +1,17 @@
+#include "core/heap_policy.h"
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+namespace opf {
+
+bool retain_freed_heap_memory() {
+#if defined(__GLIBC__)
+  return mallopt(M_TRIM_THRESHOLD, 256 << 20) == 1 && mallopt(M_MMAP_THRESHOLD, 64 << 20) == 1;
+#else
+  return false;
+#endif
+}
+
+}  // namespace opf
