@@ -8,7 +8,7 @@ namespace opf {
 
 bool retain_freed_heap_memory() {
 #if defined(__GLIBC__)
-  return mallopt(M_TRIM_THRESHOLD, 256 << 20) == 1 && mallopt(M_MMAP_THRESHOLD, 64 << 20) == 1;
+  return mallopt(M_TRIM_THRESHOLD, 256 << 20) == 1 && mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1;
 #else
   return false;
 #endif

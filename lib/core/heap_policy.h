@@ -9,7 +9,7 @@
 
 namespace opf {
 
-/// Keeps freed heap memory for reuse (glibc: trim threshold 256 MB, mmap threshold 64 MB).
+/// Keeps freed heap memory for reuse (glibc: trim threshold 256 MB, mmap threshold 32 MB, its maximum).
 /// Returns false where the allocator has no such settings.
 bool retain_freed_heap_memory();
 
