@@ -4,17 +4,21 @@ namespace opf {
 
 double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
                          double variance) {
+  bool accumulate = true;
+  double* log_w = particles.weights.for_likelihood(accumulate);
   return kernels::translation_exponents(particles.states.data(), particles.size(),
                                         {measurement.x(), measurement.y(), measurement.z()},
-                                        -0.5 / variance, particles.weights.log().data(), true);
+                                        -0.5 / variance, log_w, accumulate);
 }
 
 double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
                          double variance) {
   const Eigen::Quaterniond z = measurement.normalized();
+  bool accumulate = true;
+  double* log_w = particles.weights.for_likelihood(accumulate);
   return kernels::rotation_exponents(particles.states.data(), particles.size(),
-                                     {z.x(), z.y(), z.z(), z.w()}, -0.5 / variance,
-                                     particles.weights.log().data(), true);
+                                     {z.x(), z.y(), z.z(), z.w()}, -0.5 / variance, log_w,
+                                     accumulate);
 }
 
 double gaussian_exponents(const TranslationParticles& particles, const Eigen::Vector3d& measurement,

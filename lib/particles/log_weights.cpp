@@ -39,6 +39,13 @@ double LogWeights::effective_sample_fraction() const {
   return sum * sum / (static_cast<double>(log_w_.size()) * w.squaredNorm());
 }
 
+double* LogWeights::for_likelihood(bool& accumulate) {
+  accumulate = !uniform_;
+  if (uniform_) log_w_.resize(Eigen::Index(size_));  // about to be overwritten
+  uniform_ = false;
+  return log_w_.data();
+}
+
 void LogWeights::reset() {
   log_w_ = Eigen::VectorXd();
   uniform_ = true;

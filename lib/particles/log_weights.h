@@ -31,6 +31,11 @@ class LogWeights {
   /// Multiplies every weight by its likelihood: adds log-likelihoods.
   void add(const Eigen::VectorXd& log_likelihood) { log() += log_likelihood; }
 
+  /// Storage for a likelihood pass that writes log w_i <- [log w_i +] l_i: returns the array and
+  /// sets `accumulate` to whether the current values must be added to. Uniform weights are not
+  /// written out first: a constant offset of every log-weight leaves the weights the same.
+  double* for_likelihood(bool& accumulate);
+
   /// Shifts the log-weights so that the linear weights sum to one. Returns false, and resets the
   /// weights to uniform, when no weight is usable (all -inf or NaN): a frame whose likelihood
   /// vanished everywhere must recover, not produce NaN.

@@ -185,11 +185,12 @@ OPF_ALWAYS_INLINE T lanes_max(const T (&lanes)[W]) {
   return top;
 }
 
-// out[i] = keep * out[i] + e(i) for every particle, returning the largest e(i). T is the type
+// out[i] = e(i), or out[i] += e(i) when `accumulate`, for every particle; returns the largest
+// e(i). Without `accumulate`, out is only written (it may hold anything before). T is the type
 // the exponents are computed in: float for rotation, run in blocks whose exponents are added to
 // the double log-weights in a second, cheap loop, so the costly one runs at float width.
 template <class T, class Exponent>
-OPF_ALWAYS_INLINE double write_exponents(std::size_t n, double* __restrict out, double keep,
+OPF_ALWAYS_INLINE double write_exponents(std::size_t n, double* __restrict out, bool accumulate,
                                          const Exponent& exponent) {
   constexpr std::size_t kWidth = 64 / sizeof(T);  // lanes of one 512-bit vector
   constexpr std::size_t kBlock = 256;
@@ -211,9 +212,13 @@ OPF_ALWAYS_INLINE double write_exponents(std::size_t n, double* __restrict out, 
       block[i] = exponent(begin + i);
       best[0] = block[i] > best[0] ? block[i] : best[0];
     }
+    if (accumulate) {
 #pragma omp simd
-    for (std::size_t j = 0; j < size; ++j)
-      out[begin + j] = keep * out[begin + j] + static_cast<double>(block[j]);
+      for (std::size_t j = 0; j < size; ++j) out[begin + j] += static_cast<double>(block[j]);
+    } else {
+#pragma omp simd
+      for (std::size_t j = 0; j < size; ++j) out[begin + j] = static_cast<double>(block[j]);
+    }
   }
   return static_cast<double>(lanes_max(best));
 }
@@ -378,7 +383,7 @@ OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t 
                                         const std::array<double, 3>& z, double scale,
                                         double* __restrict out, bool accumulate) {
   const double zx = z[0], zy = z[1], zz = z[2];
-  return write_exponents<double>(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
+  return write_exponents<double>(n, out, accumulate, [=](std::size_t i) {
     const double dx = x[i] - zx, dy = x[n + i] - zy, dz = x[2 * n + i] - zz;
     return scale * (dx * dx + dy * dy + dz * dz);
   });
@@ -391,7 +396,7 @@ OPF_KERNEL double rotation_exponents(const float* __restrict q, std::size_t n,
   const auto ix = static_cast<float>(-z[0]), iy = static_cast<float>(-z[1]),
              iz = static_cast<float>(-z[2]), iw = static_cast<float>(z[3]);
   const auto s = static_cast<float>(scale);
-  return write_exponents<float>(n, out, accumulate ? 1.0 : 0.0, [=](std::size_t i) {
+  return write_exponents<float>(n, out, accumulate, [=](std::size_t i) {
     const float angle = rotation_angle(multiply({ix, iy, iz, iw}, load(q, n, i)));
     return s * (angle * angle);
   });
