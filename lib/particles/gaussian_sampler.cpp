@@ -52,8 +52,11 @@ OPF_ALWAYS_INLINE void normal_block(State& s, float* out) {
   }
 }
 
-OPF_KERNEL void fill_blocks(State& s, float* out, std::size_t blocks) {
+OPF_KERNEL void fill_blocks(State& state, float* __restrict out, std::size_t blocks) {
+  // A local copy of the state lives in registers through the loop; the member is written once.
+  State s = state;
   for (std::size_t k = 0; k < blocks; ++k) normal_block(s, out + k * GaussianSampler::kBlock);
+  state = s;
 }
 
 }  // namespace
