@@ -12,7 +12,6 @@ namespace opf::vmath {
 
 #define OPF_ALWAYS_INLINE [[gnu::always_inline]] inline
 
-inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kHalfPi = 1.57079632679489661923;
 inline constexpr double kQuarterPi = 0.78539816339744830962;
 
@@ -55,97 +54,6 @@ OPF_ALWAYS_INLINE double exp_nonpositive(double x) {
   const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(n + 1023) << 52);
   const double result = p * scale;
   return underflow ? 0.0 : (x != x ? x : result);
-}
-
-/// Cephes' atan in three ranges for atan2(y, x) with y, x >= 0: atan2 = base + u + u z P(z)/Q(z)
-/// with z = u^2, where one division gives the reduced argument u. Sets `small` when y <= 0.66 x
-/// (then u = y / x and base = 0) and returns p = P(z), q = Q(z) through references (plain
-/// scalars, which the vectoriser keeps in registers).
-OPF_ALWAYS_INLINE void atan_terms(double y, double x, bool& small, double& base, double& u,
-                                  double& z, double& p, double& q) {
-  constexpr double kTan3PiOver8 = 2.41421356237309504880;
-  constexpr double kMoreBits = 6.123233995736765886130E-17;
-  const bool steep = y > kTan3PiOver8 * x;     // ratio above tan(3 pi / 8)
-  const bool middle = !steep && y > 0.66 * x;  // ratio in (0.66, tan(3 pi / 8)]
-  const double num = steep ? -x : (middle ? y - x : y);
-  double den = steep ? y : (middle ? y + x : x);
-  den = den > 0.0 ? den : 1.0;  // y = x = 0 gives 0, not NaN
-  // Not !steep && !middle: GCC 12 does not vectorise that combination of AVX-512 masks.
-  small = y <= 0.66 * x;
-  base = steep ? kHalfPi + kMoreBits : (middle ? kQuarterPi + 0.5 * kMoreBits : 0.0);
-  u = num / den;
-  z = u * u;
-  p = (((-8.750608600031904122785E-1 * z - 1.615753718733365076637E1) * z -
-        7.500855792314704667340E1) *
-           z -
-       1.228866684490136173410E2) *
-          z -
-      6.485021904942025371773E1;
-  q = ((((z + 2.485846490142306297962E1) * z + 1.650270098316988542046E2) * z +
-        4.328810604912902668951E2) *
-           z +
-       4.853903996359136964868E2) *
-          z +
-      1.945506571482613964425E2;
-}
-
-/// atan2(y, x) for y >= 0 and x >= 0, not both 0, in [0, pi/2].
-OPF_ALWAYS_INLINE double atan2_nonnegative(double y, double x) {
-  bool small;
-  double base, u, z, p, q;
-  atan_terms(y, x, small, base, u, z, p, q);
-  return base + (u + u * (z * p / q));
-}
-
-/// atan2(y, x) / y for y >= 0 and x > 0 (the log map's angle over sine), with its limit 1 / x at
-/// y = 0; one division fewer than dividing atan2 by y.
-OPF_ALWAYS_INLINE double atan2_nonnegative_over_y(double y, double x) {
-  bool small;
-  double base, u, z, p, q;
-  atan_terms(y, x, small, base, u, z, p, q);
-  const double series = q + z * p;  // atan(u) = u series / q
-  // Small ratio: u = y / x, so (u series / q) / y = series / (q x), finite as y -> 0.
-  const double numerator = small ? series : base * q + u * series;
-  double denominator = small ? q * x : q * y;
-  denominator = denominator > 0.0 ? denominator : 1.0;
-  return numerator / denominator;
-}
-
-/// sin x and cos x for |x| < 2^30 (rotation half-angles): reduction by pi/2 in three parts, then
-/// Cephes' polynomials on [-pi/4, pi/4] and the quadrant's swap and signs.
-OPF_ALWAYS_INLINE void sincos(double x, double& s, double& c) {
-  constexpr double kTwoOverPi = 0.63661977236758134308;
-  std::int64_t n;
-  const double k = round_nearest(x * kTwoOverPi, n);
-  const double r = ((x - k * 1.57079625129699707031) - k * 7.54978941586159635335E-8) -
-                   k * 5.39030285815811905290E-15;
-  const double z = r * r;
-  const double sin_r =
-      r + r * z *
-              (((((1.58962301576546568060E-10 * z - 2.50507477628578072866E-8) * z +
-                  2.75573136213857245213E-6) *
-                     z -
-                 1.98412698295895385996E-4) *
-                    z +
-                8.33333333332211858878E-3) *
-                   z -
-               1.66666666666666307295E-1);
-  const double cos_r = 1.0 - 0.5 * z +
-                       z * z *
-                           (((((-1.13585365213876817300E-11 * z + 2.08757008419747316778E-9) * z -
-                               2.75573141792967388112E-7) *
-                                  z +
-                              2.48015872888517045348E-5) *
-                                 z -
-                             1.38888888888730564116E-3) *
-                                z +
-                            4.16666666666665929218E-2);
-  const std::int64_t quadrant = n & 3;
-  const bool swap = (quadrant & 1) != 0;
-  const double s0 = swap ? cos_r : sin_r;
-  const double c0 = swap ? sin_r : cos_r;
-  s = (quadrant & 2) != 0 ? -s0 : s0;
-  c = (quadrant == 1 || quadrant == 2) ? -c0 : c0;
 }
 
 /// Natural log of a positive normal float (Cephes logf).
@@ -237,7 +145,8 @@ OPF_ALWAYS_INLINE float atan2_nonnegative_over_y(float y, float x) {
   constexpr float kTanPiOver8 = 0.4142135623730950f;
   const bool steep = y > kTan3PiOver8 * x;
   const bool middle = !steep && y > kTanPiOver8 * x;
-  const bool small = y <= kTanPiOver8 * x;  // not !steep && !middle: see atan_terms
+  // Not !steep && !middle: GCC 12 does not vectorise that combination of AVX-512 masks.
+  const bool small = y <= kTanPiOver8 * x;
   const float num = steep ? -x : (middle ? y - x : y);
   float den = steep ? y : (middle ? y + x : x);
   den = den > 0.0f ? den : 1.0f;
