@@ -9,8 +9,8 @@
 
 namespace opf {
 
-/// Keeps freed heap memory for reuse (glibc: trim threshold 256 MB, mmap threshold 32 MB, its maximum).
-/// Returns false where the allocator has no such settings.
+/// Keeps freed heap memory for reuse (glibc: trim threshold 256 MB, mmap threshold 32 MB, its
+/// maximum). Returns false where the allocator has no such settings.
 bool retain_freed_heap_memory();
 
 }  // namespace opf
