@@ -254,16 +254,18 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
   for (std::size_t i = 0; i < m; ++i) marks[ends[i]] = static_cast<std::int32_t>(i + 1);
 }
 
-// Systematic resampling, first half: slot k (of `count`) takes the particle whose interval
-// [C_{i-1}, C_i) of cumulative weight / total holds (k + offset) / count. Particle i's slots end
-// at e_i = ceil(count C_i / total - offset) (clamped to [0, count]), and e is nondecreasing, so
-// the particle of slot k is #{i : e_i <= k}. This marks each e_i with i + 1 (a later particle
-// overwrites an earlier one); the running maximum of the marks over k is then slot k's particle.
-// No branch depends on the weights; the last particle takes any remainder left by rounding.
-// Returns count + 1 marks (the last absorbs ends past the last slot). Requires n >= 2.
-template <class T>
-OPF_ALWAYS_INLINE std::vector<std::int32_t> systematic_marks(const T* __restrict w, std::size_t n,
-                                                             double offset, std::size_t count) {
+// Resampling by end marks: slot k (of `count`) takes the particle whose interval
+// [C_{i-1}, C_i) of cumulative weight / total holds slot k's position. When the positions
+// increase with k, particle i's slots end at e_i = #{k : position_k < C_i} (clamped to
+// [0, count]), e is nondecreasing, and the particle of slot k is #{i : e_i <= k}. This marks each
+// e_i with i + 1 (a later particle overwrites an earlier one); the running maximum of the marks
+// over k is then slot k's particle. No branch depends on the weights; the last particle takes any
+// remainder left by rounding. Returns count + 1 marks (the last absorbs ends past the last slot).
+// Requires n >= 2. `end_of(x)` maps x = count C_i / total to particle i's end slot (before
+// clamping).
+template <class T, class EndOf>
+OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std::size_t n,
+                                                      std::size_t count, const EndOf& end_of) {
   if (n >= (std::size_t{1} << 31) || count >= (std::size_t{1} << 31))
     throw std::length_error("systematic resampling: 2^31 particles or more");
   // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
@@ -295,12 +297,31 @@ OPF_ALWAYS_INLINE std::vector<std::int32_t> systematic_marks(const T* __restrict
   std::int32_t* __restrict e = ends.data();
 #pragma omp simd
   for (std::size_t i = 0; i < m; ++i) {
-    const double end = std::ceil(per_weight * c[i] - offset);
+    const double end = end_of(per_weight * c[i]);
     e[i] = static_cast<std::int32_t>(end < 0.0 ? 0.0 : (end > slots ? slots : end));
   }
   std::vector<std::int32_t> marks(count + 1, 0);
   mark_ends(e, m, marks.data());
   return marks;
+}
+
+// Systematic: slot k's position is (k + offset) / count, so particle i's slots end at
+// ceil(count C_i / total - offset).
+template <class T>
+OPF_ALWAYS_INLINE std::vector<std::int32_t> systematic_marks(const T* __restrict w, std::size_t n,
+                                                             double offset, std::size_t count) {
+  return end_marks(w, n, count, [=](double x) { return std::ceil(x - offset); });
+}
+
+// Slot k's particle is the running maximum of the marks up to k.
+template <class Index>
+OPF_ALWAYS_INLINE void running_maximum(const std::vector<std::int32_t>& marks, std::size_t count,
+                                       Index* __restrict indices) {
+  std::int32_t particle = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    particle = marks[k] > particle ? marks[k] : particle;
+    indices[k] = static_cast<Index>(particle);
+  }
 }
 
 template <class T, class Index>
@@ -311,11 +332,7 @@ OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double o
     return;
   }
   const std::vector<std::int32_t> marks = systematic_marks(w, n, offset, count);
-  std::int32_t particle = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    particle = marks[k] > particle ? marks[k] : particle;
-    indices[k] = static_cast<Index>(particle);
-  }
+  running_maximum(marks, count, indices);
 }
 
 // Systematic resampling straight into the next generation's rows: the running maximum of the
@@ -461,6 +478,22 @@ OPF_KERNEL void systematic_indices(const double* w, std::size_t n, double offset
 OPF_KERNEL void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
                                    std::size_t* indices) {
   systematic(w, n, offset, count, indices);
+}
+
+OPF_KERNEL void stratified_indices(const double* w, std::size_t n, const double* uniforms,
+                                   std::size_t count, std::size_t* indices) {
+  if (n < 2 || count == 0) {
+    std::fill(indices, indices + count, std::size_t{0});
+    return;
+  }
+  // Slot k's position is (k + u_k) / count: with m = floor(x), the slots below m all lie under
+  // C_i, slot m does when u_m < x - m, and the ones above do not.
+  const std::vector<std::int32_t> marks = end_marks(w, n, count, [=](double x) {
+    const double m = std::floor(x);
+    const auto slot = static_cast<std::size_t>(m < 0.0 ? 0.0 : m);
+    return slot >= count ? m : m + (uniforms[slot] < x - m ? 1.0 : 0.0);
+  });
+  running_maximum(marks, count, indices);
 }
 
 OPF_KERNEL void systematic_resample(const float* w, std::size_t n, double offset, const double* in,

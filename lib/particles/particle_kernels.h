@@ -71,6 +71,11 @@ void systematic_indices(const double* w, std::size_t n, double offset, std::size
 void systematic_indices(const float* w, std::size_t n, double offset, std::size_t count,
                         std::size_t* indices);
 
+/// Stratified resampling: as systematic_indices, with slot k at (k + uniforms[k]) / count
+/// (`count` uniforms in [0, 1)).
+void stratified_indices(const double* w, std::size_t n, const double* uniforms, std::size_t count,
+                        std::size_t* indices);
+
 /// Systematic resampling of n particles into n, as systematic_indices, with the particles'
 /// rows (`rows` rows of n: 3 of double for translation, 4 of float for rotation) copied from
 /// `in` to `out` on the way: no index array is written and read back.

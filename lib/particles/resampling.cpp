@@ -55,10 +55,14 @@ std::vector<std::size_t> resample_indices(const Eigen::VectorXd& weights, std::s
   switch (scheme) {
     case mrpt::bayes::CParticleFilter::prMultinomial:
       return multinomial(weights, count, random);
-    case mrpt::bayes::CParticleFilter::prStratified:
-      return walk_cdf(weights, count, [&](std::size_t k) {
-        return (static_cast<double>(k) + random.uniform()) / n;
-      });
+    case mrpt::bayes::CParticleFilter::prStratified: {
+      std::vector<double> uniforms(count);
+      for (double& u : uniforms) u = random.uniform();
+      std::vector<std::size_t> indices(count);
+      kernels::stratified_indices(weights.data(), static_cast<std::size_t>(weights.size()),
+                                  uniforms.data(), count, indices.data());
+      return indices;
+    }
     case mrpt::bayes::CParticleFilter::prSystematic: {
       std::vector<std::size_t> indices(count);
       kernels::systematic_indices(weights.data(), static_cast<std::size_t>(weights.size()),

@@ -67,6 +67,28 @@ TEST(ParticleKernels, SystematicIndicesFollowTheCumulativeWeights) {
   }
 }
 
+// Stratified resampling by end marks equals the walk over positions (k + u_k) / count.
+TEST(ParticleKernels, StratifiedIndicesFollowTheCumulativeWeights) {
+  Random random(7);
+  for (std::size_t n : {2, 7, 100, 5000}) {
+    std::vector<double> w(n), u(n);
+    for (double& v : w) v = std::exp(-8.0 * random.uniform());
+    for (double& v : u) v = random.uniform();
+    const double total = std::accumulate(w.begin(), w.end(), 0.0);
+    std::vector<std::size_t> expected;
+    double cumulative = w[0] / total;
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double position = (static_cast<double>(k) + u[k]) / static_cast<double>(n);
+      while (position >= cumulative && j + 1 < n) cumulative += w[++j] / total;
+      expected.push_back(j);
+    }
+    std::vector<std::size_t> indices(n);
+    kernels::stratified_indices(w.data(), n, u.data(), n, indices.data());
+    EXPECT_EQ(indices, expected) << n;
+  }
+}
+
 // The one-pass resampling copies exactly what the index walk selects.
 TEST(ParticleKernels, SystematicResampleCopiesTheSelectedParticles) {
   Random random(6);
