@@ -267,7 +267,7 @@ template <class T, class EndOf>
 OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std::size_t n,
                                                       std::size_t count, const EndOf& end_of) {
   if (n >= (std::size_t{1} << 31) || count >= (std::size_t{1} << 31))
-    throw std::length_error("systematic resampling: 2^31 particles or more");
+    throw std::length_error("resampling by end marks: 2^31 particles or more");
   // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
   // so the additions do not wait on each other.
   const std::size_t m = n - 1;  // the last particle's end is `count` by definition

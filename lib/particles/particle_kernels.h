@@ -8,7 +8,6 @@
 
 #include <array>
 #include <cstddef>
-#include <cstdint>
 
 namespace opf::kernels {
 
@@ -62,7 +61,7 @@ NormalisedWeights resampling_weights(const double* log_w, float* linear, std::si
 double relative_weights(const double* log_w, double* linear, std::size_t n);
 
 /// Systematic resampling of `count` particles from weights w (n of them, any positive total;
-/// n and count below 2^31, else std::length_error):
+/// n and count below 2^31, else std::length_error; the same for stratified_indices):
 /// slot k takes the particle whose interval of cumulative weight / total holds
 /// (k + offset) / count. Indices ascend. Branch-free passes: each particle's last slot, then a
 /// running maximum.

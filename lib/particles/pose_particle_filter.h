@@ -15,7 +15,6 @@
 #include <Eigen/Geometry>
 
 #include <cstdint>
-#include <vector>
 
 namespace opf {
 
