@@ -1,6 +1,7 @@
 #include "particles/particle_kernels.h"
 
 #include "particles/kernel_dispatch.h"
+#include "particles/sorted_gather.h"
 #include "particles/vector_math.h"
 
 #include <algorithm>
@@ -336,22 +337,18 @@ OPF_ALWAYS_INLINE void systematic(const T* __restrict w, std::size_t n, double o
 }
 
 // Systematic resampling straight into the next generation's rows: the running maximum of the
-// marks picks each slot's particle and its Rows values are copied at once, without an index
-// array written and read back.
-template <int Rows, class T>
+// marks picks each slot's particle and its rows are copied at once (sorted_gather.h), without an
+// index array written and read back.
+template <class T>
 OPF_ALWAYS_INLINE void systematic_gather(const float* __restrict w, std::size_t n, double offset,
-                                         const T* __restrict in, T* __restrict out) {
+                                         const T* __restrict in, std::size_t rows,
+                                         T* __restrict out) {
   if (n < 2) {
-    std::copy(in, in + Rows * n, out);
+    std::copy(in, in + rows * n, out);
     return;
   }
   const std::vector<std::int32_t> marks = systematic_marks(w, n, offset, n);
-  std::int32_t particle = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    particle = marks[k] > particle ? marks[k] : particle;
-    const auto p = static_cast<std::size_t>(particle);
-    for (int r = 0; r < Rows; ++r) out[r * n + k] = in[r * n + p];
-  }
+  gather_by_running_maximum(marks.data(), n, in, n, rows, out);
 }
 
 }  // namespace
@@ -499,13 +496,13 @@ OPF_KERNEL void stratified_indices(const double* w, std::size_t n, const double*
 OPF_KERNEL void systematic_resample(const float* w, std::size_t n, double offset, const double* in,
                                     std::size_t rows, double* out) {
   if (rows != 3) throw std::invalid_argument("systematic_resample: 3 rows of double expected");
-  systematic_gather<3>(w, n, offset, in, out);
+  systematic_gather(w, n, offset, in, rows, out);
 }
 
 OPF_KERNEL void systematic_resample(const float* w, std::size_t n, double offset, const float* in,
                                     std::size_t rows, float* out) {
   if (rows != 4) throw std::invalid_argument("systematic_resample: 4 rows of float expected");
-  systematic_gather<4>(w, n, offset, in, out);
+  systematic_gather(w, n, offset, in, rows, out);
 }
 
 template <class Index>

@@ -1,0 +1,199 @@
+#include "particles/sorted_gather.h"
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(OPF_NO_DISPATCH)
+#define OPF_GATHER_PERMUTES 1
+#include <immintrin.h>
+// GCC 12's intrinsics pass _mm512_undefined_epi32() as the unused merge source, which trips
+// -Wmaybe-uninitialized where they are inlined (GCC bug 105593, fixed in GCC 13).
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
+namespace opf::kernels {
+namespace {
+
+template <int Rows, class T>
+void scalar_rows(const std::int32_t* __restrict marks, std::size_t begin, std::size_t count,
+                 std::int32_t particle, const T* __restrict in, std::size_t n, std::size_t rows,
+                 T* __restrict out) {
+  const std::size_t row_count = Rows > 0 ? static_cast<std::size_t>(Rows) : rows;
+  for (std::size_t k = begin; k < count; ++k) {
+    particle = marks[k] > particle ? marks[k] : particle;
+    const auto p = static_cast<std::size_t>(particle);
+    for (std::size_t r = 0; r < row_count; ++r) out[r * count + k] = in[r * n + p];
+  }
+}
+
+// Slots [begin, count) from the running maximum `particle` so far.
+template <class T>
+void scalar_tail(const std::int32_t* marks, std::size_t begin, std::size_t count,
+                 std::int32_t particle, const T* in, std::size_t n, std::size_t rows, T* out) {
+  if (rows == 3) return scalar_rows<3>(marks, begin, count, particle, in, n, rows, out);
+  if (rows == 4) return scalar_rows<4>(marks, begin, count, particle, in, n, rows, out);
+  scalar_rows<0>(marks, begin, count, particle, in, n, rows, out);
+}
+
+#ifdef OPF_GATHER_PERMUTES
+
+// The running maximum over a block of sixteen marks, continuing from `carry` (the previous
+// block's last particle in every lane): four shift-and-max steps.
+[[gnu::target("avx512f")]] inline __m512i block_running_maximum(const std::int32_t* marks,
+                                                                __m512i carry) {
+  const __m512i zero = _mm512_setzero_si512();
+  __m512i m = _mm512_max_epi32(_mm512_loadu_si512(marks), carry);
+  m = _mm512_max_epi32(m, _mm512_alignr_epi32(m, zero, 15));  // lane l sees lane l - 1
+  m = _mm512_max_epi32(m, _mm512_alignr_epi32(m, zero, 14));
+  m = _mm512_max_epi32(m, _mm512_alignr_epi32(m, zero, 12));
+  return _mm512_max_epi32(m, _mm512_alignr_epi32(m, zero, 8));
+}
+
+// The lanes of a window [base, base + 2 width) that lie inside a row of n values; masked-off
+// lanes are not read.
+inline std::uint32_t lanes_inside(std::size_t available, std::size_t width) {
+  return available >= width ? (1u << width) - 1u : (1u << available) - 1u;
+}
+
+template <class T>
+void scalar_block(const std::int32_t* p, std::size_t k, const T* in, std::size_t n,
+                  std::size_t rows, std::size_t count, std::size_t lanes, T* out) {
+  for (std::size_t r = 0; r < rows; ++r)
+    for (std::size_t l = 0; l < lanes; ++l)
+      out[r * count + k + l] = in[r * n + static_cast<std::size_t>(p[l])];
+}
+
+#endif
+
+}  // namespace
+
+bool gather_uses_permutes() {
+#ifdef OPF_GATHER_PERMUTES
+  static const bool available = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") != 0;
+  }();
+  return available;
+#else
+  return false;
+#endif
+}
+
+void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t count, const float* in,
+                                      std::size_t n, std::size_t rows, float* out) {
+  scalar_tail(marks, 0, count, 0, in, n, rows, out);
+}
+
+void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t count,
+                                      const double* in, std::size_t n, std::size_t rows,
+                                      double* out) {
+  scalar_tail(marks, 0, count, 0, in, n, rows, out);
+}
+
+#ifdef OPF_GATHER_PERMUTES
+
+// Sixteen slots at a time: when their particles span fewer than 32, each row's block is the
+// permute of a 32-value window starting at the block's first particle.
+[[gnu::target("avx512f")]] void gather_by_running_maximum_permute(const std::int32_t* marks,
+                                                                  std::size_t count,
+                                                                  const float* in, std::size_t n,
+                                                                  std::size_t rows, float* out) {
+  const __m512i last_lane = _mm512_set1_epi32(15);
+  __m512i carry = _mm512_setzero_si512();
+  alignas(64) std::int32_t p[16];
+  std::size_t k = 0;
+  for (; k + 16 <= count; k += 16) {
+    const __m512i particles = block_running_maximum(marks + k, carry);
+    carry = _mm512_permutexvar_epi32(last_lane, particles);
+    _mm512_store_si512(p, particles);
+    const std::int32_t base = p[0];
+    if (p[15] - base >= 32) {
+      scalar_block(p, k, in, n, rows, count, 16, out);
+      continue;
+    }
+    const __m512i offsets = _mm512_sub_epi32(particles, _mm512_set1_epi32(base));
+    const std::size_t available = n - static_cast<std::size_t>(base);
+    const auto low = static_cast<__mmask16>(lanes_inside(available, 16));
+    const auto high =
+        static_cast<__mmask16>(available > 16 ? lanes_inside(available - 16, 16) : 0u);
+    for (std::size_t r = 0; r < rows; ++r) {
+      const float* window = in + r * n + static_cast<std::size_t>(base);
+      const __m512 a = _mm512_maskz_loadu_ps(low, window);
+      const __m512 b = high ? _mm512_maskz_loadu_ps(high, window + 16) : _mm512_setzero_ps();
+      _mm512_storeu_ps(out + r * count + k, _mm512_permutex2var_ps(a, offsets, b));
+    }
+  }
+  const std::int32_t particle = k > 0 ? p[15] : 0;
+  scalar_tail(marks, k, count, particle, in, n, rows, out);
+}
+
+// As for float, in two halves of eight slots, each from a window of 16 doubles.
+[[gnu::target("avx512f")]] void gather_by_running_maximum_permute(const std::int32_t* marks,
+                                                                  std::size_t count,
+                                                                  const double* in, std::size_t n,
+                                                                  std::size_t rows, double* out) {
+  const __m512i last_lane = _mm512_set1_epi32(15);
+  __m512i carry = _mm512_setzero_si512();
+  alignas(64) std::int32_t p[16];
+  std::size_t k = 0;
+  for (; k + 16 <= count; k += 16) {
+    const __m512i particles = block_running_maximum(marks + k, carry);
+    carry = _mm512_permutexvar_epi32(last_lane, particles);
+    _mm512_store_si512(p, particles);
+    for (std::size_t half = 0; half < 2; ++half) {
+      const std::int32_t* q = p + 8 * half;
+      const std::size_t slot = k + 8 * half;
+      const std::int32_t base = q[0];
+      if (q[7] - base >= 16) {
+        scalar_block(q, slot, in, n, rows, count, 8, out);
+        continue;
+      }
+      const __m256i eight =
+          half == 0 ? _mm512_castsi512_si256(particles) : _mm512_extracti64x4_epi64(particles, 1);
+      const __m512i offsets =
+          _mm512_sub_epi64(_mm512_cvtepi32_epi64(eight), _mm512_set1_epi64(base));
+      const std::size_t available = n - static_cast<std::size_t>(base);
+      const auto low = static_cast<__mmask8>(lanes_inside(available, 8));
+      const auto high = static_cast<__mmask8>(available > 8 ? lanes_inside(available - 8, 8) : 0u);
+      for (std::size_t r = 0; r < rows; ++r) {
+        const double* window = in + r * n + static_cast<std::size_t>(base);
+        const __m512d a = _mm512_maskz_loadu_pd(low, window);
+        const __m512d b = high ? _mm512_maskz_loadu_pd(high, window + 8) : _mm512_setzero_pd();
+        _mm512_storeu_pd(out + r * count + slot, _mm512_permutex2var_pd(a, offsets, b));
+      }
+    }
+  }
+  const std::int32_t particle = k > 0 ? p[15] : 0;
+  scalar_tail(marks, k, count, particle, in, n, rows, out);
+}
+
+#else
+
+void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t count,
+                                       const float* in, std::size_t n, std::size_t rows,
+                                       float* out) {
+  gather_by_running_maximum_scalar(marks, count, in, n, rows, out);
+}
+
+void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t count,
+                                       const double* in, std::size_t n, std::size_t rows,
+                                       double* out) {
+  gather_by_running_maximum_scalar(marks, count, in, n, rows, out);
+}
+
+#endif
+
+void gather_by_running_maximum(const std::int32_t* marks, std::size_t count, const float* in,
+                               std::size_t n, std::size_t rows, float* out) {
+  if (gather_uses_permutes())
+    gather_by_running_maximum_permute(marks, count, in, n, rows, out);
+  else
+    gather_by_running_maximum_scalar(marks, count, in, n, rows, out);
+}
+
+void gather_by_running_maximum(const std::int32_t* marks, std::size_t count, const double* in,
+                               std::size_t n, std::size_t rows, double* out) {
+  if (gather_uses_permutes())
+    gather_by_running_maximum_permute(marks, count, in, n, rows, out);
+  else
+    gather_by_running_maximum_scalar(marks, count, in, n, rows, out);
+}
+
+}  // namespace opf::kernels
