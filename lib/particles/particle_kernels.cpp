@@ -62,18 +62,6 @@ OPF_ALWAYS_INLINE float rotation_angle(const Quat& r) {
   return 2.0f * v * vmath::atan2_nonnegative_over_y(v, std::fabs(r.w));
 }
 
-template <bool kPerParticle>
-OPF_ALWAYS_INLINE void perturb(float* __restrict q, std::size_t stride, std::size_t count,
-                               const float* __restrict noise, float sigma,
-                               const double* __restrict sigmas) {
-#pragma omp simd
-  for (std::size_t i = 0; i < count; ++i) {
-    const float s = kPerParticle ? static_cast<float>(sigmas[i]) : sigma;
-    const Quat step = exp_tangent(s * noise[i], s * noise[count + i], s * noise[2 * count + i]);
-    store(q, stride, i, normalised(multiply(load(q, stride, i), step)));
-  }
-}
-
 // Sums over particles run in fixed lanes: particle i adds to lane i mod W (W = one 512-bit
 // vector), and the lanes are added up in a fixed order at the end. Unlike `omp simd reduction`,
 // whose partial sums follow the vector width and the array's alignment, the result is then the
@@ -110,8 +98,8 @@ OPF_ALWAYS_INLINE TranslationSums sums(const double* __restrict x, std::size_t n
                                        const double* __restrict w,
                                        const std::array<double, 3> reference) {
   const double rx = reference[0], ry = reference[1], rz = reference[2];
-  const std::array<double, 10> s =
-      sum_in_lanes<double, 10>(n, [=](std::size_t i, std::size_t l, double(&a)[10][8]) {
+  const std::array<double, 10> s = sum_in_lanes<double, 10>(
+      n, [=](std::size_t i, std::size_t l, double(&a)[10][8]) OPF_INLINE_LAMBDA {
         const double wi = kWeighted ? w[i] : 1.0;
         const double dx = x[i] - rx, dy = x[n + i] - ry, dz = x[2 * n + i] - rz;
         a[0][l] += wi;
@@ -131,47 +119,22 @@ OPF_ALWAYS_INLINE TranslationSums sums(const double* __restrict x, std::size_t n
 template <bool kWeighted>
 OPF_ALWAYS_INLINE std::array<double, 10> markley(const float* __restrict q, std::size_t n,
                                                  const double* __restrict w) {
-  return sum_in_lanes<double, 10>(n, [=](std::size_t i, std::size_t l, double(&a)[10][8]) {
-    const double wi = kWeighted ? w[i] : 1.0;
-    const double vx = q[i], vy = q[n + i], vz = q[2 * n + i], vw = q[3 * n + i];
-    const double wx = wi * vx, wy = wi * vy, wz = wi * vz;
-    a[0][l] += wx * vx;
-    a[1][l] += wx * vy;
-    a[2][l] += wx * vz;
-    a[3][l] += wx * vw;
-    a[4][l] += wy * vy;
-    a[5][l] += wy * vz;
-    a[6][l] += wy * vw;
-    a[7][l] += wz * vz;
-    a[8][l] += wz * vw;
-    a[9][l] += wi * vw * vw;
-  });
-}
-
-// Sums of the tangent outer products in single precision (sixteen lanes, each adding n/16
-// terms: rounding near 1e-6 relative for the counts we use).
-template <bool kWeighted>
-OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::size_t n,
-                                                const double* __restrict w, const Quat inverse) {
-  // The invariants are copied to plain locals: GCC 12 does not vectorise this loop for AVX-512
-  // when they are read through a reference.
-  const float ix = inverse.x, iy = inverse.y, iz = inverse.z, iw = inverse.w;
-  return sum_in_lanes<float, 6>(n, [=](std::size_t i, std::size_t l, float(&a)[6][16]) {
-    const float wi = kWeighted ? static_cast<float>(w[i]) : 1.0f;
-    const Quat r = multiply({ix, iy, iz, iw}, load(q, n, i));
-    // log on the hemisphere w >= 0: d = 2 atan2(|v|, w) v / |v|, -> 2 v / w as |v| -> 0.
-    const float sign = r.w < 0.0f ? -1.0f : 1.0f;
-    const float vx = sign * r.x, vy = sign * r.y, vz = sign * r.z, rw = sign * r.w;
-    const float norm = std::sqrt(vx * vx + vy * vy + vz * vz);
-    const float factor = 2.0f * vmath::atan2_nonnegative_over_y(norm, rw);
-    const float dx = factor * vx, dy = factor * vy, dz = factor * vz;
-    a[0][l] += wi * dx * dx;
-    a[1][l] += wi * dx * dy;
-    a[2][l] += wi * dx * dz;
-    a[3][l] += wi * dy * dy;
-    a[4][l] += wi * dy * dz;
-    a[5][l] += wi * dz * dz;
-  });
+  return sum_in_lanes<double, 10>(
+      n, [=](std::size_t i, std::size_t l, double(&a)[10][8]) OPF_INLINE_LAMBDA {
+        const double wi = kWeighted ? w[i] : 1.0;
+        const double vx = q[i], vy = q[n + i], vz = q[2 * n + i], vw = q[3 * n + i];
+        const double wx = wi * vx, wy = wi * vy, wz = wi * vz;
+        a[0][l] += wx * vx;
+        a[1][l] += wx * vy;
+        a[2][l] += wx * vz;
+        a[3][l] += wx * vw;
+        a[4][l] += wy * vy;
+        a[5][l] += wy * vz;
+        a[6][l] += wy * vw;
+        a[7][l] += wz * vz;
+        a[8][l] += wz * vw;
+        a[9][l] += wi * vw * vw;
+      });
 }
 
 // Maximum reductions run in eight explicit lanes: GCC 12 leaves `omp simd reduction(max)` over
@@ -186,42 +149,160 @@ OPF_ALWAYS_INLINE T lanes_max(const T (&lanes)[W]) {
   return top;
 }
 
-// out[i] = e(i), or out[i] += e(i) when `accumulate`, for every particle; returns the largest
-// e(i). Without `accumulate`, out is only written (it may hold anything before). T is the type
-// the exponents are computed in: float for rotation, run in blocks whose exponents are added to
-// the double log-weights in a second, cheap loop, so the costly one runs at float width.
-template <class T, class Exponent>
-OPF_ALWAYS_INLINE double write_exponents(std::size_t n, double* __restrict out, bool accumulate,
-                                         const Exponent& exponent) {
+// Rotation kernels run over blocks of particles held in L1: a first pass finds |v|^2 (the
+// squared sine of half the angle) and its largest value in the block; when every particle in
+// the block is within 60 degrees (|v|^2 <= 1/4, as in any cloud that tracks), the angle comes
+// from asin's polynomial in |v|^2 with no square root or division (which bound these loops'
+// throughput); otherwise from atan2. The choice is per block, so a stray particle costs its
+// block the slow path only.
+constexpr std::size_t kBlock = 256;
+constexpr float kConcentrated = 0.25f;  // |v|^2 <= 1/4: asin_over_x_of_square's domain
+
+// out[i] = e_i, or out[i] += e_i when `accumulate`, for every particle, where
+// fill(begin, size, block) writes the exponents of particles [begin, begin + size) to block;
+// returns the largest. Without `accumulate`, out is only written (it may hold anything before).
+// T is the type the exponents are computed in: float for rotation, whose exponents are then
+// added to the double log-weights in a second, cheap loop, so the costly one runs at float width.
+template <class T, class FillBlock>
+OPF_ALWAYS_INLINE double write_exponent_blocks(std::size_t n, double* __restrict out,
+                                               bool accumulate, const FillBlock& fill) {
   constexpr std::size_t kWidth = 64 / sizeof(T);  // lanes of one 512-bit vector
-  constexpr std::size_t kBlock = 256;
   T best[kWidth];
   std::fill(best, best + kWidth, -std::numeric_limits<T>::infinity());
   alignas(64) T block[kBlock];
   for (std::size_t begin = 0; begin < n; begin += kBlock) {
     const std::size_t size = std::min(kBlock, n - begin);
+    fill(begin, size, block);
+    double* __restrict o = out + begin;
     std::size_t i = 0;
     for (; i + kWidth <= size; i += kWidth) {
 #pragma omp simd
       for (std::size_t l = 0; l < kWidth; ++l) {
-        const T e = exponent(begin + i + l);
-        block[i + l] = e;
+        const T e = block[i + l];
         best[l] = e > best[l] ? e : best[l];
+        o[i + l] = accumulate ? o[i + l] + static_cast<double>(e) : static_cast<double>(e);
       }
     }
     for (; i < size; ++i) {
-      block[i] = exponent(begin + i);
       best[0] = block[i] > best[0] ? block[i] : best[0];
-    }
-    if (accumulate) {
-#pragma omp simd
-      for (std::size_t j = 0; j < size; ++j) out[begin + j] += static_cast<double>(block[j]);
-    } else {
-#pragma omp simd
-      for (std::size_t j = 0; j < size; ++j) out[begin + j] = static_cast<double>(block[j]);
+      o[i] = accumulate ? o[i] + static_cast<double>(block[i]) : static_cast<double>(block[i]);
     }
   }
   return static_cast<double>(lanes_max(best));
+}
+
+// Runs body(j, l) for j < size in vectorised chunks of W lanes (l = j mod W), then the tail.
+template <std::size_t W, class Body>
+OPF_ALWAYS_INLINE void in_lanes(std::size_t size, const Body& body) {
+  std::size_t j = 0;
+  for (; j + W <= size; j += W) {
+#pragma omp simd
+    for (std::size_t l = 0; l < W; ++l) body(j + l, l);
+  }
+  for (std::size_t l = 0; j < size; ++j, ++l) body(j, l);
+}
+
+// t[j] = value(j) for j < size, and the largest of them (NaN never is: both paths chosen on it
+// carry NaN through).
+template <class Value>
+OPF_ALWAYS_INLINE float write_and_find_largest(std::size_t size, float* __restrict t,
+                                               const Value& value) {
+  float top[16] = {};
+  in_lanes<16>(size, [&](std::size_t j, std::size_t l) OPF_INLINE_LAMBDA {
+    t[j] = value(j);
+    top[l] = t[j] > top[l] ? t[j] : top[l];
+  });
+  return lanes_max(top);
+}
+
+// The tangent random walk q_i <- normalise(q_i exp(e_i)), e_i = s_i (noise rows). exp needs sin
+// and cos of half the step's angle: for steps up to 90 degrees (|e|^2 <= pi^2 / 4, every block of
+// a random walk that tracks) they come from polynomials in |e|^2 / 4 (no square root, no
+// division); longer steps take the reduction and the division.
+template <bool kPerParticle>
+OPF_ALWAYS_INLINE void perturb(float* __restrict q, std::size_t stride, std::size_t count,
+                               const float* __restrict noise, float sigma,
+                               const double* __restrict sigmas) {
+  constexpr float kQuarterTurnSquared = static_cast<float>(vmath::kHalfPi * vmath::kHalfPi);
+  alignas(64) float t[kBlock];
+  for (std::size_t begin = 0; begin < count; begin += kBlock) {
+    const std::size_t size = std::min(kBlock, count - begin);
+    const float* __restrict nx = noise + begin;
+    const float* __restrict ny = noise + count + begin;
+    const float* __restrict nz = noise + 2 * count + begin;
+    const auto spread = [=](std::size_t j) OPF_INLINE_LAMBDA {
+      return kPerParticle ? static_cast<float>(sigmas[begin + j]) : sigma;
+    };
+    const float largest = write_and_find_largest(size, t, [=](std::size_t j) OPF_INLINE_LAMBDA {
+      const float s = spread(j);
+      return (s * s) * (nx[j] * nx[j] + ny[j] * ny[j] + nz[j] * nz[j]);
+    });
+    if (largest <= kQuarterTurnSquared) {
+#pragma omp simd
+      for (std::size_t j = 0; j < size; ++j) {
+        float sin_over_x, c;
+        vmath::sin_over_x_and_cos_of_square(0.25f * t[j], sin_over_x, c);
+        const float f = 0.5f * sin_over_x * spread(j);  // sin(|e|/2) / |e|, times s
+        const Quat step{f * nx[j], f * ny[j], f * nz[j], c};
+        store(q, stride, begin + j, normalised(multiply(load(q, stride, begin + j), step)));
+      }
+    } else {
+#pragma omp simd
+      for (std::size_t j = 0; j < size; ++j) {
+        const float s = spread(j);
+        const Quat step = exp_tangent(s * nx[j], s * ny[j], s * nz[j]);
+        store(q, stride, begin + j, normalised(multiply(load(q, stride, begin + j), step)));
+      }
+    }
+  }
+}
+
+// Sums of the tangent outer products in single precision (sixteen lanes, each adding n/16
+// terms: rounding near 1e-6 relative for the counts we use). Particle i adds to lane i mod 16,
+// as in sum_in_lanes: blocks are a whole number of lanes.
+template <bool kWeighted>
+OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::size_t n,
+                                                const double* __restrict w, const Quat inverse) {
+  // The invariants are copied to plain locals: GCC 12 does not vectorise this loop for AVX-512
+  // when they are read through a reference.
+  const float ix = inverse.x, iy = inverse.y, iz = inverse.z, iw = inverse.w;
+  LaneSums<float, 6> sums;
+  float(&a)[6][16] = sums.lanes;
+  // r_i = mean^-1 q_i on the hemisphere w >= 0, and |v|^2
+  alignas(64) float vx[kBlock], vy[kBlock], vz[kBlock], vw[kBlock], t[kBlock];
+  const auto add = [&](std::size_t begin, std::size_t j, std::size_t l, float factor)
+                       OPF_INLINE_LAMBDA {
+                         const float wi = kWeighted ? static_cast<float>(w[begin + j]) : 1.0f;
+                         const float dx = factor * vx[j], dy = factor * vy[j], dz = factor * vz[j];
+                         a[0][l] += wi * dx * dx;
+                         a[1][l] += wi * dx * dy;
+                         a[2][l] += wi * dx * dz;
+                         a[3][l] += wi * dy * dy;
+                         a[4][l] += wi * dy * dz;
+                         a[5][l] += wi * dz * dz;
+                       };
+  for (std::size_t begin = 0; begin < n; begin += kBlock) {
+    const std::size_t size = std::min(kBlock, n - begin);
+    const bool concentrated = write_and_find_largest(size, t, [&](std::size_t j) OPF_INLINE_LAMBDA {
+                                const Quat r = multiply({ix, iy, iz, iw}, load(q, n, begin + j));
+                                const float sign = r.w < 0.0f ? -1.0f : 1.0f;
+                                vx[j] = sign * r.x;
+                                vy[j] = sign * r.y;
+                                vz[j] = sign * r.z;
+                                vw[j] = sign * r.w;
+                                return r.x * r.x + r.y * r.y + r.z * r.z;
+                              }) <= kConcentrated;
+    // log: d = 2 atan2(|v|, w) v / |v| = 2 (asin(|v|) / |v|) v, -> 2 v as |v| -> 0.
+    if (concentrated)
+      in_lanes<16>(size, [&](std::size_t j, std::size_t l) OPF_INLINE_LAMBDA {
+        add(begin, j, l, 2.0f * vmath::asin_over_x_of_square(t[j]));
+      });
+    else
+      in_lanes<16>(size, [&](std::size_t j, std::size_t l) OPF_INLINE_LAMBDA {
+        add(begin, j, l, 2.0f * vmath::atan2_nonnegative_over_y(std::sqrt(t[j]), vw[j]));
+      });
+  }
+  return sums.totals();
 }
 
 // The largest value, and whether any is NaN.
@@ -279,8 +360,9 @@ OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std
   double start[kLanes] = {};
   for (std::size_t s = 0; s + 1 < kLanes; ++s) {
     const double* segment = c + s * length;
-    const double total = sum_in_lanes<double, 1>(
-        length, [=](std::size_t j, std::size_t l, double(&a)[1][8]) { a[0][l] += segment[j]; })[0];
+    const double total =
+        sum_in_lanes<double, 1>(length, [=](std::size_t j, std::size_t l, double(&a)[1][8])
+                                            OPF_INLINE_LAMBDA { a[0][l] += segment[j]; })[0];
     start[s + 1] = start[s] + total;
   }
   for (std::size_t j = 0; j < length; ++j) {
@@ -311,7 +393,7 @@ OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std
 template <class T>
 OPF_ALWAYS_INLINE std::vector<std::int32_t> systematic_marks(const T* __restrict w, std::size_t n,
                                                              double offset, std::size_t count) {
-  return end_marks(w, n, count, [=](double x) { return std::ceil(x - offset); });
+  return end_marks(w, n, count, [=](double x) OPF_INLINE_LAMBDA { return std::ceil(x - offset); });
 }
 
 // Slot k's particle is the running maximum of the marks up to k.
@@ -397,10 +479,18 @@ OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t 
                                         const std::array<double, 3>& z, double scale,
                                         double* __restrict out, bool accumulate) {
   const double zx = z[0], zy = z[1], zz = z[2];
-  return write_exponents<double>(n, out, accumulate, [=](std::size_t i) {
-    const double dx = x[i] - zx, dy = x[n + i] - zy, dz = x[2 * n + i] - zz;
-    return scale * (dx * dx + dy * dy + dz * dz);
-  });
+  return write_exponent_blocks<double>(
+      n, out, accumulate,
+      [=](std::size_t begin, std::size_t size, double* __restrict block) OPF_INLINE_LAMBDA {
+        const double* __restrict px = x + begin;
+        const double* __restrict py = x + n + begin;
+        const double* __restrict pz = x + 2 * n + begin;
+#pragma omp simd
+        for (std::size_t j = 0; j < size; ++j) {
+          const double dx = px[j] - zx, dy = py[j] - zy, dz = pz[j] - zz;
+          block[j] = scale * (dx * dx + dy * dy + dz * dz);
+        }
+      });
 }
 
 OPF_KERNEL double rotation_exponents(const float* __restrict q, std::size_t n,
@@ -410,10 +500,29 @@ OPF_KERNEL double rotation_exponents(const float* __restrict q, std::size_t n,
   const auto ix = static_cast<float>(-z[0]), iy = static_cast<float>(-z[1]),
              iz = static_cast<float>(-z[2]), iw = static_cast<float>(z[3]);
   const auto s = static_cast<float>(scale);
-  return write_exponents<float>(n, out, accumulate, [=](std::size_t i) {
-    const float angle = rotation_angle(multiply({ix, iy, iz, iw}, load(q, n, i)));
-    return s * (angle * angle);
-  });
+  return write_exponent_blocks<float>(
+      n, out, accumulate,
+      [=](std::size_t begin, std::size_t size, float* __restrict block) OPF_INLINE_LAMBDA {
+        const bool concentrated =
+            write_and_find_largest(size, block, [=](std::size_t j) OPF_INLINE_LAMBDA {
+              const Quat r = multiply({ix, iy, iz, iw}, load(q, n, begin + j));
+              return r.x * r.x + r.y * r.y + r.z * r.z;
+            }) <= kConcentrated;
+        if (concentrated) {
+      // theta^2 = (2 |v| asin(|v|) / |v|)^2 = 4 |v|^2 g^2
+#pragma omp simd
+          for (std::size_t j = 0; j < size; ++j) {
+            const float g = vmath::asin_over_x_of_square(block[j]);
+            block[j] = 4.0f * s * block[j] * (g * g);
+          }
+        } else {
+#pragma omp simd
+          for (std::size_t j = 0; j < size; ++j) {
+            const float angle = rotation_angle(multiply({ix, iy, iz, iw}, load(q, n, begin + j)));
+            block[j] = s * (angle * angle);
+          }
+        }
+      });
 }
 
 OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
@@ -422,8 +531,8 @@ OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
   bool nan = false;
   const double top = max_value(log_w, n, nan);
   if (nan || !std::isfinite(top)) return {false, 0.0};
-  const std::array<double, 2> sums =
-      sum_in_lanes<double, 2>(n, [=](std::size_t i, std::size_t l, double(&a)[2][8]) {
+  const std::array<double, 2> sums = sum_in_lanes<double, 2>(
+      n, [=](std::size_t i, std::size_t l, double(&a)[2][8]) OPF_INLINE_LAMBDA {
         const double w = vmath::exp_nonpositive(log_w[i] - top);
         linear[i] = w;
         a[0][l] += w;
@@ -447,8 +556,8 @@ OPF_KERNEL NormalisedWeights resampling_weights(const double* __restrict log_w,
   bool nan = false;
   const double top = max_value(log_w, n, nan);
   if (nan || !std::isfinite(top)) return {false, 0.0};
-  const std::array<double, 2> sums =
-      sum_in_lanes<float, 2>(n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) {
+  const std::array<double, 2> sums = sum_in_lanes<float, 2>(
+      n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) OPF_INLINE_LAMBDA {
         const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
         linear[i] = w;
         a[0][l] += w;
@@ -461,10 +570,11 @@ OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __res
                                    std::size_t n) {
   bool nan = false;
   const double top = max_value(log_w, n, nan);
-  return sum_in_lanes<double, 1>(n, [=](std::size_t i, std::size_t l, double(&a)[1][8]) {
-    linear[i] = vmath::exp_nonpositive(log_w[i] - top);
-    a[0][l] += linear[i];
-  })[0];
+  return sum_in_lanes<double, 1>(
+      n, [=](std::size_t i, std::size_t l, double(&a)[1][8]) OPF_INLINE_LAMBDA {
+        linear[i] = vmath::exp_nonpositive(log_w[i] - top);
+        a[0][l] += linear[i];
+      })[0];
 }
 
 OPF_KERNEL void systematic_indices(const double* w, std::size_t n, double offset, std::size_t count,
@@ -485,7 +595,7 @@ OPF_KERNEL void stratified_indices(const double* w, std::size_t n, const double*
   }
   // Slot k's position is (k + u_k) / count: with m = floor(x), the slots below m all lie under
   // C_i, slot m does when u_m < x - m, and the ones above do not.
-  const std::vector<std::int32_t> marks = end_marks(w, n, count, [=](double x) {
+  const std::vector<std::int32_t> marks = end_marks(w, n, count, [=](double x) OPF_INLINE_LAMBDA {
     const double m = std::floor(x);
     const auto slot = static_cast<std::size_t>(m < 0.0 ? 0.0 : m);
     return slot >= count ? m : m + (uniforms[slot] < x - m ? 1.0 : 0.0);

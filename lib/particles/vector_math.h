@@ -11,6 +11,9 @@
 namespace opf::vmath {
 
 #define OPF_ALWAYS_INLINE [[gnu::always_inline]] inline
+// On a lambda handed to an inline kernel helper: without it GCC may compile the lambda's body
+// once, outside the target_clones versions of the kernel (baseline instructions, no vectors).
+#define OPF_INLINE_LAMBDA __attribute__((always_inline))
 
 inline constexpr double kHalfPi = 1.57079632679489661923;
 inline constexpr double kQuarterPi = 0.78539816339744830962;
@@ -90,6 +93,26 @@ OPF_ALWAYS_INLINE void sincos_reduced(float x, float& s, float& c) {
   s = ((-1.9515295891E-4f * z + 8.3321608736E-3f) * z - 1.6666654611E-1f) * z * x + x;
   c = ((2.443315711809948E-5f * z - 1.388731625493765E-3f) * z + 4.166664568298827E-2f) * z * z -
       0.5f * z + 1.0f;
+}
+
+/// sin(x) / x and cos(x) from z = x^2, for |x| <= pi/4 (z <= 0.6168): sincos_reduced's
+/// polynomials without x itself, so a caller holding |v|^2 needs no square root or division.
+OPF_ALWAYS_INLINE void sin_over_x_and_cos_of_square(float z, float& sin_over_x, float& c) {
+  sin_over_x = ((-1.9515295891E-4f * z + 8.3321608736E-3f) * z - 1.6666654611E-1f) * z + 1.0f;
+  c = ((2.443315711809948E-5f * z - 1.388731625493765E-3f) * z + 4.166664568298827E-2f) * z * z -
+      0.5f * z + 1.0f;
+}
+
+/// asin(s) / s from z = s^2, for |s| <= 1/2 (z <= 1/4): Cephes asinf's polynomial (about 2.5e-7
+/// relative), with no square root or division. For a unit quaternion (v, w) with |v| <= 1/2
+/// (turns up to 60 degrees), the angle is 2 |v| asin_over_x_of_square(|v|^2).
+OPF_ALWAYS_INLINE float asin_over_x_of_square(float z) {
+  return ((((4.2163199048E-2f * z + 2.4181311049E-2f) * z + 4.5470025998E-2f) * z +
+           7.4953002686E-2f) *
+              z +
+          1.6666752422E-1f) *
+             z +
+         1.0f;
 }
 
 // ---- Single precision, for the parts of a step whose results need 1e-7 relative accuracy only

@@ -123,28 +123,37 @@ TEST(ParticleKernels, SystematicResamplingOfEqualWeightsKeepsEveryParticle) {
   for (std::size_t k = 0; k < 20; ++k) EXPECT_EQ(indices[k], 17u);
 }
 
+// Steps of every length: up to ~6 rad in every block (sin and cos by reduction), up to ~0.6 rad
+// (the polynomials in |e|^2), the same with one shared sigma, and short steps with one long one
+// in the second block.
 TEST(ParticleKernels, PerturbQuaternionsIsTheTangentRandomWalk) {
   Random random(2);
   const std::size_t n = 1003;  // not a multiple of any vector width
   const Eigen::Quaterniond centre = so3::exp(Eigen::Vector3d(0.3, -1.2, 2.0));
-  std::vector<float> q = quaternion_rows(n, centre, 0.3, random);
-  const std::vector<float> before = q;
-  std::vector<float> noise(3 * n);
-  for (float& v : noise) v = static_cast<float>(3.0 * random.normal());  // up to ~12 sigma
-  std::vector<double> sigma(n);
-  for (double& s : sigma) s = 0.5 * random.uniform();  // steps up to ~6 rad
-  kernels::perturb_quaternions(q.data(), n, n, noise.data(), 0.0, sigma.data());
-  double worst_angle = 0.0, worst_norm = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d step =
-        sigma[i] * Eigen::Vector3d(noise[i], noise[n + i], noise[2 * n + i]);
-    const Eigen::Quaterniond expected = column(before, n, i) * so3::exp(step);
-    worst_angle = std::max(worst_angle, so3::angle_between(column(q, n, i), expected));
-    worst_norm = std::max(worst_norm, std::abs(column(q, n, i).norm() - 1.0));
+  enum class Steps { kLong, kShort, kShared, kOneLong };
+  for (const Steps steps : {Steps::kLong, Steps::kShort, Steps::kShared, Steps::kOneLong}) {
+    std::vector<float> q = quaternion_rows(n, centre, 0.3, random);
+    const std::vector<float> before = q;
+    std::vector<float> noise(3 * n);
+    for (float& v : noise) v = static_cast<float>(3.0 * random.normal());  // up to ~12 sigma
+    std::vector<double> sigma(n);
+    const double largest = steps == Steps::kLong ? 0.5 : 0.05;
+    for (double& s : sigma) s = steps == Steps::kShared ? largest : largest * random.uniform();
+    if (steps == Steps::kOneLong) sigma[300] = 1.0;
+    kernels::perturb_quaternions(q.data(), n, n, noise.data(), largest,
+                                 steps == Steps::kShared ? nullptr : sigma.data());
+    double worst_angle = 0.0, worst_norm = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector3d step =
+          sigma[i] * Eigen::Vector3d(noise[i], noise[n + i], noise[2 * n + i]);
+      const Eigen::Quaterniond expected = column(before, n, i) * so3::exp(step);
+      worst_angle = std::max(worst_angle, so3::angle_between(column(q, n, i), expected));
+      worst_norm = std::max(worst_norm, std::abs(column(q, n, i).norm() - 1.0));
+    }
+    // Single precision: a few float epsilons (1.2e-7) of angle and of norm.
+    EXPECT_LT(worst_angle, 1e-6) << static_cast<int>(steps);
+    EXPECT_LT(worst_norm, 5e-7) << static_cast<int>(steps);
   }
-  // Single precision: a few float epsilons (1.2e-7) of angle and of norm.
-  EXPECT_LT(worst_angle, 1e-6);
-  EXPECT_LT(worst_norm, 5e-7);
 }
 
 TEST(ParticleKernels, RotateQuaternionsTurnsEveryParticle) {
@@ -158,25 +167,78 @@ TEST(ParticleKernels, RotateQuaternionsTurnsEveryParticle) {
     EXPECT_LT(so3::angle_between(column(q, n, i), turn * column(before, n, i)), 1e-6);
 }
 
+// Clouds of every spread: 0.05 rad keeps every block of particles within 60 degrees of z (the
+// kernel's asin polynomial), 1.5 rad puts far particles in every block (the arctangent over its
+// whole range), 0.3 rad mixes the two; one far particle among near ones sends only its block
+// down the arctangent path.
+std::vector<float> cloud_of_spread(std::size_t n, const Eigen::Quaterniond& centre, double spread,
+                                   Random& random) {
+  std::vector<float> q = quaternion_rows(n, centre, spread > 0.0 ? spread : 0.05, random);
+  if (spread < 0.0) {  // one stray particle, 2.5 rad away, in the second block
+    const Eigen::Quaterniond far = centre * so3::exp(Eigen::Vector3d(0.0, 2.5, 0.0));
+    for (int r = 0; r < 4; ++r) q[r * n + 300] = static_cast<float>(far.coeffs()[r]);
+  }
+  return q;
+}
+
+// Float quaternions resolve angles to a few 1e-8 rad; the product z^-1 q adds about four
+// roundings of 6e-8 per component, so the kernel's angle is good to 5e-7 rad (the worst seen over
+// these clouds is 4e-7 near pi and 1.2e-7 below 60 degrees). The exponent s theta^2 then moves
+// by at most |s| (2 theta + delta) delta.
+double exponent_tolerance(double scale, double angle) {
+  constexpr double kAngleResolution = 5e-7;
+  return std::abs(scale) * (2.0 * angle + kAngleResolution) * kAngleResolution;
+}
+
 TEST(ParticleKernels, RotationExponentsAreMinusHalfSquaredAnglesOverVariance) {
   Random random(4);
-  const std::size_t n = 1001;
+  const std::size_t n = 1001;  // three whole blocks and a partial one
   const Eigen::Quaterniond z = so3::exp(Eigen::Vector3d(1.0, 0.5, -2.0));
-  // Angles from near 0 to near pi: every range of the arctangent.
-  const std::vector<float> q = quaternion_rows(n, z, 1.5, random);
-  const double variance = 0.0025, scale = -0.5 / variance;
-  std::vector<double> out(n, 1.0);
-  const double best = kernels::rotation_exponents(q.data(), n, {z.x(), z.y(), z.z(), z.w()}, scale,
-                                                  out.data(), true);
-  double expected_best = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < n; ++i) {
-    const double angle = so3::angle_between(column(q, n, i), z);
-    const double expected = scale * angle * angle;
-    expected_best = std::max(expected_best, expected);
-    // float angles: relative 1e-6 of the exponent, or 1e-6 absolute near 0
-    EXPECT_NEAR(out[i], 1.0 + expected, 1e-6 * std::abs(expected) + 1e-6) << i;
+  for (const double spread : {0.05, 0.3, 1.5, -1.0}) {
+    const std::vector<float> q = cloud_of_spread(n, z, spread, random);
+    const double variance = 0.0025, scale = -0.5 / variance;
+    std::vector<double> out(n, 1.0);
+    const double best = kernels::rotation_exponents(q.data(), n, {z.x(), z.y(), z.z(), z.w()},
+                                                    scale, out.data(), true);
+    double expected_best = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+      const double angle = so3::angle_between(column(q, n, i), z);
+      const double expected = scale * angle * angle;
+      expected_best = std::max(expected_best, expected);
+      EXPECT_NEAR(out[i], 1.0 + expected, exponent_tolerance(scale, angle))
+          << "spread " << spread << ", particle " << i;
+    }
+    EXPECT_NEAR(best, expected_best, exponent_tolerance(scale, std::sqrt(expected_best / scale)));
   }
-  EXPECT_NEAR(best, expected_best, 1e-6 * std::abs(expected_best) + 1e-6);
+}
+
+// The tangent second moment about the mean against so3::log in double, for every kind of block.
+TEST(ParticleKernels, TangentSecondMomentIsTheSumOfLogOuterProducts) {
+  Random random(8);
+  const std::size_t n = 1001;
+  const Eigen::Quaterniond mean = so3::exp(Eigen::Vector3d(-0.4, 1.1, 0.3));
+  for (const double spread : {0.05, 0.3, 1.0, -1.0}) {
+    const std::vector<float> q = cloud_of_spread(n, mean, spread, random);
+    std::vector<double> w(n);
+    for (double& v : w) v = random.uniform();
+    for (const bool weighted : {false, true}) {
+      const std::array<double, 6> t = kernels::tangent_second_moment(
+          q.data(), n, weighted ? w.data() : nullptr, {-mean.x(), -mean.y(), -mean.z(), mean.w()});
+      std::array<double, 6> expected{};
+      for (std::size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d d = so3::log(mean.conjugate() * column(q, n, i));
+        const double wi = weighted ? w[i] : 1.0;
+        const std::array<double, 6> terms{d.x() * d.x(), d.x() * d.y(), d.x() * d.z(),
+                                          d.y() * d.y(), d.y() * d.z(), d.z() * d.z()};
+        for (std::size_t k = 0; k < 6; ++k) expected[k] += wi * terms[k];
+      }
+      // Single precision tangent vectors: 1e-6 relative to the largest diagonal term.
+      const double tolerance = 1e-6 * std::max({expected[0], expected[3], expected[5]});
+      for (std::size_t k = 0; k < 6; ++k)
+        EXPECT_NEAR(t[k], expected[k], tolerance)
+            << "spread " << spread << ", weighted " << weighted << ", term " << k;
+    }
+  }
 }
 
 TEST(ParticleKernels, TranslationExponentsOverwriteOrAccumulate) {
