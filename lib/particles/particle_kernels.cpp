@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -354,9 +355,12 @@ OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std
   // so the additions do not wait on each other.
   const std::size_t m = n - 1;  // the last particle's end is `count` by definition
   const std::size_t length = (m + kLanes - 1) / kLanes;
-  std::vector<double> cumulative(kLanes * length, 0.0);
-  std::copy(w, w + m, cumulative.begin());  // (to double: the sums need it)
-  double* __restrict c = cumulative.data();
+  // Scratch left uninitialised where it is written in full before it is read.
+  const auto cumulative = std::make_unique_for_overwrite<double[]>(kLanes * length);
+  double* __restrict c = cumulative.get();
+#pragma omp simd
+  for (std::size_t i = 0; i < m; ++i) c[i] = static_cast<double>(w[i]);  // the sums need double
+  std::fill(c + m, c + kLanes * length, 0.0);
   double start[kLanes] = {};
   for (std::size_t s = 0; s + 1 < kLanes; ++s) {
     const double* segment = c + s * length;
@@ -376,8 +380,8 @@ OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std
   const double total = start[kLanes - 1] + static_cast<double>(w[n - 1]);
   const double slots = static_cast<double>(count);
   const double per_weight = total > 0.0 ? slots / total : 0.0;
-  std::vector<std::int32_t> ends(m);
-  std::int32_t* __restrict e = ends.data();
+  const auto ends = std::make_unique_for_overwrite<std::int32_t[]>(m);
+  std::int32_t* __restrict e = ends.get();
 #pragma omp simd
   for (std::size_t i = 0; i < m; ++i) {
     const double end = end_of(per_weight * c[i]);
