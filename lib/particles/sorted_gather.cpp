@@ -34,12 +34,12 @@ void scalar_tail(const std::int32_t* marks, std::size_t begin, std::size_t count
 
 #ifdef OPF_GATHER_PERMUTES
 
-// The running maximum over a block of sixteen marks, continuing from `carry` (the previous
-// block's last particle in every lane): four shift-and-max steps.
-[[gnu::target("avx512f")]] inline __m512i block_running_maximum(const std::int32_t* marks,
-                                                                __m512i carry) {
+// The running maximum within a block of sixteen marks: four shift-and-max steps. It does not
+// depend on earlier blocks, so blocks overlap in the pipeline; the previous blocks' maximum is
+// applied afterwards with one max (the only dependence from block to block).
+[[gnu::target("avx512f")]] inline __m512i block_running_maximum(const std::int32_t* marks) {
   const __m512i zero = _mm512_setzero_si512();
-  __m512i m = _mm512_max_epi32(_mm512_loadu_si512(marks), carry);
+  __m512i m = _mm512_loadu_si512(marks);
   m = _mm512_max_epi32(m, _mm512_alignr_epi32(m, zero, 15));  // lane l sees lane l - 1
   m = _mm512_max_epi32(m, _mm512_alignr_epi32(m, zero, 14));
   m = _mm512_max_epi32(m, _mm512_alignr_epi32(m, zero, 12));
@@ -100,8 +100,9 @@ void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t cou
   alignas(64) std::int32_t p[16];
   std::size_t k = 0;
   for (; k + 16 <= count; k += 16) {
-    const __m512i particles = block_running_maximum(marks + k, carry);
-    carry = _mm512_permutexvar_epi32(last_lane, particles);
+    const __m512i local = block_running_maximum(marks + k);
+    const __m512i particles = _mm512_max_epi32(local, carry);
+    carry = _mm512_max_epi32(carry, _mm512_permutexvar_epi32(last_lane, local));
     _mm512_store_si512(p, particles);
     const std::int32_t base = p[0];
     if (p[15] - base >= 32) {
@@ -134,8 +135,9 @@ void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t cou
   alignas(64) std::int32_t p[16];
   std::size_t k = 0;
   for (; k + 16 <= count; k += 16) {
-    const __m512i particles = block_running_maximum(marks + k, carry);
-    carry = _mm512_permutexvar_epi32(last_lane, particles);
+    const __m512i local = block_running_maximum(marks + k);
+    const __m512i particles = _mm512_max_epi32(local, carry);
+    carry = _mm512_max_epi32(carry, _mm512_permutexvar_epi32(last_lane, local));
     _mm512_store_si512(p, particles);
     for (std::size_t half = 0; half < 2; ++half) {
       const std::int32_t* q = p + 8 * half;
