@@ -5,6 +5,7 @@
 #include <atomic>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace opf {
@@ -21,6 +22,21 @@ TEST(WorkerPool, RunsEveryIndexExactlyOnceRoundAfterRound) {
         for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(runs[i].load(), 1) << i;
       }
     }
+  }
+}
+
+// Rounds further apart than the spin: the threads must fall asleep and still wake for each round;
+// and tasks longer than the spin: the caller must sleep until the last worker is done.
+TEST(WorkerPool, WakesSleepingThreadsAndWaitsForSlowTasks) {
+  WorkerPool pool(3);
+  for (int round = 0; round < 5; ++round) {
+    std::this_thread::sleep_for(4 * WorkerPool::kSpin);
+    std::vector<std::atomic<int>> runs(6);
+    pool.for_each(runs.size(), [&](std::size_t i) {
+      if (i % 3 == 0) std::this_thread::sleep_for(2 * WorkerPool::kSpin);
+      runs[i].fetch_add(1);
+    });
+    for (std::size_t i = 0; i < runs.size(); ++i) ASSERT_EQ(runs[i].load(), 1) << i;
   }
 }
 
