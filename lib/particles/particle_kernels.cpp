@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -351,41 +352,44 @@ OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std
                                                       std::size_t count, const EndOf& end_of) {
   if (n >= (std::size_t{1} << 31) || count >= (std::size_t{1} << 31))
     throw std::length_error("resampling by end marks: 2^31 particles or more");
-  // The cumulative sum runs as eight interleaved chains over eight segments of a padded copy,
-  // so the additions do not wait on each other.
   const std::size_t m = n - 1;  // the last particle's end is `count` by definition
-  const std::size_t length = (m + kLanes - 1) / kLanes;
-  // Scratch left uninitialised where it is written in full before it is read.
-  const auto cumulative = std::make_unique_for_overwrite<double[]>(kLanes * length);
-  double* __restrict c = cumulative.get();
-#pragma omp simd
-  for (std::size_t i = 0; i < m; ++i) c[i] = static_cast<double>(w[i]);  // the sums need double
-  std::fill(c + m, c + kLanes * length, 0.0);
-  double start[kLanes] = {};
-  for (std::size_t s = 0; s + 1 < kLanes; ++s) {
-    const double* segment = c + s * length;
-    const double total =
-        sum_in_lanes<double, 1>(length, [=](std::size_t j, std::size_t l, double(&a)[1][8])
-                                            OPF_INLINE_LAMBDA { a[0][l] += segment[j]; })[0];
-    start[s + 1] = start[s] + total;
-  }
-  for (std::size_t j = 0; j < length; ++j) {
-    for (std::size_t s = 0; s < kLanes; ++s) {
-      start[s] += c[s * length + j];
-      c[s * length + j] = start[s];
-    }
-  }
-  // Ends in slots: count C_i / total. After the chains, the last one's sum covers every
-  // particle but the last.
-  const double total = start[kLanes - 1] + static_cast<double>(w[n - 1]);
+  // Ends in slots: count C_i / total.
+  const double total = sum_in_lanes<double, 1>(
+      n, [=](std::size_t i, std::size_t l, double(&a)[1][8])
+             OPF_INLINE_LAMBDA { a[0][l] += static_cast<double>(w[i]); })[0];
   const double slots = static_cast<double>(count);
   const double per_weight = total > 0.0 ? slots / total : 0.0;
+  // The cumulative sums in blocks of eight: each block's own prefix sums in three shift-and-add
+  // steps (GCC vector extensions: valignq and vaddpd with AVX-512, the same additions in the same
+  // order on any CPU), plus the sum of the blocks before it. Only that last addition carries
+  // from block to block. Scratch is left uninitialised: it is written in full before it is read.
+  const auto scratch = std::make_unique_for_overwrite<double[]>(m);
+  double* __restrict c = scratch.get();
+  using Double8 = double __attribute__((vector_size(64)));
+  using Index8 = std::int64_t __attribute__((vector_size(64)));
+  const Double8 zero = {};
+  Double8 carry = {};
+  std::size_t i = 0;
+  for (; i + 8 <= m; i += 8) {
+    Double8 x;
+    for (int l = 0; l < 8; ++l) x[l] = static_cast<double>(w[i + l]);
+    x += __builtin_shuffle(zero, x, Index8{0, 8, 9, 10, 11, 12, 13, 14});  // + x[l - 1]
+    x += __builtin_shuffle(zero, x, Index8{0, 1, 8, 9, 10, 11, 12, 13});   // + x[l - 2]
+    x += __builtin_shuffle(zero, x, Index8{0, 1, 2, 3, 8, 9, 10, 11});     // + x[l - 4]
+    const Double8 cumulative = x + carry;
+    std::memcpy(c + i, &cumulative, sizeof cumulative);
+    carry += __builtin_shuffle(x, Index8{7, 7, 7, 7, 7, 7, 7, 7});
+  }
+  for (double cumulative = carry[0]; i < m; ++i) {
+    cumulative += static_cast<double>(w[i]);
+    c[i] = cumulative;
+  }
   const auto ends = std::make_unique_for_overwrite<std::int32_t[]>(m);
   std::int32_t* __restrict e = ends.get();
 #pragma omp simd
-  for (std::size_t i = 0; i < m; ++i) {
-    const double end = end_of(per_weight * c[i]);
-    e[i] = static_cast<std::int32_t>(end < 0.0 ? 0.0 : (end > slots ? slots : end));
+  for (std::size_t k = 0; k < m; ++k) {
+    const double end = end_of(per_weight * c[k]);
+    e[k] = static_cast<std::int32_t>(end < 0.0 ? 0.0 : (end > slots ? slots : end));
   }
   std::vector<std::int32_t> marks(count + 1, 0);
   mark_ends(e, m, marks.data());
