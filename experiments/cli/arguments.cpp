@@ -64,13 +64,20 @@ std::optional<unsigned long long> Arguments::get_count(const std::string& name) 
   return value;
 }
 
-SplitCommandLine split_positional(const std::vector<std::string>& raw) {
+SplitCommandLine split_positional(const std::vector<std::string>& raw,
+                                  const std::vector<OptionSpec>& specs) {
+  const auto is_switch = [&](const std::string& option) {
+    for (const OptionSpec& spec : specs)
+      if ("--" + spec.name == option) return spec.value_name.empty();
+    return false;
+  };
   SplitCommandLine split;
   for (std::size_t i = 0; i < raw.size(); ++i) {
     const bool help = raw[i] == "--help" || raw[i] == "-h";
     if (help || raw[i].rfind("--", 0) == 0) {
       split.options.push_back(raw[i]);
-      if (!help && raw[i].find('=') == std::string::npos && i + 1 < raw.size())
+      if (!help && !is_switch(raw[i]) && raw[i].find('=') == std::string::npos &&
+          i + 1 < raw.size())
         split.options.push_back(raw[++i]);
     } else {
       split.positional.push_back(raw[i]);

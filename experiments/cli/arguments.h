@@ -37,13 +37,14 @@ class Arguments {
   bool help_ = false;
 };
 
-/// Splits a command line into options (with their values) and positional arguments, for
-/// commands whose every option takes a value except --help / -h.
+/// Splits a command line into options (with their values) and positional arguments: every option
+/// takes the next argument as its value except --help / -h and the switches of `specs`.
 struct SplitCommandLine {
   std::vector<std::string> options;
   std::vector<std::string> positional;
 };
-SplitCommandLine split_positional(const std::vector<std::string>& raw);
+SplitCommandLine split_positional(const std::vector<std::string>& raw,
+                                  const std::vector<OptionSpec>& specs);
 
 /// "a,b,,c" -> {"a", "b", "c"}: the comma-separated lists of options like --estimators.
 std::vector<std::string> split_list(const std::string& text);

@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace opf::cli {
@@ -24,6 +25,13 @@ std::vector<OptionSpec> specs(bool reproduce) {
        reproduce ? "where results go (default: results)"
                  : "where results go (default: results/<experiment name>)"},
   };
+  if (!reproduce) {
+    s.push_back({"first-seed", "K",
+                 "seed index of the first run (default 0): seeds K..K+N-1 are the same runs as in "
+                 "a longer run with the same --seed"});
+    s.push_back({"frames", "N", "track the first N frames only (default: all the file's)"});
+    s.push_back({"no-figures", "", "write the CSVs and summary.json, not the figures"});
+  }
   for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
   return s;
 }
@@ -38,6 +46,10 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   settings_from(args);  // a bad --config fails before any rendering
   const std::uint64_t seed = seed_from(args);
   const std::size_t threads = threads_from(args);
+  const std::size_t first_seed = args.get_count("first-seed").value_or(0);
+  const std::optional<std::size_t> frames = args.get_count("frames");
+  if (frames && *frames == 0) throw UsageError{"option '--frames' must be at least 1"};
+  const bool with_figures = !args.has("no-figures");
 
   std::vector<experiments::ExperimentResults> all;
   std::vector<std::filesystem::path> figures;
@@ -46,30 +58,41 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     std::cerr << "\r\033[K" << line << std::flush;
   };
   for (const std::string& path : paths) {
-    const sim::ExperimentConfig config = sim::load_experiment(path);
+    sim::ExperimentConfig config = sim::load_experiment(path);
+    if (frames) {
+      if (*frames > static_cast<std::size_t>(config.frames))
+        throw UsageError{"option '--frames': " + path + " has " + std::to_string(config.frames) +
+                         " frames"};
+      config.frames = static_cast<int>(*frames);
+    }
     const EstimatorSettings settings = settings_from(
         args, config.estimator_config.empty() ? EstimatorSettings{}
                                               : load_estimator_settings(config.estimator_config));
     if (config.closed_loop) {
-      all.push_back(
-          experiments::run_closed_loop(config, names, settings, seeds, seed, progress, threads));
-      for (auto& figure : experiments::write_figures(out, config, {}, all.back()))
-        figures.push_back(std::move(figure));
+      all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
+                                                 threads, first_seed));
+      if (with_figures)
+        for (auto& figure : experiments::write_figures(out, config, {}, all.back()))
+          figures.push_back(std::move(figure));
       continue;
     }
     const experiments::Observation observation = experiments::observe_experiment(config, progress);
     all.push_back(experiments::run_open_loop(config, observation, names, settings, seeds, seed,
-                                             progress, threads));
-    for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
-      figures.push_back(std::move(figure));
+                                             progress, threads, first_seed));
+    if (with_figures)
+      for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
+        figures.push_back(std::move(figure));
   }
   std::cerr << "\r\033[K";
+  // The runs CSV last: its presence tells a sweep that this run finished.
   for (const auto& results : all)
     experiments::write_records_csv(out / (results.experiment + "_frames.csv"), results);
   experiments::write_summary_json(out / "summary.json", all);
+  for (const auto& results : all)
+    experiments::write_runs_csv(out / (results.experiment + "_runs.csv"), results);
   experiments::print_results_table(std::cout, all);
-  std::cout << "\nper-frame results, summary.json and " << figures.size() << " figures written to "
-            << out.string() << "\n";
+  std::cout << "\nper-frame and per-run results, summary.json and " << figures.size()
+            << " figures written to " << out.string() << "\n";
   return 0;
 }
 
@@ -77,7 +100,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
 
 int run_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs(false);
-  const auto [options, positional] = split_positional(raw);
+  const auto [options, positional] = split_positional(raw, option_specs);
   const Arguments args(options, option_specs);
   if (args.help()) {
     std::cout << usage("run EXPERIMENT.yaml",

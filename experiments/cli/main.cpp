@@ -5,6 +5,7 @@
 #include "evaluate_command.h"
 #include "experiment_commands.h"
 #include "render_command.h"
+#include "sweep_command.h"
 #include "track_command.h"
 
 #include <exception>
@@ -25,6 +26,7 @@ constexpr const char* kHelp =
     "  reproduce  run the paper's simulated experiments and print Table I beside the paper's\n"
     "  run        run one experiment file (rendered scene, every estimator, several seeds)\n"
     "  render     render one frame of an experiment with what the detector sees\n"
+    "  sweep      run a grid of experiment runs across the cores, resumable, into one table\n"
     "\n"
     "Run 'opf <command> --help' for a command's options.\n";
 
@@ -45,6 +47,7 @@ int main(int argc, char** argv) {
     if (command == "reproduce") return opf::cli::reproduce_command(rest);
     if (command == "run") return opf::cli::run_command(rest);
     if (command == "render") return opf::cli::render_command(rest);
+    if (command == "sweep") return opf::cli::sweep_command(rest);
     std::cerr << "opf: unknown command '" << command << "'\n\n" << kHelp;
     return 2;
   } catch (const opf::cli::UsageError& error) {

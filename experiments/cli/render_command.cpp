@@ -29,7 +29,7 @@ constexpr const char* kSummary =
 
 int render_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
-  const auto [options, positional] = split_positional(raw);
+  const auto [options, positional] = split_positional(raw, option_specs);
   const Arguments args(options, option_specs);
   if (args.help()) {
     std::cout << usage("render EXPERIMENT.yaml", kSummary, option_specs);

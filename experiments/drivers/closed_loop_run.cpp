@@ -26,19 +26,19 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
                                   const std::vector<std::string>& estimators,
                                   const EstimatorSettings& settings, std::size_t seeds,
                                   std::uint64_t base_seed, const Progress& progress,
-                                  std::size_t threads) {
+                                  std::size_t threads, std::size_t first_seed) {
   if (!config.closed_loop)
     throw std::invalid_argument("run_closed_loop: not a closed-loop experiment");
   const sim::ClosedLoopSettings& loop = *config.closed_loop;
-  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}};
+  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}, first_seed};
   // One renderer for all runs: MRPT allows one off-screen renderer per process at a time.
   sim::CameraSensor sensor(camera_of(config));
   const double dt = 1.0 / config.rate;
 
-  for (std::size_t s = 0; s < seeds; ++s) {
+  for (std::size_t s = first_seed; s < first_seed + seeds; ++s) {
     const std::uint64_t seed = derive_seed(base_seed, s);
     for (const std::string& name : estimators) {
-      report_progress(progress, config, name, s, seeds);
+      report_progress(progress, config, name, s - first_seed, seeds);
       sim::ScriptedScene scene(config.bodies);
       const sim::BodyPose robot_start = scene.pose_of(loop.robot, 0.0);
       const Eigen::Vector3d payload_offset =

@@ -10,10 +10,11 @@ namespace opf::experiments {
 
 /// Renders every frame of every (estimator, seed) run, since the robot's motion depends on the
 /// estimates. Requires config.closed_loop. The frame errors are those of the objects of interest.
+/// Seeds as in run_open_loop.
 ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
                                   const std::vector<std::string>& estimators,
                                   const EstimatorSettings& settings, std::size_t seeds,
                                   std::uint64_t base_seed, const Progress& progress = {},
-                                  std::size_t threads = 1);
+                                  std::size_t threads = 1, std::size_t first_seed = 0);
 
 }  // namespace opf::experiments

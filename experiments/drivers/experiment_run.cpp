@@ -25,12 +25,12 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
                                 const std::vector<std::string>& estimators,
                                 const EstimatorSettings& settings, std::size_t seeds,
                                 std::uint64_t base_seed, const Progress& progress,
-                                std::size_t threads) {
+                                std::size_t threads, std::size_t first_seed) {
   if (observation.truth.size() != observation.camera.size())
     throw std::invalid_argument("run_open_loop: truth and camera frames differ in number");
-  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}};
+  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}, first_seed};
 
-  for (std::size_t s = 0; s < seeds; ++s) {
+  for (std::size_t s = first_seed; s < first_seed + seeds; ++s) {
     // The seed's measurement stream, shared by every estimator (paired comparison).
     const std::uint64_t seed = derive_seed(base_seed, s);
     Random noise = measurement_noise(seed);
@@ -40,7 +40,7 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
                                               config.measurement, noise));
 
     for (const std::string& name : estimators) {
-      report_progress(progress, config, name, s, seeds);
+      report_progress(progress, config, name, s - first_seed, seeds);
       Tracker tracker(make_estimator_factory(name, settings), seed, threads);
       ErrorAccumulator errors;
       for (std::size_t k = 0; k < frames.size(); ++k) {

@@ -57,6 +57,7 @@ struct ExperimentResults {
   std::vector<FrameRecord> records;  ///< every tracked body, estimator, seed and frame
   /// Closed-loop experiments only: per estimator, one outcome per seed.
   std::map<std::string, std::vector<DropOutcome>> drops;
+  std::size_t first_seed = 0;  ///< the seed index of runs[...][0] (see run_open_loop)
 };
 
 /// Called before each (estimator, seed) run: a line for the progress display.
@@ -70,11 +71,14 @@ Random measurement_noise(std::uint64_t run_seed);
 void report_progress(const Progress& progress, const sim::ExperimentConfig& config,
                      const std::string& estimator, std::size_t seed_index, std::size_t seeds);
 
-/// Throws std::invalid_argument for an unknown estimator (the registry's message).
+/// Runs seed indices first_seed .. first_seed + seeds - 1, each with run seed
+/// derive_seed(base_seed, index): a part of a longer run reproduces its seeds exactly (sweeps
+/// run one seed per process). Records carry the seed index. Throws std::invalid_argument for an
+/// unknown estimator (the registry's message).
 ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Observation& observation,
                                 const std::vector<std::string>& estimators,
                                 const EstimatorSettings& settings, std::size_t seeds,
                                 std::uint64_t base_seed, const Progress& progress = {},
-                                std::size_t threads = 1);
+                                std::size_t threads = 1, std::size_t first_seed = 0);
 
 }  // namespace opf::experiments

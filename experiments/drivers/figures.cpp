@@ -34,21 +34,22 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
                                                  const ExperimentResults& results) {
   std::vector<std::filesystem::path> written;
   for (const std::string& object : config.objects_of_interest) {
-    LineChart translation{config.name + ": " + object + " translation error (seed 1)",
+    const std::string seed = " (seed " + std::to_string(results.first_seed + 1) + ")";
+    LineChart translation{config.name + ": " + object + " translation error" + seed,
                           "frame",
                           "m",
                           {},
                           false,
                           900,
                           420};
-    LineChart rotation{config.name + ": " + object + " rotation error, geodesic (seed 1)",
+    LineChart rotation{config.name + ": " + object + " rotation error, geodesic" + seed,
                        "frame",
                        "rad",
                        {},
                        false,
                        900,
                        420};
-    LineChart trace{config.name + ": " + object + " trace of Q~ (seed 1)",
+    LineChart trace{config.name + ": " + object + " trace of Q~" + seed,
                     "frame",
                     "m^2 + rad^2",
                     {},
@@ -60,7 +61,7 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
       ChartSeries t{estimator, {}, {}, r, g, b}, q{estimator, {}, {}, r, g, b},
           u{estimator, {}, {}, r, g, b};
       for (const FrameRecord& record : results.records) {
-        if (record.seed_index != 0 || record.estimator != estimator ||
+        if (record.seed_index != results.first_seed || record.estimator != estimator ||
             record.estimate.object != object || record.estimate.hypothesis != 0)
           continue;
         const auto truth = make_pose(record.truth.position, record.truth.orientation);
@@ -95,7 +96,9 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
       const auto [r, g, b] = colour_of(estimator);
       const cv::Scalar colour(b, g, r);
       for (const FrameRecord& record : results.records) {
-        if (record.frame != k || record.seed_index != 0 || record.estimator != estimator) continue;
+        if (record.frame != k || record.seed_index != results.first_seed ||
+            record.estimator != estimator)
+          continue;
         if (std::find(config.objects_of_interest.begin(), config.objects_of_interest.end(),
                       record.estimate.object) == config.objects_of_interest.end())
           continue;

@@ -62,6 +62,34 @@ std::string number(double v) {
 
 }  // namespace
 
+void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& results) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "experiment,estimator,seed,translation_error,rotation_error_paper,"
+           "rotation_error_geodesic,translation_error_unobserved,frames,unobserved_frames,"
+           "payload_released,payload_landed,miss_distance\n";
+    for (const std::string& estimator : results.estimators) {
+      const auto runs = results.runs.find(estimator);
+      if (runs == results.runs.end()) continue;
+      const auto drops = results.drops.find(estimator);
+      for (std::size_t k = 0; k < runs->second.size(); ++k) {
+        const RunErrors& e = runs->second[k];
+        out << csv::quote_if_needed(results.experiment) << ',' << estimator << ','
+            << results.first_seed + k << ',' << number(e.translation) << ','
+            << number(e.rotation_paper) << ',' << number(e.rotation_geodesic) << ','
+            << number(e.translation_unobserved) << ',' << e.frames << ',' << e.unobserved_frames;
+        if (drops != results.drops.end() && k < drops->second.size()) {
+          const DropOutcome& d = drops->second[k];
+          out << ',' << (d.released ? 1 : 0) << ',' << (d.landed ? 1 : 0) << ','
+              << (d.released ? number(d.miss_distance) : "");
+        } else {
+          out << ",,,";
+        }
+        out << '\n';
+      }
+    }
+  });
+}
+
 void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "frame,t,object,estimator,seed,true_x,true_y,true_z,true_qx,true_qy,true_qz,true_qw,"

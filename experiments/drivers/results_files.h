@@ -13,6 +13,13 @@ namespace opf::experiments {
 /// frame,t,object,estimator,seed,true_x,...,true_qw,x,...,qw,trace,mode,visible,hypothesis,alert
 void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results);
 
+/// One row per estimator and seed, the tidy form sweeps aggregate:
+/// experiment,estimator,seed,translation_error,rotation_error_paper,rotation_error_geodesic,
+/// translation_error_unobserved,frames,unobserved_frames,payload_released,payload_landed,
+/// miss_distance (errors in m and rad, means over the frames of the objects of interest; seed is
+/// the seed index; the payload columns are empty for open-loop experiments).
+void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& results);
+
 /// experiments.<name>.<estimator>.{translation_error, rotation_error_paper,
 /// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus seeds, and for
 /// closed-loop experiments payload_released and payload_landed (counts over the seeds).

@@ -153,6 +153,39 @@ void YamlReader::get(std::string_view key, std::string& out) {
   out = scalar(*entry, "a string");
 }
 
+void YamlReader::get(std::string_view key, std::vector<std::string>& out) {
+  const Entry* entry = find(key);
+  if (entry == nullptr) return;
+  const std::string expectation = "a list of names or values";
+  if (entry->value.IsScalar()) {
+    out = {entry->value.Scalar()};
+    return;
+  }
+  if (!entry->value.IsSequence() || entry->value.size() == 0)
+    fail(key, "expected " + expectation + ", got " +
+                  (entry->value.IsSequence() ? std::string("an empty list")
+                                             : describe(entry->value)));
+  std::vector<std::string> values;
+  for (const YAML::Node& item : entry->value) {
+    if (!item.IsScalar())
+      throw InputError(source_, line_of(item), key_path(key),
+                       "expected " + expectation + ", got " + describe(item) + " in the list",
+                       kKey);
+    values.push_back(item.Scalar());
+  }
+  out = std::move(values);
+}
+
+std::vector<YamlReader::Item> YamlReader::items(std::string_view key) {
+  std::vector<Item> result;
+  const Entry* entry = find(key);
+  if (entry == nullptr || entry->value.IsNull()) return result;
+  if (!entry->value.IsMap()) fail(key, "expected a mapping, got " + describe(entry->value));
+  for (const auto& pair : entry->value)
+    result.push_back({pair.first.Scalar(), pair.second, line_of(pair.first)});
+  return result;
+}
+
 void YamlReader::get_positive(std::string_view key, double& out) {
   const Entry* entry = find(key);
   if (entry == nullptr) return;

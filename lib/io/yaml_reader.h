@@ -35,6 +35,23 @@ class YamlReader {
   /// A sequence of exactly `size` finite numbers, e.g. `camera_position: [0.55, 0, 0.49]`.
   void get(std::string_view key, std::vector<double>& out, std::size_t size);
 
+  /// A non-empty list of scalars, e.g. `estimators: [opf, pf]`; a single scalar reads as a list
+  /// of one. InputError for mappings, nested lists and empty lists.
+  void get(std::string_view key, std::vector<std::string>& out);
+
+  /// One entry of a mapping whose keys are data rather than options (a sweep's parameter grid).
+  struct Item {
+    std::string key;
+    YAML::Node value;
+    std::size_t line = 0;  ///< 1-based line of the key
+  };
+  /// The entries of the mapping at `key` in file order (none when absent); they all count as
+  /// read, whatever their keys. InputError when `key` holds something else.
+  std::vector<Item> items(std::string_view key);
+
+  /// The file (or other source) this reader's errors name.
+  const std::string& source() const { return source_; }
+
   /// get() that also requires out > 0 (for counts: out >= 1).
   void get_positive(std::string_view key, double& out);
   void get_positive(std::string_view key, std::size_t& out);

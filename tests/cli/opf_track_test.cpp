@@ -1,5 +1,6 @@
 // End-to-end tests of the `opf` program: runs the built binary on the bundled example log.
 
+#include "cli/opf_program.h"
 #include "io/estimate_csv.h"
 #include "io/measurement_log.h"
 
@@ -19,38 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kOpf = OPF_CLI_PATH;
 const std::string kData = std::string(OPF_SOURCE_DIR) + "/experiments/data/";
-
-class OpfProgram : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ =
-        fs::temp_directory_path() /
-        ("opf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  /// Runs `opf ARGS`, stdout and stderr to files; returns the exit status.
-  int run(const std::string& args) {
-    const std::string command =
-        kOpf + " " + args + " >" + (dir_ / "stdout").string() + " 2>" + (dir_ / "stderr").string();
-    const int status = std::system(command.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::string read(const fs::path& path) const {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-  std::string out() const { return read(dir_ / "stdout"); }
-  std::string err() const { return read(dir_ / "stderr"); }
-
-  fs::path dir_;
-};
 
 TEST_F(OpfProgram, TrackRoundTripsTheExampleLog) {
   const fs::path est = dir_ / "est.csv";
@@ -123,7 +93,8 @@ TEST_F(OpfProgram, EverySubcommandHasHelp) {
   // Each command's help names its own options: the estimator-running ones take --seed.
   for (const auto& [command, option] :
        {std::pair{"track", "--seed"}, std::pair{"evaluate", "--seed"}, std::pair{"run", "--seed"},
-        std::pair{"reproduce", "--seed"}, std::pair{"render", "--frame"}}) {
+        std::pair{"reproduce", "--seed"}, std::pair{"render", "--frame"},
+        std::pair{"sweep", "--jobs"}}) {
     ASSERT_EQ(run(std::string(command) + " --help"), 0);
     EXPECT_NE(out().find("Usage: opf " + std::string(command)), std::string::npos) << out();
     EXPECT_NE(out().find(option), std::string::npos) << command;

@@ -1,0 +1,78 @@
+#include "sweep_command.h"
+
+#include "arguments.h"
+#include "drivers/sweep_executor.h"
+#include "drivers/sweep_table.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+namespace opf::cli {
+namespace {
+
+std::vector<OptionSpec> specs() {
+  return {
+      {"out", "DIR", "where the runs and the table go (default: results/sweeps/<sweep name>)"},
+      {"jobs", "N", "runs at once, each on one thread (default: the machine's cores)"},
+      {"list", "", "print the runs (and which are done) without running anything"},
+  };
+}
+
+constexpr const char* kSummary =
+    "Expands a sweep file (see experiments/sweeps/) into runs, one per experiment,\n"
+    "estimator, variant, grid point and seed, and runs each as `opf run` across the\n"
+    "machine's cores. Runs whose result files exist are skipped, so a stopped sweep\n"
+    "resumes. Writes <out>/<name>.csv, one row per run with its parameters and errors,\n"
+    "and prints the errors per configuration (mean +- std over seeds). Each run keeps\n"
+    "its settings.yaml, log.txt and `opf run` outputs under <out>/<experiment>/...\n"
+    "Exits 1 when a run failed (its log is named).";
+
+}  // namespace
+
+int sweep_command(const std::vector<std::string>& raw) {
+  const auto option_specs = specs();
+  const auto [options, positional] = split_positional(raw, option_specs);
+  const Arguments args(options, option_specs);
+  if (args.help()) {
+    std::cout << usage("sweep SWEEP.yaml", kSummary, option_specs);
+    return 0;
+  }
+  if (positional.size() != 1) throw UsageError{"expected one sweep file"};
+  const experiments::SweepSpec spec = experiments::load_sweep(positional[0]);
+  const std::filesystem::path out =
+      args.get("out").value_or((std::filesystem::path("results") / "sweeps" / spec.name).string());
+  const std::size_t jobs =
+      args.get_count("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
+  if (jobs == 0) throw UsageError{"option '--jobs' must be at least 1"};
+  const std::vector<experiments::SweepRun> runs = experiments::expand_sweep(spec);
+
+  if (args.has("list")) {
+    for (const auto& run : runs)
+      std::cout << (std::filesystem::exists(out / run.result_file()) ? "done     " : "pending  ")
+                << run.directory.string() << "\n";
+    std::cout << runs.size() << " runs\n";
+    return 0;
+  }
+  std::cerr << spec.name << ": " << runs.size() << " runs, " << jobs << " at a time, in "
+            << out.string() << "\n";
+  const experiments::SweepExecution execution =
+      experiments::execute_sweep(runs, out, std::filesystem::read_symlink("/proc/self/exe"), jobs,
+                                 std::cerr, isatty(STDERR_FILENO) != 0);
+  const std::filesystem::path table = out / (spec.name + ".csv");
+  const std::size_t ok = experiments::write_sweep_table(spec, runs, out, table);
+  experiments::print_sweep_summary(std::cout, table);
+  std::cout << "\n"
+            << ok << " of " << runs.size() << " runs in " << table.string() << " ("
+            << execution.skipped << " were done before, " << execution.completed << " ran now)\n";
+  if (execution.failed.empty()) return 0;
+  std::cerr << execution.failed.size() << " runs failed; their logs:\n";
+  for (const auto& dir : execution.failed)
+    std::cerr << "  " << (out / dir / "log.txt").string() << "\n";
+  return 1;
+}
+
+}  // namespace opf::cli

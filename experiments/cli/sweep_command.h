@@ -1,0 +1,12 @@
+#pragma once
+// `opf sweep SWEEP.yaml`: a grid of experiment runs (experiments/sweeps/), executed across the
+// machine's cores with resume, aggregated into one tidy CSV.
+
+#include <string>
+#include <vector>
+
+namespace opf::cli {
+
+int sweep_command(const std::vector<std::string>& args);
+
+}  // namespace opf::cli

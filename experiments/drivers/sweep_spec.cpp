@@ -1,0 +1,208 @@
+#include "drivers/sweep_spec.h"
+
+#include "estimators/estimator_settings_yaml.h"
+#include "estimators/registry.h"
+#include "io/input_error.h"
+#include "io/yaml_reader.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace opf::experiments {
+namespace {
+
+constexpr auto kKey = InputError::FieldKind::kKey;
+
+// A bare name is a bundled experiment (experiments/<name>.yaml); anything with a slash or a
+// .yaml suffix is a path relative to the sweep file.
+std::filesystem::path resolve_experiment(const std::string& entry,
+                                         const std::filesystem::path& sweep_file) {
+  const bool is_path =
+      entry.find('/') != std::string::npos || std::filesystem::path(entry).extension() == ".yaml";
+  if (!is_path) return std::filesystem::path(OPF_SOURCE_DIR) / "experiments" / (entry + ".yaml");
+  const std::filesystem::path path(entry);
+  return path.is_absolute() ? path : sweep_file.parent_path() / path;
+}
+
+std::string scalar_text(const YAML::Node& node, const std::string& source, std::size_t line,
+                        const std::string& key) {
+  if (!node.IsScalar())
+    throw InputError(source, line, key, "expected a single value (a number, true/false or a name)",
+                     kKey);
+  return node.Scalar();
+}
+
+std::vector<std::string> split_path(const std::string& key) {
+  std::vector<std::string> parts;
+  std::stringstream stream(key);
+  for (std::string part; std::getline(stream, part, '.');) parts.push_back(part);
+  return parts;
+}
+
+// Checks one combination of settings with the estimator settings reader; its errors name the
+// generated text, so they are re-anchored at the sweep file's line of the offending key.
+void check_settings(const SweepSpec& spec, const std::vector<SweepSetting>& settings) {
+  for (const SweepSetting& s : settings) {
+    if (s.key != kParticlesKey) continue;
+    std::size_t count = 0;
+    std::istringstream in(s.value);
+    if (!(in >> count) || !in.eof() || count == 0)
+      throw InputError(spec.file.string(), s.line, s.key,
+                       "expected a positive integer, got \"" + s.value + "\"", kKey);
+  }
+  try {
+    parse_estimator_settings(settings_yaml(spec, settings), spec.file.string());
+  } catch (const InputError& e) {
+    for (const SweepSetting& s : settings)
+      if (s.key == e.field() || e.field().rfind(s.key + ".", 0) == 0 ||
+          s.key.rfind(e.field() + ".", 0) == 0)
+        throw InputError(spec.file.string(), s.line, s.key, e.message(), kKey);
+    throw InputError(spec.file.string(), 0, e.field(), e.message(), kKey);
+  }
+}
+
+}  // namespace
+
+std::string settings_yaml(const SweepSpec& spec, const std::vector<SweepSetting>& settings) {
+  YAML::Node root = spec.config ? YAML::LoadFile(spec.config->string()) : YAML::Node();
+  if (!root.IsMap()) root = YAML::Node(YAML::NodeType::Map);
+  for (const SweepSetting& s : settings) {
+    if (s.key == kParticlesKey) continue;
+    const std::vector<std::string> parts = split_path(s.key);
+    std::vector<YAML::Node> chain{root};
+    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+      YAML::Node next = chain.back()[parts[i]];
+      if (!next.IsMap()) next = YAML::Node(YAML::NodeType::Map);
+      chain.back()[parts[i]] = next;
+      chain.push_back(next);
+    }
+    chain.back()[parts.back()] = YAML::Load(s.value);
+  }
+  YAML::Emitter out;
+  out << root;
+  return std::string(out.c_str()) + "\n";
+}
+
+std::vector<std::vector<SweepSetting>> grid_points(const SweepSpec& spec) {
+  std::vector<std::vector<SweepSetting>> points{{}};
+  for (const SweepParameter& parameter : spec.parameters) {
+    std::vector<std::vector<SweepSetting>> next;
+    for (const auto& point : points)
+      for (const std::string& value : parameter.values) {
+        next.push_back(point);
+        next.back().push_back({parameter.key, value, parameter.line});
+      }
+    points = std::move(next);
+  }
+  return points;
+}
+
+SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file) {
+  const std::string source = file.string();
+  YamlReader reader = YamlReader::parse(text, source);
+  SweepSpec spec;
+  spec.file = file;
+  spec.name = file.stem().string();
+  reader.get("name", spec.name);
+  reader.require("name", !spec.name.empty() && spec.name.find('/') == std::string::npos,
+                 "a name without slashes");
+
+  std::vector<std::string> experiments, estimators;
+  reader.get("experiments", experiments);
+  reader.get("estimators", estimators);
+  if (experiments.empty()) reader.fail("experiments", "missing: which experiments to run");
+  if (estimators.empty()) reader.fail("estimators", "missing: which estimators to run");
+  for (const std::string& entry : experiments) {
+    const std::filesystem::path path = resolve_experiment(entry, file);
+    reader.require("experiments", std::filesystem::is_regular_file(path),
+                   "experiment names or files; there is no " + path.string());
+    spec.experiments.push_back(path);
+  }
+  const std::vector<std::string> known = estimator_names();
+  for (const std::string& name : estimators) {
+    std::string list;
+    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+    reader.require("estimators", std::find(known.begin(), known.end(), name) != known.end(),
+                   "estimators among " + list + " ('" + name + "' is not one)");
+  }
+  spec.estimators = estimators;
+
+  reader.get_positive("seeds", spec.seeds);
+  std::size_t base_seed = spec.seed;
+  reader.get("seed", base_seed);
+  spec.seed = base_seed;
+  if (reader.has_key("particles")) {
+    std::size_t particles = 0;
+    reader.get_positive("particles", particles);
+    spec.particles = particles;
+  }
+  if (reader.has_key("frames")) {
+    std::size_t frames = 0;
+    reader.get_positive("frames", frames);
+    spec.frames = frames;
+  }
+  if (reader.has_key("config")) {
+    std::string config;
+    reader.get("config", config);
+    std::filesystem::path path(config);
+    if (!path.is_absolute()) path = file.parent_path() / path;
+    reader.require("config", std::filesystem::is_regular_file(path),
+                   "an estimator settings file; there is no " + path.string());
+    load_estimator_settings(path);  // its own errors name its lines
+    spec.config = path;
+  }
+
+  std::set<std::string> variant_names;
+  for (YamlReader* item : reader.sequence("variants")) {
+    SweepVariant variant;
+    item->get("name", variant.name);
+    if (variant.name.empty()) item->fail("name", "missing: each variant needs a name");
+    item->require("name", variant_names.insert(variant.name).second, "a name no other variant has");
+    item->require("name", variant.name.find('/') == std::string::npos, "a name without slashes");
+    for (const YamlReader::Item& setting : item->items("settings"))
+      variant.settings.push_back({setting.key,
+                                  scalar_text(setting.value, source, setting.line,
+                                              item->key_path("settings") + "." + setting.key),
+                                  setting.line});
+    spec.variants.push_back(std::move(variant));
+  }
+  if (spec.variants.empty()) spec.variants.push_back({"default", {}});
+
+  for (const YamlReader::Item& item : reader.items("parameters")) {
+    SweepParameter parameter{item.key, {}, item.line};
+    const std::string path = "parameters." + item.key;
+    if (!item.value.IsSequence() || item.value.size() == 0)
+      throw InputError(source, item.line, path, "expected a non-empty list of values", kKey);
+    std::set<std::string> seen;
+    for (const YAML::Node& value : item.value) {
+      parameter.values.push_back(scalar_text(value, source, item.line, path));
+      if (!seen.insert(parameter.values.back()).second)
+        throw InputError(source, item.line, path,
+                         "value \"" + parameter.values.back() + "\" appears twice", kKey);
+    }
+    spec.parameters.push_back(std::move(parameter));
+  }
+  reader.finish();
+
+  for (const SweepVariant& variant : spec.variants)
+    for (const auto& point : grid_points(spec)) {
+      std::vector<SweepSetting> settings = variant.settings;
+      settings.insert(settings.end(), point.begin(), point.end());
+      check_settings(spec, settings);
+    }
+  return spec;
+}
+
+SweepSpec load_sweep(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file.string(), 0, "", "cannot read the sweep file");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_sweep(text.str(), file);
+}
+
+}  // namespace opf::experiments

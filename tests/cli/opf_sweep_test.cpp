@@ -1,0 +1,147 @@
+// End-to-end tests of `opf sweep`: a tiny grid (the first 40 frames of general_op at 200
+// particles) run by the built binary.
+
+#include "cli/opf_program.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace opf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kGeneralOp = std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml";
+
+std::string tiny_sweep(const std::string& extra = "") {
+  return "name: tiny\nexperiments: [general_op]\nestimators: [opf]\nseeds: 2\nparticles: 200\n"
+         "parameters:\n  opf.uncertainty.kappa: [1.01, 1.1]\n" +
+         extra;
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+// Rows of a CSV as column -> value maps.
+std::vector<std::map<std::string, std::string>> rows_of(const std::string& text) {
+  std::stringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = split(line);
+    EXPECT_EQ(fields.size(), header.size()) << line;
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) row[header[i]] = fields[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+class OpfSweep : public OpfProgram {
+ protected:
+  fs::path write_sweep(const std::string& text) {
+    const fs::path path = dir_ / "tiny.yaml";
+    std::ofstream(path) << text;
+    return path;
+  }
+};
+
+// The table has a row per run with its parameter; each row equals the same seed of a plain
+// `opf run` with that setting; a second call runs nothing and a lost result is run again.
+TEST_F(OpfSweep, RunsTheGridMatchesOpfRunAndResumes) {
+  const fs::path sweep = write_sweep(tiny_sweep("frames: 40\n"));
+  const fs::path results = dir_ / "out";
+  ASSERT_EQ(run("sweep " + sweep.string() + " --out " + results.string() + " --jobs 2"), 0)
+      << err();
+  const std::string table = read(results / "tiny.csv");
+  const auto rows = rows_of(table);
+  ASSERT_EQ(rows.size(), 4u) << table;
+  for (const auto& row : rows) {
+    EXPECT_EQ(row.at("status"), "ok");
+    EXPECT_EQ(row.at("experiment"), "general_op");
+    EXPECT_EQ(row.at("variant"), "default");
+    EXPECT_EQ(row.at("frames"), "40");
+  }
+  EXPECT_EQ(rows[0].at("opf.uncertainty.kappa"), "1.01");
+  EXPECT_EQ(rows[3].at("opf.uncertainty.kappa"), "1.1");
+  EXPECT_EQ(rows[3].at("seed"), "1");
+  EXPECT_NE(out().find("general_op  opf  default  1.1  ->"), std::string::npos) << out();
+
+  // The same seeds from one `opf run` with kappa 1.1.
+  std::ofstream(dir_ / "kappa.yaml") << "opf:\n  uncertainty:\n    kappa: 1.1\n";
+  ASSERT_EQ(run("run " + kGeneralOp + " --estimators opf --seeds 2 --particles 200 --frames 40" +
+                " --no-figures --config " + (dir_ / "kappa.yaml").string() + " --out " +
+                (dir_ / "ref").string()),
+            0)
+      << err();
+  const auto reference = rows_of(read(dir_ / "ref" / "general_op_runs.csv"));
+  ASSERT_EQ(reference.size(), 2u);
+  for (std::size_t k = 0; k < 2; ++k)
+    for (const char* metric : {"translation_error", "rotation_error_geodesic", "frames"})
+      EXPECT_EQ(rows[2 + k].at(metric), reference[k].at(metric)) << metric << ", seed " << k;
+
+  ASSERT_EQ(run("sweep " + sweep.string() + " --out " + results.string()), 0) << err();
+  EXPECT_NE(out().find("4 of 4 runs in"), std::string::npos);
+  EXPECT_NE(out().find("(4 were done before, 0 ran now)"), std::string::npos) << out();
+  EXPECT_EQ(read(results / "tiny.csv"), table);
+
+  fs::remove(results /
+             "general_op/opf/default/opf.uncertainty.kappa=1.01/seed_1/general_op_runs.csv");
+  ASSERT_EQ(run("sweep " + sweep.string() + " --out " + results.string()), 0) << err();
+  EXPECT_NE(out().find("(3 were done before, 1 ran now)"), std::string::npos) << out();
+  EXPECT_EQ(read(results / "tiny.csv"), table);
+}
+
+// Runs that fail are named with their logs, kept in the table as missing, and the exit status
+// says so.
+TEST_F(OpfSweep, ReportsFailedRunsAndExitsNonZero) {
+  const fs::path sweep = write_sweep(tiny_sweep("frames: 100000\n"));
+  const fs::path results = dir_ / "out";
+  EXPECT_EQ(run("sweep " + sweep.string() + " --out " + results.string()), 1);
+  EXPECT_NE(err().find("4 runs failed; their logs:"), std::string::npos) << err();
+  const fs::path log = results / "general_op/opf/default/opf.uncertainty.kappa=1.1/seed_0/log.txt";
+  EXPECT_NE(err().find(log.string()), std::string::npos) << err();
+  EXPECT_NE(read(log).find("has 330 frames"), std::string::npos) << read(log);
+  const auto rows = rows_of(read(results / "tiny.csv"));
+  ASSERT_EQ(rows.size(), 4u);
+  for (const auto& row : rows) {
+    EXPECT_EQ(row.at("status"), "missing");
+    EXPECT_EQ(row.at("translation_error"), "");
+  }
+  EXPECT_NE(out().find("0 of 4 runs in"), std::string::npos) << out();
+}
+
+TEST_F(OpfSweep, ListsTheRunsWithoutRunningThem) {
+  const fs::path sweep = write_sweep(tiny_sweep());
+  ASSERT_EQ(run("sweep " + sweep.string() + " --list --out " + (dir_ / "out").string()), 0);
+  EXPECT_NE(out().find("pending  general_op/opf/default/opf.uncertainty.kappa=1.01/seed_0\n"),
+            std::string::npos)
+      << out();
+  EXPECT_NE(out().find("4 runs\n"), std::string::npos);
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+TEST_F(OpfSweep, RejectsABadSweepFileBeforeRunningAnything) {
+  const fs::path sweep = write_sweep(tiny_sweep("sedes: 3\n"));
+  EXPECT_EQ(run("sweep " + sweep.string() + " --out " + (dir_ / "out").string()), 1);
+  EXPECT_NE(err().find(sweep.string() + ":8: key 'sedes': unknown key; did you mean 'seeds'?"),
+            std::string::npos)
+      << err();
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
+}  // namespace
+}  // namespace opf

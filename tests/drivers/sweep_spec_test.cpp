@@ -1,0 +1,182 @@
+#include "drivers/sweep_spec.h"
+#include "drivers/sweep_runs.h"
+
+#include "estimators/estimator_settings_yaml.h"
+#include "io/input_error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+#include <string>
+
+namespace opf::experiments {
+namespace {
+
+const std::filesystem::path kFile = std::filesystem::path(OPF_SOURCE_DIR) / "experiments" /
+                                    "sweeps" / "test_sweep.yaml";  // anchors relative paths
+
+const std::string kSweep = R"(name: kappa_and_modules
+experiments: [general_op, baseball]
+estimators: [opf, pf]
+seeds: 3
+particles: 1000
+frames: 90
+variants:
+  - {name: all_on, settings: {}}
+  - name: no_dynamics
+    settings: {opf.modules.dynamics: false}
+parameters:
+  opf.uncertainty.kappa: [1.01, 1.1]
+  opf.occluder.plane: [line_of_sight, xy, 3d]
+)";
+
+// The InputError message of parsing `text`, or "" when it parses.
+std::string error_of(const std::string& text) {
+  try {
+    parse_sweep(text, kFile);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SweepSpec, ReadsEveryKey) {
+  const SweepSpec spec = parse_sweep(kSweep, kFile);
+  EXPECT_EQ(spec.name, "kappa_and_modules");
+  ASSERT_EQ(spec.experiments.size(), 2u);
+  EXPECT_EQ(spec.experiments[1].filename(), "baseball.yaml");
+  EXPECT_TRUE(std::filesystem::is_regular_file(spec.experiments[0]));
+  EXPECT_EQ(spec.estimators, (std::vector<std::string>{"opf", "pf"}));
+  EXPECT_EQ(spec.seeds, 3u);
+  EXPECT_EQ(spec.particles, 1000u);
+  EXPECT_EQ(spec.frames, 90u);
+  ASSERT_EQ(spec.variants.size(), 2u);
+  EXPECT_EQ(spec.variants[1].name, "no_dynamics");
+  ASSERT_EQ(spec.variants[1].settings.size(), 1u);
+  EXPECT_EQ(spec.variants[1].settings[0].key, "opf.modules.dynamics");
+  EXPECT_EQ(spec.variants[1].settings[0].value, "false");
+  EXPECT_EQ(spec.variants[1].settings[0].line, 10u);
+  ASSERT_EQ(spec.parameters.size(), 2u);
+  EXPECT_EQ(spec.parameters[1].values, (std::vector<std::string>{"line_of_sight", "xy", "3d"}));
+}
+
+TEST(SweepSpec, DefaultsToOneVariantAndTheFileName) {
+  const SweepSpec spec = parse_sweep("experiments: general_op\nestimators: opf\n", kFile);
+  EXPECT_EQ(spec.name, "test_sweep");
+  EXPECT_EQ(spec.seeds, 5u);
+  EXPECT_EQ(spec.seed, 1u);
+  ASSERT_EQ(spec.variants.size(), 1u);
+  EXPECT_EQ(spec.variants[0].name, "default");
+  EXPECT_TRUE(spec.variants[0].settings.empty());
+  EXPECT_EQ(grid_points(spec).size(), 1u);
+}
+
+// The grid is every combination, the last parameter varying fastest; each run gets settings that
+// the estimator settings reader turns into exactly those options.
+TEST(SweepSpec, GridPointsAreEveryCombinationInFileOrder) {
+  const SweepSpec spec = parse_sweep(kSweep, kFile);
+  const auto points = grid_points(spec);
+  ASSERT_EQ(points.size(), 6u);
+  EXPECT_EQ(points[0][0].value, "1.01");
+  EXPECT_EQ(points[0][1].value, "line_of_sight");
+  EXPECT_EQ(points[1][1].value, "xy");
+  EXPECT_EQ(points[3][0].value, "1.1");
+  EXPECT_EQ(points[5][1].value, "3d");
+  const std::vector<SweepSetting> settings = {{"opf.modules.dynamics", "false", 0},
+                                              {"opf.uncertainty.kappa", "1.1", 0},
+                                              {"opf.occluder.plane", "xy", 0}};
+  const EstimatorSettings parsed =
+      parse_estimator_settings(settings_yaml(spec, settings), "generated");
+  EXPECT_FALSE(parsed.opf.modules.dynamics);
+  EXPECT_TRUE(parsed.opf.modules.occluder);
+  EXPECT_DOUBLE_EQ(parsed.opf.uncertainty.kappa, 1.1);
+  EXPECT_EQ(parsed.opf.occluder.plane, OccluderPlane::kXY);
+}
+
+TEST(SweepSpec, ExpandsIntoOneRunPerCombinationAndSeed) {
+  const SweepSpec spec = parse_sweep(kSweep, kFile);
+  const std::vector<SweepRun> runs = expand_sweep(spec);
+  // 2 experiments x 2 estimators x 2 variants x 6 grid points x 3 seeds
+  ASSERT_EQ(runs.size(), 144u);
+  std::set<std::filesystem::path> directories;
+  for (const SweepRun& run : runs) directories.insert(run.directory);
+  EXPECT_EQ(directories.size(), runs.size());
+  const SweepRun& run = runs[1];
+  EXPECT_EQ(run.experiment, "general_op");
+  EXPECT_EQ(run.estimator, "opf");
+  EXPECT_EQ(run.variant, "all_on");
+  EXPECT_EQ(run.seed_index, 1u);
+  EXPECT_EQ(run.directory,
+            "general_op/opf/all_on/opf.uncertainty.kappa=1.01,opf.occluder.plane=line_of_sight/"
+            "seed_1");
+  EXPECT_EQ(run.result_file(), run.directory / "general_op_runs.csv");
+  const std::vector<std::string> args = run.arguments("/out");
+  const auto value_of = [&](const std::string& option) {
+    const auto it = std::find(args.begin(), args.end(), option);
+    return it == args.end() || it + 1 == args.end() ? std::string("<absent>") : *(it + 1);
+  };
+  EXPECT_EQ(args[0], "run");
+  EXPECT_EQ(value_of("--estimators"), "opf");
+  EXPECT_EQ(value_of("--seeds"), "1");
+  EXPECT_EQ(value_of("--first-seed"), "1");
+  EXPECT_EQ(value_of("--particles"), "1000");
+  EXPECT_EQ(value_of("--frames"), "90");
+  EXPECT_EQ(value_of("--threads"), "1");
+  EXPECT_EQ(value_of("--out"), "/out/" + run.directory.string());
+  EXPECT_EQ(value_of("--config"), "/out/" + (run.directory / "settings.yaml").string());
+  EXPECT_NE(std::find(args.begin(), args.end(), "--no-figures"), args.end());
+}
+
+// `particles` as a parameter sets each run's --particles, not an estimator option.
+TEST(SweepSpec, ParticlesParameterSetsTheRunOption) {
+  const SweepSpec spec = parse_sweep(
+      "experiments: [general_op]\nestimators: [pf]\nseeds: 1\nparameters:\n"
+      "  particles: [100, 5000]\n",
+      kFile);
+  const std::vector<SweepRun> runs = expand_sweep(spec);
+  ASSERT_EQ(runs.size(), 2u);
+  EXPECT_EQ(runs[0].particles, 100u);
+  EXPECT_EQ(runs[1].particles, 5000u);
+  EXPECT_EQ(runs[1].directory, "general_op/pf/default/particles=5000/seed_0");
+  EXPECT_EQ(runs[1].settings_yaml.find("particles"), std::string::npos);
+}
+
+TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
+  const std::string file = kFile.string();
+  // A misspelt option in the grid: the estimator settings reader's suggestion, at the sweep's line.
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nparameters:\n"
+                     "  opf.uncertainty.kapa: [1.1]\n"),
+            file + ":4: key 'opf.uncertainty.kapa': unknown key; did you mean 'kappa'?");
+  // A value the option rejects, in a variant.
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nvariants:\n"
+                     "  - name: bad\n    settings: {pf.resampling.scheme: sorted}\n"),
+            file +
+                ":5: key 'pf.resampling.scheme': expected multinomial, residual, stratified or "
+                "systematic, got \"sorted\"");
+  EXPECT_NE(error_of("experiments: [general_op]\nestimators: [opf, kalman]\n")
+                .find(":2: key 'estimators': expected estimators among"),
+            std::string::npos);
+  EXPECT_NE(error_of("experiments: [no_such_experiment]\nestimators: [opf]\n")
+                .find(":1: key 'experiments': expected experiment names or files; there is no"),
+            std::string::npos);
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nseed: 1\nsedes: 3\n"),
+            file + ":4: key 'sedes': unknown key; did you mean 'seeds'?");
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nseeds: 0\n"),
+            file + ":3: key 'seeds': expected a positive integer, got \"0\"");
+  EXPECT_EQ(
+      error_of("experiments: [general_op]\nestimators: [opf]\nparameters:\n"
+               "  opf.uncertainty.kappa: 1.1\n"),
+      file + ":4: key 'parameters.opf.uncertainty.kappa': expected a non-empty list of values");
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nparameters:\n"
+                     "  particles: [100, 0]\n"),
+            file + ":4: key 'particles': expected a positive integer, got \"0\"");
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nvariants:\n"
+                     "  - {name: a}\n  - {name: a}\n"),
+            file + ":5: key 'variants[1].name': expected a name no other variant has, got \"a\"");
+  EXPECT_EQ(error_of("estimators: [opf]\n"),
+            file + ":1: key 'experiments': missing: which experiments to run");
+}
+
+}  // namespace
+}  // namespace opf::experiments
