@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <string>
 
@@ -140,6 +141,27 @@ TEST(SweepSpec, ParticlesParameterSetsTheRunOption) {
   EXPECT_EQ(runs[1].particles, 5000u);
   EXPECT_EQ(runs[1].directory, "general_op/pf/default/particles=5000/seed_0");
   EXPECT_EQ(runs[1].settings_yaml.find("particles"), std::string::npos);
+}
+
+// Every bundled sweep loads (its settings pass the estimator settings reader) and expands into
+// the runs its comment promises.
+TEST(SweepSpec, BundledSweepsLoadAndExpand) {
+  const std::map<std::string, std::size_t> expected_runs = {
+      {"module_ablation", 75},  {"kappa", 50},
+      {"history_length", 50},   {"epsilon_occ", 25},
+      {"trajectory_order", 30}, {"occluder_plane", 15},
+      {"occluder_offset", 10},  {"resampler", 40},
+      {"particle_counts", 80},  {"smoke", 8}};
+  std::size_t found = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(kFile.parent_path())) {
+    if (entry.path().extension() != ".yaml") continue;
+    const SweepSpec spec = load_sweep(entry.path());
+    ASSERT_TRUE(expected_runs.count(spec.name)) << entry.path() << ": a new sweep? add it here";
+    EXPECT_EQ(spec.name, entry.path().stem().string());
+    EXPECT_EQ(expand_sweep(spec).size(), expected_runs.at(spec.name)) << spec.name;
+    ++found;
+  }
+  EXPECT_EQ(found, expected_runs.size());
 }
 
 TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
