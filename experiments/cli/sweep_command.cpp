@@ -2,6 +2,7 @@
 
 #include "arguments.h"
 #include "drivers/sweep_executor.h"
+#include "drivers/sweep_plan.h"
 #include "drivers/sweep_table.h"
 
 #include <unistd.h>
@@ -19,6 +20,8 @@ std::vector<OptionSpec> specs() {
       {"out", "DIR", "where the runs and the table go (default: results/sweeps/<sweep name>)"},
       {"jobs", "N", "runs at once, each on one thread (default: the machine's cores)"},
       {"list", "", "print the runs (and which are done) without running anything"},
+      {"plan", "", "print the runs as JSON (for experiments/Snakefile) without running anything"},
+      {"table-only", "", "write the table from the runs done so far, running nothing"},
   };
 }
 
@@ -29,7 +32,8 @@ constexpr const char* kSummary =
     "resumes. Writes <out>/<name>.csv, one row per run with its parameters and errors,\n"
     "and prints the errors per configuration (mean +- std over seeds). Each run keeps\n"
     "its settings.yaml, log.txt and `opf run` outputs under <out>/<experiment>/...\n"
-    "Exits 1 when a run failed (its log is named).";
+    "Exits 1 when a run failed (its log is named). --plan prints the runs as JSON\n"
+    "for workflow engines (experiments/Snakefile runs the same sweep on Snakemake).";
 
 }  // namespace
 
@@ -50,6 +54,10 @@ int sweep_command(const std::vector<std::string>& raw) {
   if (jobs == 0) throw UsageError{"option '--jobs' must be at least 1"};
   const std::vector<experiments::SweepRun> runs = experiments::expand_sweep(spec);
 
+  if (args.has("plan")) {
+    experiments::write_sweep_plan(std::cout, spec, runs, out);
+    return 0;
+  }
   if (args.has("list")) {
     for (const auto& run : runs)
       std::cout << (std::filesystem::exists(out / run.result_file()) ? "done     " : "pending  ")
@@ -57,17 +65,24 @@ int sweep_command(const std::vector<std::string>& raw) {
     std::cout << runs.size() << " runs\n";
     return 0;
   }
-  std::cerr << spec.name << ": " << runs.size() << " runs, " << jobs << " at a time, in "
-            << out.string() << "\n";
-  const experiments::SweepExecution execution =
-      experiments::execute_sweep(runs, out, std::filesystem::read_symlink("/proc/self/exe"), jobs,
-                                 std::cerr, isatty(STDERR_FILENO) != 0);
+  experiments::SweepExecution execution;
+  if (args.has("table-only")) {
+    for (const auto& run : runs)
+      execution.skipped += std::filesystem::exists(out / run.result_file());
+  } else {
+    std::cerr << spec.name << ": " << runs.size() << " runs, " << jobs << " at a time, in "
+              << out.string() << "\n";
+    execution =
+        experiments::execute_sweep(runs, out, std::filesystem::read_symlink("/proc/self/exe"), jobs,
+                                   std::cerr, isatty(STDERR_FILENO) != 0);
+  }
   const std::filesystem::path table = out / (spec.name + ".csv");
   const std::size_t ok = experiments::write_sweep_table(spec, runs, out, table);
   experiments::print_sweep_summary(std::cout, table);
   std::cout << "\n"
             << ok << " of " << runs.size() << " runs in " << table.string() << " ("
             << execution.skipped << " were done before, " << execution.completed << " ran now)\n";
+  if (args.has("table-only")) return ok == runs.size() ? 0 : 1;
   if (execution.failed.empty()) return 0;
   std::cerr << execution.failed.size() << " runs failed; their logs:\n";
   for (const auto& dir : execution.failed)

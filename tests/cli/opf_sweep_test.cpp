@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -122,6 +123,22 @@ TEST_F(OpfSweep, ReportsFailedRunsAndExitsNonZero) {
     EXPECT_EQ(row.at("translation_error"), "");
   }
   EXPECT_NE(out().find("0 of 4 runs in"), std::string::npos) << out();
+}
+
+// The Snakemake workflow runs the same sweep through `opf run` jobs and writes the same table.
+TEST_F(OpfSweep, SnakemakeWorkflowWritesTheSameTable) {
+  const fs::path sweep = write_sweep(tiny_sweep("frames: 40\n"));
+  ASSERT_EQ(run("sweep " + sweep.string() + " --out " + (dir_ / "direct").string()), 0) << err();
+  const std::string command = "snakemake -s " + std::string(OPF_SOURCE_DIR) +
+                              "/experiments/Snakefile -d " + dir_.string() +
+                              " --cores 2 --quiet --config sweep=" + sweep.string() +
+                              " out=" + (dir_ / "workflow").string() + " opf=" + kOpf + " >" +
+                              (dir_ / "snakemake.log").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << read(dir_ / "snakemake.log");
+  EXPECT_EQ(read(dir_ / "workflow" / "tiny.csv"), read(dir_ / "direct" / "tiny.csv"));
+  EXPECT_TRUE(fs::exists(dir_ / "workflow/general_op/opf/default/opf.uncertainty.kappa=1.1/"
+                                "seed_1/settings.yaml"));
 }
 
 TEST_F(OpfSweep, ListsTheRunsWithoutRunningThem) {

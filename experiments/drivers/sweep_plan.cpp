@@ -1,0 +1,61 @@
+#include "drivers/sweep_plan.h"
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace opf::experiments {
+namespace {
+
+std::string json_string(std::string_view text) {
+  std::string s = "\"";
+  for (const char c : text) {
+    switch (c) {
+      case '"':
+        s += "\\\"";
+        break;
+      case '\\':
+        s += "\\\\";
+        break;
+      case '\n':
+        s += "\\n";
+        break;
+      case '\t':
+        s += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char buffer[8];
+          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+          s += buffer;
+        } else {
+          s += c;
+        }
+    }
+  }
+  return s + "\"";
+}
+
+}  // namespace
+
+void write_sweep_plan(std::ostream& json, const SweepSpec& spec, const std::vector<SweepRun>& runs,
+                      const std::filesystem::path& out) {
+  const std::filesystem::path root = std::filesystem::absolute(out).lexically_normal();
+  json << "{\n  \"name\": " << json_string(spec.name)
+       << ",\n  \"sweep\": " << json_string(std::filesystem::absolute(spec.file).string())
+       << ",\n  \"out\": " << json_string(root.string())
+       << ",\n  \"table\": " << json_string((root / (spec.name + ".csv")).string())
+       << ",\n  \"runs\": [";
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const SweepRun& run = runs[i];
+    json << (i ? ",\n" : "\n") << "    {\"directory\": " << json_string(run.directory.string())
+         << ", \"result\": " << json_string(run.result_file().string())
+         << ", \"settings_yaml\": " << json_string(run.settings_yaml) << ", \"arguments\": [";
+    const std::vector<std::string> args = run.arguments(root);
+    for (std::size_t a = 0; a < args.size(); ++a) json << (a ? ", " : "") << json_string(args[a]);
+    json << "]}";
+  }
+  json << "\n  ]\n}\n";
+}
+
+}  // namespace opf::experiments
