@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Builds the reproduction report: generates its tables and figures from result files
+# (paper/make_report.py), then the PDF with latexmk (IEEEtran, Debian's TeX Live).
+#   bash paper/build_report.sh [OUT]          # from results/, results/sweeps/ and the benchmark
+#                                             # report; OUT defaults to results/report
+#   bash paper/build_report.sh --small OUT    # on small result sets made first in OUT by
+#                                             # scripts/make_small_results.sh (the tests)
+# OPF_RESULTS, OPF_SWEEPS and OPF_BENCH override the inputs. Writes OUT/report.pdf.
+set -euo pipefail
+repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+if [ "${1:-}" = "--small" ]; then
+  [ $# -eq 2 ] || { echo "usage: $0 --small OUT" >&2; exit 2; }
+  bash "$repo/scripts/make_small_results.sh" "$2"
+  out="$(cd "$2" && pwd)"
+  export OPF_RESULTS="$out/results" OPF_SWEEPS="$out/sweeps"
+  out="$out/report"
+else
+  out="${1:-$repo/results/report}"
+fi
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+rm -rf "$out/generated"
+/usr/bin/python3 "$repo/paper/make_report.py" "$out/generated"
+cp "$repo/paper/report.tex" "$out/report.tex"
+cd "$out"
+if ! latexmk -pdf -interaction=nonstopmode -halt-on-error report.tex >latexmk.log 2>&1; then
+  tail -n 30 latexmk.log >&2
+  echo "latexmk failed; the whole log is $out/latexmk.log" >&2
+  exit 1
+fi
+echo "report: $out/report.pdf"
