@@ -4,20 +4,11 @@
 #   bash notebooks/run_notebooks.sh [OUT]          # reads results/ (scripts/run_main.sh) and
 #                                                  # results/sweeps/ (opf sweep); OUT defaults to
 #                                                  # results/notebooks
-#   bash notebooks/run_notebooks.sh --small OUT    # on small result sets made first in OUT by
-#                                                  # scripts/make_small_results.sh (about a minute)
-# OPF_RESULTS, OPF_SWEEPS and OPF_BENCH override the inputs.
+# OPF_RESULTS, OPF_SWEEPS and OPF_BENCH override the inputs; the tests point them at the small
+# result sets of scripts/make_small_results.sh.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-if [ "${1:-}" = "--small" ]; then
-  [ $# -eq 2 ] || { echo "usage: $0 --small OUT" >&2; exit 2; }
-  bash "$repo/scripts/make_small_results.sh" "$2"
-  out="$(cd "$2" && pwd)"
-  export OPF_RESULTS="$out/results" OPF_SWEEPS="$out/sweeps"
-  out="$out/notebooks"
-else
-  out="${1:-$repo/results/notebooks}"
-fi
+out="${1:-$repo/results/notebooks}"
 mkdir -p "$out"
 export PYDEVD_DISABLE_FILE_VALIDATION=1  # the kernel's debugger notes about frozen modules
 for notebook in reproduce_paper ablations particle_counts; do

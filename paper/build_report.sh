@@ -3,20 +3,11 @@
 # (paper/make_report.py), then the PDF with latexmk (IEEEtran, Debian's TeX Live).
 #   bash paper/build_report.sh [OUT]          # from results/, results/sweeps/ and the benchmark
 #                                             # report; OUT defaults to results/report
-#   bash paper/build_report.sh --small OUT    # on small result sets made first in OUT by
-#                                             # scripts/make_small_results.sh (the tests)
-# OPF_RESULTS, OPF_SWEEPS and OPF_BENCH override the inputs. Writes OUT/report.pdf.
+# OPF_RESULTS, OPF_SWEEPS and OPF_BENCH override the inputs (the tests point them at the small
+# result sets of scripts/make_small_results.sh). Writes OUT/report.pdf.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-if [ "${1:-}" = "--small" ]; then
-  [ $# -eq 2 ] || { echo "usage: $0 --small OUT" >&2; exit 2; }
-  bash "$repo/scripts/make_small_results.sh" "$2"
-  out="$(cd "$2" && pwd)"
-  export OPF_RESULTS="$out/results" OPF_SWEEPS="$out/sweeps"
-  out="$out/report"
-else
-  out="${1:-$repo/results/report}"
-fi
+out="${1:-$repo/results/report}"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 rm -rf "$out/generated"

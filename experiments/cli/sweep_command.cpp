@@ -35,6 +35,10 @@ constexpr const char* kSummary =
     "Exits 1 when a run failed (its log is named). --plan prints the runs as JSON\n"
     "for workflow engines (experiments/Snakefile runs the same sweep on Snakemake).";
 
+// The runs execute this very program, even when its file is rebuilt or deleted during the sweep
+// (the kernel keeps the running binary's inode for /proc/self/exe).
+const std::filesystem::path kThisProgram = "/proc/self/exe";
+
 }  // namespace
 
 int sweep_command(const std::vector<std::string>& raw) {
@@ -72,9 +76,8 @@ int sweep_command(const std::vector<std::string>& raw) {
   } else {
     std::cerr << spec.name << ": " << runs.size() << " runs, " << jobs << " at a time, in "
               << out.string() << "\n";
-    execution =
-        experiments::execute_sweep(runs, out, std::filesystem::read_symlink("/proc/self/exe"), jobs,
-                                   std::cerr, isatty(STDERR_FILENO) != 0);
+    execution = experiments::execute_sweep(runs, out, kThisProgram, jobs, std::cerr,
+                                           isatty(STDERR_FILENO) != 0);
   }
   const std::filesystem::path table = out / (spec.name + ".csv");
   const std::size_t ok = experiments::write_sweep_table(spec, runs, out, table);

@@ -118,16 +118,18 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   if (estimators.empty()) reader.fail("estimators", "missing: which estimators to run");
   for (const std::string& entry : experiments) {
     const std::filesystem::path path = resolve_experiment(entry, file);
-    reader.require("experiments", std::filesystem::is_regular_file(path),
-                   "experiment names or files; there is no " + path.string());
+    if (!std::filesystem::is_regular_file(path))
+      reader.fail("experiments", "no experiment file " + path.string() + " for '" + entry +
+                                     "' (a bare name is experiments/<name>.yaml, a path is "
+                                     "relative to the sweep file)");
     spec.experiments.push_back(path);
   }
   const std::vector<std::string> known = estimator_names();
   for (const std::string& name : estimators) {
+    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
     std::string list;
     for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-    reader.require("estimators", std::find(known.begin(), known.end(), name) != known.end(),
-                   "estimators among " + list + " ('" + name + "' is not one)");
+    reader.fail("estimators", "unknown estimator '" + name + "'; expected one of " + list);
   }
   spec.estimators = estimators;
 
@@ -150,8 +152,8 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     reader.get("config", config);
     std::filesystem::path path(config);
     if (!path.is_absolute()) path = file.parent_path() / path;
-    reader.require("config", std::filesystem::is_regular_file(path),
-                   "an estimator settings file; there is no " + path.string());
+    if (!std::filesystem::is_regular_file(path))
+      reader.fail("config", "no estimator settings file " + path.string());
     load_estimator_settings(path);  // its own errors name its lines
     spec.config = path;
   }

@@ -95,6 +95,17 @@ OPF_ALWAYS_INLINE std::array<double, K> sum_in_lanes(std::size_t n, const Terms&
   return sums.totals();
 }
 
+// a[First..First+5][l] += w times the upper triangle of d d^T (xx, xy, xz, yy, yz, zz).
+template <int First, class T, int K, std::size_t W>
+OPF_ALWAYS_INLINE void add_outer_product(T (&a)[K][W], std::size_t l, T w, T dx, T dy, T dz) {
+  a[First][l] += w * dx * dx;
+  a[First + 1][l] += w * dx * dy;
+  a[First + 2][l] += w * dx * dz;
+  a[First + 3][l] += w * dy * dy;
+  a[First + 4][l] += w * dy * dz;
+  a[First + 5][l] += w * dz * dz;
+}
+
 template <bool kWeighted>
 OPF_ALWAYS_INLINE TranslationSums sums(const double* __restrict x, std::size_t n,
                                        const double* __restrict w,
@@ -108,12 +119,7 @@ OPF_ALWAYS_INLINE TranslationSums sums(const double* __restrict x, std::size_t n
         a[1][l] += wi * dx;
         a[2][l] += wi * dy;
         a[3][l] += wi * dz;
-        a[4][l] += wi * dx * dx;
-        a[5][l] += wi * dx * dy;
-        a[6][l] += wi * dx * dz;
-        a[7][l] += wi * dy * dy;
-        a[8][l] += wi * dy * dz;
-        a[9][l] += wi * dz * dz;
+        add_outer_product<4>(a, l, wi, dx, dy, dz);
       });
   return {s[0], {s[1], s[2], s[3]}, {s[4], s[5], s[6], s[7], s[8], s[9]}};
 }
@@ -276,12 +282,7 @@ OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::
                        OPF_INLINE_LAMBDA {
                          const float wi = kWeighted ? static_cast<float>(w[begin + j]) : 1.0f;
                          const float dx = factor * vx[j], dy = factor * vy[j], dz = factor * vz[j];
-                         a[0][l] += wi * dx * dx;
-                         a[1][l] += wi * dx * dy;
-                         a[2][l] += wi * dx * dz;
-                         a[3][l] += wi * dy * dy;
-                         a[4][l] += wi * dy * dz;
-                         a[5][l] += wi * dz * dz;
+                         add_outer_product<0>(a, l, wi, dx, dy, dz);
                        };
   for (std::size_t begin = 0; begin < n; begin += kBlock) {
     const std::size_t size = std::min(kBlock, n - begin);

@@ -1,5 +1,7 @@
 #include "particles/sorted_gather.h"
 
+#include <utility>
+
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(OPF_NO_DISPATCH)
 #define OPF_GATHER_PERMUTES 1
 #include <immintrin.h>
@@ -89,12 +91,15 @@ void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t cou
 
 #ifdef OPF_GATHER_PERMUTES
 
-// Sixteen slots at a time: when their particles span fewer than 32, each row's block is the
-// permute of a 32-value window starting at the block's first particle.
-[[gnu::target("avx512f")]] void gather_by_running_maximum_permute(const std::int32_t* marks,
-                                                                  std::size_t count,
-                                                                  const float* in, std::size_t n,
-                                                                  std::size_t rows, float* out) {
+namespace {
+
+// The slots in blocks of sixteen: each block's particles (the running maximum, carried over from
+// the blocks before) go to copy(p, k, particles) with p their array and k the block's first slot;
+// the slots after the last whole block are copied by the scalar path.
+template <class T, class CopyBlock>
+[[gnu::target("avx512f")]] void for_each_block(const std::int32_t* marks, std::size_t count,
+                                               const T* in, std::size_t n, std::size_t rows, T* out,
+                                               const CopyBlock& copy) {
   const __m512i last_lane = _mm512_set1_epi32(15);
   __m512i carry = _mm512_setzero_si512();
   alignas(64) std::int32_t p[16];
@@ -104,41 +109,50 @@ void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t cou
     const __m512i particles = _mm512_max_epi32(local, carry);
     carry = _mm512_max_epi32(carry, _mm512_permutexvar_epi32(last_lane, local));
     _mm512_store_si512(p, particles);
+    copy(p, k, particles);
+  }
+  scalar_tail(marks, k, count, k > 0 ? p[15] : 0, in, n, rows, out);
+}
+
+// The masks of a window of two vectors of `width` lanes starting `available` values before the
+// end of its row: lanes past the end are not read.
+inline std::pair<std::uint32_t, std::uint32_t> window_masks(std::size_t available,
+                                                            std::size_t width) {
+  return {lanes_inside(available, width),
+          available > width ? lanes_inside(available - width, width) : 0u};
+}
+
+// Float rows: when a block's particles span fewer than 32, each row's block is the permute of a
+// 32-value window starting at the block's first particle.
+struct FloatBlocks {
+  const float* in;
+  std::size_t n, rows, count;
+  float* out;
+
+  [[gnu::target("avx512f")]] void operator()(const std::int32_t* p, std::size_t k,
+                                             __m512i particles) const {
     const std::int32_t base = p[0];
-    if (p[15] - base >= 32) {
-      scalar_block(p, k, in, n, rows, count, 16, out);
-      continue;
-    }
+    if (p[15] - base >= 32) return scalar_block(p, k, in, n, rows, count, 16, out);
     const __m512i offsets = _mm512_sub_epi32(particles, _mm512_set1_epi32(base));
-    const std::size_t available = n - static_cast<std::size_t>(base);
-    const auto low = static_cast<__mmask16>(lanes_inside(available, 16));
-    const auto high =
-        static_cast<__mmask16>(available > 16 ? lanes_inside(available - 16, 16) : 0u);
+    const auto [low, high] = window_masks(n - static_cast<std::size_t>(base), 16);
     for (std::size_t r = 0; r < rows; ++r) {
       const float* window = in + r * n + static_cast<std::size_t>(base);
-      const __m512 a = _mm512_maskz_loadu_ps(low, window);
-      const __m512 b = high ? _mm512_maskz_loadu_ps(high, window + 16) : _mm512_setzero_ps();
+      const __m512 a = _mm512_maskz_loadu_ps(static_cast<__mmask16>(low), window);
+      const __m512 b = high ? _mm512_maskz_loadu_ps(static_cast<__mmask16>(high), window + 16)
+                            : _mm512_setzero_ps();
       _mm512_storeu_ps(out + r * count + k, _mm512_permutex2var_ps(a, offsets, b));
     }
   }
-  const std::int32_t particle = k > 0 ? p[15] : 0;
-  scalar_tail(marks, k, count, particle, in, n, rows, out);
-}
+};
 
-// As for float, in two halves of eight slots, each from a window of 16 doubles.
-[[gnu::target("avx512f")]] void gather_by_running_maximum_permute(const std::int32_t* marks,
-                                                                  std::size_t count,
-                                                                  const double* in, std::size_t n,
-                                                                  std::size_t rows, double* out) {
-  const __m512i last_lane = _mm512_set1_epi32(15);
-  __m512i carry = _mm512_setzero_si512();
-  alignas(64) std::int32_t p[16];
-  std::size_t k = 0;
-  for (; k + 16 <= count; k += 16) {
-    const __m512i local = block_running_maximum(marks + k);
-    const __m512i particles = _mm512_max_epi32(local, carry);
-    carry = _mm512_max_epi32(carry, _mm512_permutexvar_epi32(last_lane, local));
-    _mm512_store_si512(p, particles);
+// Double rows: the same in two halves of eight slots, each from a window of 16 values.
+struct DoubleBlocks {
+  const double* in;
+  std::size_t n, rows, count;
+  double* out;
+
+  [[gnu::target("avx512f")]] void operator()(const std::int32_t* p, std::size_t k,
+                                             __m512i particles) const {
     for (std::size_t half = 0; half < 2; ++half) {
       const std::int32_t* q = p + 8 * half;
       const std::size_t slot = k + 8 * half;
@@ -151,19 +165,30 @@ void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t cou
           half == 0 ? _mm512_castsi512_si256(particles) : _mm512_extracti64x4_epi64(particles, 1);
       const __m512i offsets =
           _mm512_sub_epi64(_mm512_cvtepi32_epi64(eight), _mm512_set1_epi64(base));
-      const std::size_t available = n - static_cast<std::size_t>(base);
-      const auto low = static_cast<__mmask8>(lanes_inside(available, 8));
-      const auto high = static_cast<__mmask8>(available > 8 ? lanes_inside(available - 8, 8) : 0u);
+      const auto [low, high] = window_masks(n - static_cast<std::size_t>(base), 8);
       for (std::size_t r = 0; r < rows; ++r) {
         const double* window = in + r * n + static_cast<std::size_t>(base);
-        const __m512d a = _mm512_maskz_loadu_pd(low, window);
-        const __m512d b = high ? _mm512_maskz_loadu_pd(high, window + 8) : _mm512_setzero_pd();
+        const __m512d a = _mm512_maskz_loadu_pd(static_cast<__mmask8>(low), window);
+        const __m512d b = high ? _mm512_maskz_loadu_pd(static_cast<__mmask8>(high), window + 8)
+                               : _mm512_setzero_pd();
         _mm512_storeu_pd(out + r * count + slot, _mm512_permutex2var_pd(a, offsets, b));
       }
     }
   }
-  const std::int32_t particle = k > 0 ? p[15] : 0;
-  scalar_tail(marks, k, count, particle, in, n, rows, out);
+};
+
+}  // namespace
+
+void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t count,
+                                       const float* in, std::size_t n, std::size_t rows,
+                                       float* out) {
+  for_each_block(marks, count, in, n, rows, out, FloatBlocks{in, n, rows, count, out});
+}
+
+void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t count,
+                                       const double* in, std::size_t n, std::size_t rows,
+                                       double* out) {
+  for_each_block(marks, count, in, n, rows, out, DoubleBlocks{in, n, rows, count, out});
 }
 
 #else

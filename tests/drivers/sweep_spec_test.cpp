@@ -148,8 +148,8 @@ TEST(SweepSpec, ParticlesParameterSetsTheRunOption) {
 TEST(SweepSpec, BundledSweepsLoadAndExpand) {
   const std::map<std::string, std::size_t> expected_runs = {
       {"module_ablation", 75},  {"kappa", 50},
-      {"history_length", 50},   {"epsilon_occ", 25},
-      {"trajectory_order", 30}, {"occluder_plane", 15},
+      {"history_length", 50},   {"epsilon_occ", 50},
+      {"trajectory_order", 30}, {"occluder_plane", 30},
       {"occluder_offset", 10},  {"resampler", 40},
       {"particle_counts", 80},  {"smoke", 8}};
   std::size_t found = 0;
@@ -176,12 +176,17 @@ TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
             file +
                 ":5: key 'pf.resampling.scheme': expected multinomial, residual, stratified or "
                 "systematic, got \"sorted\"");
-  EXPECT_NE(error_of("experiments: [general_op]\nestimators: [opf, kalman]\n")
-                .find(":2: key 'estimators': expected estimators among"),
-            std::string::npos);
-  EXPECT_NE(error_of("experiments: [no_such_experiment]\nestimators: [opf]\n")
-                .find(":1: key 'experiments': expected experiment names or files; there is no"),
-            std::string::npos);
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf, kalman]\n"),
+            file +
+                ":2: key 'estimators': unknown estimator 'kalman'; expected one of opf, pf, "
+                "cvkf, oapf");
+  EXPECT_EQ(error_of("experiments: [no_such_experiment]\nestimators: [opf]\n"),
+            file + ":1: key 'experiments': no experiment file " + std::string(OPF_SOURCE_DIR) +
+                "/experiments/no_such_experiment.yaml for 'no_such_experiment' (a bare name is "
+                "experiments/<name>.yaml, a path is relative to the sweep file)");
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nconfig: missing.yaml\n"),
+            file + ":3: key 'config': no estimator settings file " +
+                (kFile.parent_path() / "missing.yaml").string());
   EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nseed: 1\nsedes: 3\n"),
             file + ":4: key 'sedes': unknown key; did you mean 'seeds'?");
   EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nseeds: 0\n"),
