@@ -162,9 +162,9 @@ void YamlReader::get(std::string_view key, std::vector<std::string>& out) {
     return;
   }
   if (!entry->value.IsSequence() || entry->value.size() == 0)
-    fail(key, "expected " + expectation + ", got " +
-                  (entry->value.IsSequence() ? std::string("an empty list")
-                                             : describe(entry->value)));
+    fail(key,
+         "expected " + expectation + ", got " +
+             (entry->value.IsSequence() ? std::string("an empty list") : describe(entry->value)));
   std::vector<std::string> values;
   for (const YAML::Node& item : entry->value) {
     if (!item.IsScalar())
