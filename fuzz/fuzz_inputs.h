@@ -1,0 +1,19 @@
+#pragma once
+// The fuzzed entry points: each takes arbitrary bytes as one user input file and must either
+// accept it or throw InputError (the error that names file, line and field). Anything else, a
+// crash, another exception, undefined behaviour, is a bug. libFuzzer drives them in the clang
+// build (fuzz/CMakeLists.txt, scripts/run_fuzzers.sh); the test suite replays the corpus and
+// every saved crash through them (tests/fuzz/fuzz_corpus_test.cpp).
+
+#include <cstddef>
+#include <cstdint>
+
+namespace opf::fuzz {
+
+/// A measurement log (io/measurement_log.h).
+void measurement_log(const std::uint8_t* data, std::size_t size);
+
+/// An estimator settings file (estimators/estimator_settings_yaml.h).
+void estimator_settings(const std::uint8_t* data, std::size_t size);
+
+}  // namespace opf::fuzz
