@@ -81,7 +81,8 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     Hypothesis& h = hypotheses_[0];
     const Source hidden_by = h.source;
     const bool lost = h.filter.update_with_measurement(position, orientation);
-    h.filter.normalise_and_resample();
+    const ResampleReport report = h.filter.normalise_and_resample();
+    h.recovery = {.sensor_reset = lost, .weights_underflow = report.weights_underflow()};
     h.inflation.reset();
     h.source = Source::kMeasurement;
     h.trajectory.reset();
@@ -118,7 +119,9 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     if (options_.modules.uncertainty) h.inflation.step(virtual_z ? virtual_z->speed : 0.0, dt);
     if (virtual_z)
       h.filter.reweight(virtual_z->position, virtual_z->orientation, h.inflation.scale());
-    h.filter.normalise_and_resample();
+    const ResampleReport report = h.filter.normalise_and_resample();
+    h.recovery = {.weights_underflow = report.weights_underflow(),
+                  .trace_capped = h.inflation.capped()};
   }
   return make_estimate(hypotheses_[0], 0);
 }
@@ -280,6 +283,7 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
   estimate.observation_trace = h.filter.observation_trace(h.inflation.scale());
   estimate.alert = safety_alert(estimate.observation_trace, options_.feedback);
   estimate.hypothesis = index;
+  estimate.recovery = h.recovery;
   switch (h.source) {
     case Source::kMeasurement:
       estimate.mode = EstimateMode::kMeasured;

@@ -52,6 +52,8 @@ class ObjectPermanenceFilter final : public Estimator {
     Eigen::Quaterniond last_carrier_orientation = Eigen::Quaterniond::Identity();
     // Recent (t, position) of the occluder's estimate, spanning the speed window.
     std::deque<std::pair<double, Eigen::Vector3d>> carrier_track;
+    // What the last step had to do to stay usable (the mode column's "+reset" and so on).
+    RecoveryEvents recovery;
   };
 
   struct VirtualMeasurement {

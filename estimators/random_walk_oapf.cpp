@@ -193,6 +193,7 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
   const ChainStep chain = chain_step(options_, dt);
   Eigen::VectorXd translation_visible, rotation_visible;
   double occluded_log_likelihood = 0.0;
+  RecoveryEvents recovery;
   if (measurement) {
     const double sigma_t = p.observation_noise_translation;
     const double sigma_r = p.observation_noise_rotation;
@@ -207,12 +208,14 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
       scatter_around(translation_.particles, translation_of(*measurement), sigma_t, noise_);
       translation_visible = visible_exponents(translation_.particles, translation_of(*measurement),
                                               sigma_t * sigma_t);
+      recovery.sensor_reset = true;
     }
     if (p.reset_gate > 0.0 && rotation_visible.maxCoeff() < gate) {
       reset(rotation_, rotation_.particles.size());
       scatter_around(rotation_.particles, orientation_of(*measurement), sigma_r, noise_);
       rotation_visible =
           visible_exponents(rotation_.particles, orientation_of(*measurement), sigma_r * sigma_r);
+      recovery.sensor_reset = true;
     }
     const double k = options_.occluded_likelihood_sigmas;
     occluded_log_likelihood = -0.5 * k * k;
@@ -236,10 +239,15 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
                              report.ess_rotation, report.resampled_rotation, rotation_recovered);
   report.weights_recovered = translation_recovered || rotation_recovered;
   last_report_ = report;
-  return make_estimate(t, measurement ? EstimateMode::kMeasured : EstimateMode::kRandomWalk);
+  // Occluded particles keep a finite likelihood, so only weights that are all non-finite (a reset
+  // to uniform) count as underflow here.
+  recovery.weights_underflow = report.weights_recovered;
+  return make_estimate(t, measurement ? EstimateMode::kMeasured : EstimateMode::kRandomWalk,
+                       recovery);
 }
 
-Estimate OcclusionAwareParticleFilter::make_estimate(double t, EstimateMode mode) const {
+Estimate OcclusionAwareParticleFilter::make_estimate(double t, EstimateMode mode,
+                                                     RecoveryEvents recovery) const {
   const TranslationMoments tm = translation_moments(translation_.particles);
   const RotationMoments rm = rotation_moments(rotation_.particles);
   const double sigma_t = options_.particles.observation_noise_translation;
@@ -250,6 +258,7 @@ Estimate OcclusionAwareParticleFilter::make_estimate(double t, EstimateMode mode
   // Q is fixed: an occluded particle's constant likelihood does not inflate it.
   estimate.observation_trace = 3.0 * (sigma_t * sigma_t + sigma_r * sigma_r);
   estimate.mode = mode;
+  estimate.recovery = recovery;
   estimate.occlusion_probability = translation_occlusion_;
   return estimate;
 }

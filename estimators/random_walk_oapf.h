@@ -63,7 +63,7 @@ class OcclusionAwareParticleFilter final : public Estimator {
   const ResampleReport& last_report() const { return last_report_; }
 
  private:
-  Estimate make_estimate(double t, EstimateMode mode) const;
+  Estimate make_estimate(double t, EstimateMode mode, RecoveryEvents recovery = {}) const;
 
   OcclusionAwarePfOptions options_;
   Random random_;          ///< flag and resampling draws

@@ -29,18 +29,24 @@ Estimate StandardParticleFilter::step(double t, const mrpt::poses::CPose3D* meas
   }
   filter_.predict(t - last_t_);
   last_t_ = t;
+  RecoveryEvents recovery;
   if (measurement)
-    filter_.update_with_measurement(translation_of(*measurement), orientation_of(*measurement));
+    recovery.sensor_reset =
+        filter_.update_with_measurement(translation_of(*measurement), orientation_of(*measurement));
   last_report_ = filter_.normalise_and_resample();
-  return make_estimate(t, measurement ? EstimateMode::kMeasured : EstimateMode::kPredicted);
+  recovery.weights_underflow = last_report_.weights_underflow();
+  return make_estimate(t, measurement ? EstimateMode::kMeasured : EstimateMode::kPredicted,
+                       recovery);
 }
 
-Estimate StandardParticleFilter::make_estimate(double t, EstimateMode mode) const {
+Estimate StandardParticleFilter::make_estimate(double t, EstimateMode mode,
+                                               RecoveryEvents recovery) const {
   Estimate estimate;
   estimate.t = t;
   estimate.pose = filter_.estimate();
   estimate.observation_trace = filter_.observation_trace();
   estimate.mode = mode;
+  estimate.recovery = recovery;
   return estimate;
 }
 

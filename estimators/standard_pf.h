@@ -24,7 +24,7 @@ class StandardParticleFilter final : public Estimator {
   const ResampleReport& last_report() const { return last_report_; }
 
  private:
-  Estimate make_estimate(double t, EstimateMode mode) const;
+  Estimate make_estimate(double t, EstimateMode mode, RecoveryEvents recovery = {}) const;
 
   PoseParticleFilter filter_;
   ResampleReport last_report_;

@@ -108,7 +108,7 @@ void write_records_csv(const std::filesystem::path& path, const ExperimentResult
           << number(tq.w()) << ',' << number(m.x()) << ',' << number(m.y()) << ',' << number(m.z())
           << ',' << number(q.x()) << ',' << number(q.y()) << ',' << number(q.z()) << ','
           << number(q.w()) << ',' << number(r.estimate.observation_trace) << ','
-          << to_string(r.estimate.mode) << ',' << (r.visible ? 1 : 0) << ','
+          << mode_column(r.estimate.mode, r.estimate.recovery) << ',' << (r.visible ? 1 : 0) << ','
           << r.estimate.hypothesis << ',' << (r.estimate.alert ? 1 : 0) << '\n';
     }
   });

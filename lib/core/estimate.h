@@ -2,6 +2,7 @@
 // An estimator's output for one object at one frame.
 
 #include "core/estimate_mode.h"
+#include "core/recovery_events.h"
 
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 
@@ -18,6 +19,9 @@ struct Estimate {
   /// trace of the observation covariance used at this step (paper Eq. 15, U = trace(Q~)).
   double observation_trace = 0.0;
   EstimateMode mode = EstimateMode::kMeasured;
+  /// What the step had to do to stay usable (sensor reset, underflow, Q~ capped): reported after
+  /// the mode word in result files.
+  RecoveryEvents recovery;
   /// 0 for an object's main estimate; 1, 2, ... for the further hypotheses an estimator keeps
   /// (the OPF's virtual object O_i' when two occluders are equally likely, paper Sec. III-B.2).
   int hypothesis = 0;

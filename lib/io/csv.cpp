@@ -15,6 +15,26 @@ namespace {
 
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
+// Reads one line into `text`, without its '\n'; false at the end of the input. Returns true with
+// `too_long` set as soon as the line exceeds kMaxLineBytes, so that a file with no line breaks
+// (a binary file, a mangled export) is never held in memory whole.
+bool read_bounded_line(std::istream& in, std::string& text, bool& too_long) {
+  text.clear();
+  too_long = false;
+  std::streambuf* const buffer = in.rdbuf();
+  bool any = false;
+  for (int c = buffer->sbumpc(); c != std::char_traits<char>::eof(); c = buffer->sbumpc()) {
+    any = true;
+    if (c == '\n') return true;
+    if (text.size() == kMaxLineBytes) {
+      too_long = true;
+      return true;
+    }
+    text.push_back(static_cast<char>(c));
+  }
+  return any;
+}
+
 bool is_blank(char c) {
   return c == ' ' || c == '\t';
 }
@@ -169,8 +189,13 @@ void Reader::fail(const std::string& message) const {
 
 bool Reader::read_line(std::vector<std::string>& fields) {
   std::string text;
-  while (std::getline(in_, text)) {
+  bool too_long = false;
+  while (read_bounded_line(in_, text, too_long)) {
     ++lines_read_;
+    if (too_long)
+      throw InputError(source_, lines_read_, "",
+                       "line longer than " + std::to_string(kMaxLineBytes) +
+                           " bytes: expected a CSV text file with one row per line");
     std::string_view view = text;
     if (lines_read_ == 1 && view.starts_with(kUtf8Bom)) view.remove_prefix(kUtf8Bom.size());
     if (view.ends_with('\r')) view.remove_suffix(1);

@@ -31,6 +31,10 @@ std::string format_double(double value);
 /// that split_line gives it back unchanged.
 std::string quote_if_needed(std::string_view text);
 
+/// The longest line a Reader accepts (1 MiB, thousands of columns): a longer one is an error, not
+/// an allocation of the whole file.
+inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
+
 /// Reads a CSV stream row by row against its header (the first non-blank line), keeping the line
 /// numbers for error messages.
 class Reader {

@@ -44,8 +44,7 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate) {
   for (const double value :
        {mean.x(), mean.y(), mean.z(), q.x(), q.y(), q.z(), qw, estimate.observation_trace})
     row += ',' + csv::format_double(value);
-  row += ',';
-  row += to_string(estimate.mode);
+  row += ',' + mode_column(estimate.mode, estimate.recovery);
   for (int i = 0; i < 6; ++i) row += ',' + csv::format_double(std::sqrt(estimate.pose.cov(i, i)));
   row += ',' + std::to_string(estimate.hypothesis);
   row += estimate.alert ? ",1," : ",0,";
@@ -87,8 +86,12 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
     // Non-finite traces are legitimate output (e.g. an estimator with no observation model).
     record.trace = reader.number_or_non_finite(column[9]);
     record.mode = reader.field(column[10]);
-    if (record.mode.empty())
-      reader.fail(column[10], "expected an estimate mode, got an empty field");
+    if (!parse_mode_column(record.mode))
+      reader.fail(column[10],
+                  "expected a mode (measured, predicted, dynamics, occluder or "
+                  "random_walk) optionally followed by +reset, +underflow, +capped; "
+                  "got '" +
+                      record.mode + "'");
     if (hypothesis_column) {
       const double h = reader.number(*hypothesis_column);
       if (h < 0 || h != static_cast<int>(h))

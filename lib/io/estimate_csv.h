@@ -6,7 +6,8 @@
 // hypothesis,alert,occlusion_probability
 // Numbers are the shortest text that reads back exactly; the quaternion has qw >= 0; trace is the
 // observation-covariance trace used at the step; mode says what produced the estimate (see
-// EstimateMode); std_* are the square roots of the covariance diagonal over MRPT's (x, y, z, yaw,
+// EstimateMode), then what the step had to do to stay usable ("measured+reset", see
+// RecoveryEvents); std_* are the square roots of the covariance diagonal over MRPT's (x, y, z, yaw,
 // pitch, roll); hypothesis is 0 for the object's main estimate and 1, 2, ... for further
 // hypotheses (extra rows); alert is 1 when trace >= epsilon_safe; occlusion_probability is empty
 // unless the estimator models it.

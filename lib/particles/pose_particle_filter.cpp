@@ -88,6 +88,7 @@ void PoseParticleFilter::initialise(const Eigen::Vector3d& position,
   scatter_around(translation_, position, options_.observation_noise_translation, noise_);
   scatter_around(rotation_, orientation, options_.observation_noise_rotation, noise_);
   translation_reweighted_ = rotation_reweighted_ = false;
+  translation_underflow_ = rotation_underflow_ = false;
 }
 
 void PoseParticleFilter::predict(double dt) {
@@ -123,6 +124,9 @@ void PoseParticleFilter::reweight_translation(const Eigen::Vector3d& position,
   translation_best_exponent_ =
       reweight_gaussian(translation_, position, covariance_scale * sigma * sigma);
   translation_reweighted_ = true;
+  // Negated `>=` so that a NaN exponent (a non-finite measurement) counts as underflow too.
+  translation_underflow_ =
+      translation_underflow_ || !(translation_best_exponent_ >= kLikelihoodUnderflowExponent);
 }
 
 void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation,
@@ -131,6 +135,8 @@ void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation
   rotation_best_exponent_ =
       reweight_gaussian(rotation_, orientation, covariance_scale * sigma * sigma);
   rotation_reweighted_ = true;
+  rotation_underflow_ =
+      rotation_underflow_ || !(rotation_best_exponent_ >= kLikelihoodUnderflowExponent);
 }
 
 bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position,
@@ -142,12 +148,12 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   bool reset = false;
   if (translation_best_exponent_ < threshold) {
     scatter_around(translation_, position, options_.observation_noise_translation, noise_);
-    translation_reweighted_ = false;
+    translation_reweighted_ = translation_underflow_ = false;  // the reset replaced the weights
     reset = true;
   }
   if (rotation_best_exponent_ < threshold) {
     scatter_around(rotation_, orientation, options_.observation_noise_rotation, noise_);
-    rotation_reweighted_ = false;
+    rotation_reweighted_ = rotation_underflow_ = false;
     reset = true;
   }
   return reset;
@@ -162,6 +168,8 @@ ResampleReport PoseParticleFilter::normalise_and_resample() {
       normalise_and_maybe_resample(rotation_, rotation_reweighted_, options_.resampling, random_,
                                    report.ess_rotation, report.resampled_rotation);
   report.weights_recovered = !translation_ok || !rotation_ok;
+  report.likelihood_underflow = translation_underflow_ || rotation_underflow_;
+  translation_underflow_ = rotation_underflow_ = false;
   translation_reweighted_ = translation_reweighted_ && !report.resampled_translation;
   rotation_reweighted_ = rotation_reweighted_ && !report.resampled_rotation;
   return report;

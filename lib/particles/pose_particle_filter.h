@@ -28,7 +28,18 @@ struct ResampleReport {
   /// True when every weight of a portion vanished (a measurement far from every particle) and
   /// the weights were reset to uniform instead of becoming NaN.
   bool weights_recovered = false;
+  /// True when a reweight since the last step found the likelihood of every particle of a portion
+  /// below the smallest normal double (kLikelihoodUnderflowExponent); log-domain normalisation
+  /// kept the weights' ratios. Not set for a portion that sensor resetting then re-scattered.
+  bool likelihood_underflow = false;
+
+  /// Either way the weights of a portion had to be rescued from underflow.
+  bool weights_underflow() const { return weights_recovered || likelihood_underflow; }
 };
+
+/// exp(x) is below the smallest normal double for x under log(DBL_MIN) = -708.4: a Gaussian
+/// exponent this low means the measurement lies about 37.6 (inflated) sigmas from the particle.
+inline constexpr double kLikelihoodUnderflowExponent = -708.3964185322641;
 
 class PoseParticleFilter {
  public:
@@ -96,6 +107,8 @@ class PoseParticleFilter {
   bool rotation_reweighted_ = false;
   double translation_best_exponent_ = 0.0;  ///< of the last reweight, for sensor resetting
   double rotation_best_exponent_ = 0.0;
+  bool translation_underflow_ = false;  ///< since the last normalise_and_resample
+  bool rotation_underflow_ = false;
 };
 
 /// Throws std::invalid_argument naming the first option that is out of range.

@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -73,6 +74,46 @@ TEST_F(OpfProgram, TrackRoundTripsTheExampleLog) {
   // Through the occlusion the fitted line (50 estimates, ~3 mm jitter and ~2 mm random-walk lag
   // at 8 cm/s) keeps the ball within a few mm; standing still would average 4 cm.
   EXPECT_LT(hidden_ball_error / static_cast<double>(hidden_ball), 0.01);
+}
+
+// A box at rest whose detection at frame 15 is 3 m off (a wrong detection). Every particle
+// estimator re-scatters at frame 15 and again at 16, when the box is back, and says so in the
+// mode column; the Kalman filter has no particles to rescue. With sensor resetting off the
+// particle filters' weights underflow at frame 15 instead (3 m is 300 sigmas): the cloud stays
+// where it was, so frame 16 is an ordinary update.
+TEST_F(OpfProgram, TrackReportsRescuedFramesInTheModeColumn) {
+  std::ofstream log(dir_ / "log.csv");
+  log << "t,object,x,y,z,qx,qy,qz,qw\n";
+  for (int k = 0; k < 30; ++k)
+    log << k / 30.0 << ",box," << (k == 15 ? 3.5 : 0.5) << ",0,0,0,0,0,1\n";
+  log.close();
+  std::ofstream(dir_ / "no_gate.yaml") << "pf:\n  reset_gate: 0\n";
+  const auto modes = [&](const std::string& options) {
+    const fs::path est = dir_ / "est.csv";
+    EXPECT_EQ(run("track --in " + (dir_ / "log.csv").string() + " --out " + est.string() +
+                  " --particles 500 " + options),
+              0)
+        << err();
+    std::vector<std::string> column;
+    for (const auto& r : read_estimate_csv(est)) column.push_back(r.mode);
+    return column;
+  };
+  const auto expected = [](const std::string& at_15, const std::string& at_16) {
+    std::vector<std::string> column(30, "measured");
+    column[15] = at_15;
+    column[16] = at_16;
+    return column;
+  };
+  for (const char* estimator : {"opf", "pf", "oapf"})
+    EXPECT_EQ(modes(std::string("--estimator ") + estimator),
+              expected("measured+reset", "measured+reset"))
+        << estimator;
+  EXPECT_EQ(modes("--estimator cvkf"), expected("measured", "measured"));
+  const std::string no_gate = " --config " + (dir_ / "no_gate.yaml").string();
+  for (const char* estimator : {"opf", "pf"})
+    EXPECT_EQ(modes(std::string("--estimator ") + estimator + no_gate),
+              expected("measured+underflow", "measured"))
+        << estimator;
 }
 
 TEST_F(OpfProgram, SameSeedGivesByteIdenticalOutputDifferentSeedDoesNot) {

@@ -206,6 +206,87 @@ TEST(ObjectPermanenceFilter, TraceGrowsExponentiallyWhileHiddenAndResetsOnReappe
     ASSERT_DOUBLE_EQ(flat.estimates[k].at("ball").observation_trace, trace_q) << k;
 }
 
+// A still ball hidden under a still mug for 30 s: Q~ grows kappa = 1.03 per frame until it
+// reaches its cap of 10^6 Q, at hidden frame ceil(ln 10^6 / ln 1.03) = 468, and stays there; the
+// mode column says "occluder+capped" from that frame on, and the first frame seen again is
+// plain "measured" with trace(Q) back.
+TEST(ObjectPermanenceFilter, ALongOcclusionReachesTheTraceCapAndReportsIt) {
+  Scene scene;
+  scene.frames = 920;
+  scene.objects.push_back({"ball", [](double) { return Eigen::Vector3d(0.4, 0.0, 0.0); },
+                           [](double) { return Eigen::Quaterniond::Identity(); },
+                           [](int k) { return k < 20 || k >= 920 - 20; }});
+  scene.objects.push_back({"mug", [](double) { return Eigen::Vector3d(0.4, 0.0, 0.03); }});
+  OpfOptions options;
+  options.particles.translation_particles = options.particles.rotation_particles = 1000;
+  const SceneRun opf = run(scene, opf_factory(options));
+  const double trace_q = 3 * 0.01 * 0.01 + 3 * 0.05 * 0.05;
+  const int capped_from = static_cast<int>(std::ceil(std::log(1e6) / std::log(1.03)));
+  ASSERT_EQ(capped_from, 468);
+  for (int k = 20; k < 900; ++k) {
+    const Estimate& e = opf.estimates[k].at("ball");
+    const bool capped = k - 19 >= capped_from;
+    ASSERT_EQ(mode_column(e.mode, e.recovery), capped ? "occluder+capped" : "occluder") << k;
+    if (capped) {
+      ASSERT_DOUBLE_EQ(e.observation_trace, 1e6 * trace_q) << k;
+    }
+    ASSERT_TRUE(e.pose.cov.asEigen().allFinite()) << k;
+  }
+  const Estimate& back = opf.estimates[900].at("ball");
+  EXPECT_EQ(mode_column(back.mode, back.recovery), "measured");
+  EXPECT_DOUBLE_EQ(back.observation_trace, trace_q);
+  // Capped at 10^6 Q the virtual measurement still holds the ball at the mug (sigma 10 m would
+  // not): the estimate stays within the cloud's random-walk spread of the truth.
+  EXPECT_LT(error_at(opf, scene, "ball", 899), 0.05);
+}
+
+// The mug hiding a still ball jumps 1 m in one frame (a teleport, or a mislabelled detection).
+// The mug's own filter finds its detection 100 sigmas from every particle and re-scatters
+// ("measured+reset"). The ball's virtual measurement, the mug's detection, is 1 m from the
+// ball's cloud with Q~ = 1.03^21 Q: exp(-0.5 * 1 / (1e-4 * 1.86)) = exp(-2700) underflows under
+// every particle ("occluder+underflow"). The log-domain weights stay finite and the cloud
+// collapses onto its particle nearest the mug, at its edge: the predicted cloud has sigma
+// sqrt(9.4^2 + 9.1^2) = 13 mm per axis (frame 39's spread and one step of process noise), and
+// the largest x of 5000 draws lies near 3.7 sigma, so within 4.5 sigma of the mean on each axis.
+// One frame later the particles are carried 1 m with the mug's estimate. That jump reads as
+// 1 m over the 0.23 s the speed track spans, v = 43, so Q~ grows by 1.03^43 = 3.6 per frame: the
+// alert is raised from frame 42 and the virtual measurement no longer pulls the ball, which
+// keeps its collapse offset plus a random walk of 0.05 * sqrt(19 / 30) = 4 cm per axis by frame
+// 59 (1 sigma): within 0.06 * sqrt(3) + 2 * 0.04 * sqrt(3) = 0.24 m of the truth, where a ball
+// left behind would be 1 m off.
+TEST(ObjectPermanenceFilter, ATeleportedOccluderIsReportedAndFollowed) {
+  const auto mug = [](double t) {
+    return t * 30.0 < 39.5 ? Eigen::Vector3d(0.4, 0.0, 0.03) : Eigen::Vector3d(1.4, 0.0, 0.03);
+  };
+  Scene scene;
+  scene.frames = 60;
+  scene.objects.push_back(
+      {"ball", [mug](double t) { return Eigen::Vector3d(mug(t).x(), 0.0, 0.03); },
+       [](double) { return Eigen::Quaterniond::Identity(); }, [](int k) { return k < 20; }});
+  scene.objects.push_back({"mug", mug});
+  const SceneRun opf = run(scene, opf_factory(OpfOptions{}));
+  for (int k = 0; k < 60; ++k) {
+    const Estimate& ball = opf.estimates[k].at("ball");
+    const Estimate& mug_estimate = opf.estimates[k].at("mug");
+    ASSERT_EQ(mode_column(ball.mode, ball.recovery),
+              k < 20 ? "measured" : (k == 40 ? "occluder+underflow" : "occluder"))
+        << k;
+    ASSERT_EQ(mode_column(mug_estimate.mode, mug_estimate.recovery),
+              k == 40 ? "measured+reset" : "measured")
+        << k;
+    ASSERT_TRUE(ball.pose.cov.asEigen().allFinite()) << k;
+    ASSERT_EQ(ball.alert, k >= 42) << k;
+  }
+  const Eigen::Vector3d before = translation_of(opf.estimates[39].at("ball").pose.mean);
+  const Eigen::Vector3d collapsed = translation_of(opf.estimates[40].at("ball").pose.mean);
+  for (int axis = 0; axis < 3; ++axis)
+    EXPECT_LT(std::abs(collapsed(axis) - before(axis)), 4.5 * 0.013) << axis;
+  EXPECT_GT(collapsed.x(), before.x());  // the particle nearest the mug's new place
+  EXPECT_GT(opf.estimates[47].at("ball").observation_trace,
+            std::pow(3.5, 6) * opf.estimates[41].at("ball").observation_trace);
+  for (int k = 41; k < 60; ++k) EXPECT_LT(error_at(opf, scene, "ball", k), 0.24) << k;
+}
+
 // --- Scene 2: a ball rolling at constant velocity passes behind a wall (experiment 1, step 2)
 Scene rolling_ball_scene() {
   Scene scene;

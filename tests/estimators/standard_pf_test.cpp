@@ -170,6 +170,72 @@ TEST(StandardParticleFilter, WildMeasurementKeepsEstimatesFinite) {
   const Estimate e = pf.step(kDt, &far, no_ensemble());
   for (double v : e.pose.mean.asVectorVal()) EXPECT_TRUE(std::isfinite(v));
   for (int i = 0; i < 36; ++i) EXPECT_TRUE(std::isfinite(e.pose.cov.data()[i]));
+  EXPECT_EQ(e.recovery, RecoveryEvents{.sensor_reset = true});
+}
+
+// A PF settled on a static object at the origin (1000 + 1000 particles, seeded), for the
+// recovery tests: returns the filter after 10 frames of exact measurements, none of them rescued.
+StandardParticleFilter settled_filter(double reset_gate) {
+  PoseParticleFilterOptions options;
+  options.translation_particles = options.rotation_particles = 1000;
+  options.reset_gate = reset_gate;
+  StandardParticleFilter pf(options, 5);
+  const auto origin = make_pose({0, 0, 0}, Eigen::Quaterniond::Identity());
+  pf.initialise(0.0, origin);
+  for (int k = 1; k <= 10; ++k) {
+    const Estimate e = pf.step(k * kDt, &origin, no_ensemble());
+    EXPECT_FALSE(e.recovery.any()) << mode_column(e.mode, e.recovery);
+  }
+  return pf;
+}
+
+// A detection 1 m off (200 sigmas, past the 5-sigma gate) re-scatters the translation particles
+// around it: the mean of 1000 draws of N(z, 0.01^2) per axis is within 5 standard errors
+// (5 * 0.01 / sqrt(1000) = 1.6 mm per axis, 2.7 mm in norm) of z. The rotation is untouched.
+TEST(StandardParticleFilter, AMeasurementPastTheResetGateIsReportedAsAReset) {
+  StandardParticleFilter pf = settled_filter(5.0);
+  const auto jumped = make_pose({1.0, 0, 0}, Eigen::Quaterniond::Identity());
+  const Estimate e = pf.step(11 * kDt, &jumped, no_ensemble());
+  EXPECT_EQ(e.recovery, RecoveryEvents{.sensor_reset = true});
+  EXPECT_EQ(mode_column(e.mode, e.recovery), "measured+reset");
+  EXPECT_LT(translation_error(e.pose.mean, jumped), 0.0027);
+  const auto next = pf.step(12 * kDt, &jumped, no_ensemble());
+  EXPECT_FALSE(next.recovery.any());
+}
+
+// With sensor resetting off, the same detection 1 m off has likelihood exp(-0.5 (1 / 0.01)^2) =
+// exp(-5000) under every particle, far below the smallest double. The log-domain weights keep
+// the ratios (the particles on the near side of the cloud win), so the estimate moves only
+// within the cloud (its spread is about 0.05 * sqrt(1/30) ~ 1 cm per axis) and stays finite;
+// 0.3 m off (exp(-450) at most) is representable and is not reported.
+TEST(StandardParticleFilter, WithoutTheGateAWildMeasurementIsReportedAsUnderflow) {
+  StandardParticleFilter pf = settled_filter(0.0);
+  const auto near = make_pose({0.3, 0, 0}, Eigen::Quaterniond::Identity());
+  const Estimate ok = pf.step(11 * kDt, &near, no_ensemble());
+  EXPECT_FALSE(ok.recovery.any()) << mode_column(ok.mode, ok.recovery);
+
+  StandardParticleFilter wild_pf = settled_filter(0.0);
+  const auto wild = make_pose({1.0, 0, 0}, Eigen::Quaterniond::Identity());
+  const Estimate e = wild_pf.step(11 * kDt, &wild, no_ensemble());
+  EXPECT_EQ(mode_column(e.mode, e.recovery), "measured+underflow");
+  EXPECT_FALSE(wild_pf.last_report().weights_recovered);  // ratios kept, not reset
+  const double moved = translation_of(e.pose.mean).x();
+  EXPECT_GT(moved, 0.0);  // towards the measurement
+  EXPECT_LT(moved, 0.05);
+  EXPECT_TRUE(e.pose.cov.asEigen().allFinite());
+}
+
+// A detection so far off that d^2 overflows (1e200 m) gives every particle a log-weight of -inf:
+// no weight is usable, so the weights are reset to uniform and the estimate is the prediction
+// (within the cloud's spread of the origin), reported as underflow; never NaN.
+TEST(StandardParticleFilter, ANonFiniteLikelihoodResetsTheWeightsAndIsReported) {
+  StandardParticleFilter pf = settled_filter(0.0);
+  const auto absurd = make_pose({1e200, 0, 0}, Eigen::Quaterniond::Identity());
+  const Estimate e = pf.step(11 * kDt, &absurd, no_ensemble());
+  EXPECT_TRUE(pf.last_report().weights_recovered);
+  EXPECT_EQ(mode_column(e.mode, e.recovery), "measured+underflow");
+  EXPECT_LT(translation_of(e.pose.mean).norm(), 0.01);
+  EXPECT_TRUE(e.pose.cov.asEigen().allFinite());
 }
 
 }  // namespace

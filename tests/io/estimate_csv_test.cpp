@@ -116,6 +116,8 @@ TEST_F(EstimateCsv, RoundTripsExactly) {
       make_estimate(0.1 + 0.2, "ball", mrpt::poses::CPose3D(0, 0, 0, 0, 0, 0))};
   estimates[1].mode = EstimateMode::kPredicted;
   estimates[1].observation_trace = 1.0 / 7.0;
+  estimates[2].mode = EstimateMode::kOccluder;
+  estimates[2].recovery = {.weights_underflow = true, .trace_capped = true};
 
   const auto records = read_estimate_csv(write(estimates));
   ASSERT_EQ(records.size(), estimates.size());
@@ -128,8 +130,9 @@ TEST_F(EstimateCsv, RoundTripsExactly) {
         orientation_of(records[i].pose).angularDistance(orientation_of(estimates[i].pose.mean)),
         1e-12);
     EXPECT_EQ(records[i].trace, estimates[i].observation_trace);
-    EXPECT_EQ(records[i].mode, to_string(estimates[i].mode));
+    EXPECT_EQ(records[i].mode, mode_column(estimates[i].mode, estimates[i].recovery));
   }
+  EXPECT_EQ(records[2].mode, "occluder+underflow+capped");
 }
 
 TEST_F(EstimateCsv, RoundTripsHypothesisAlertAndOcclusionProbability) {
@@ -174,6 +177,21 @@ TEST_F(EstimateCsv, ReaderReportsBadFields) {
                    write_text(header + "0,ball,1,2,3,0,0,0,2,0.1,measured,1,1,1,1,1,1,0,0,\n")),
                InputError);
   EXPECT_THROW(read_estimate_csv(dir_ / "missing.csv"), InputError);
+}
+
+TEST_F(EstimateCsv, ReaderRejectsAModeItDoesNotKnowNamingLineAndColumn) {
+  const std::string header = kHeader;
+  const std::string good = "0,ball,1,2,3,0,0,0,1,0.1,measured+reset,1,1,1,1,1,1,0,0,\n";
+  EXPECT_EQ(read_estimate_csv(write_text(header + good))[0].mode, "measured+reset");
+  try {
+    read_estimate_csv(
+        write_text(header + good + "0.1,ball,1,2,3,0,0,0,1,0.1,measured+rest,1,1,1,1,1,1,0,0,\n"));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.field(), "mode");
+    EXPECT_NE(std::string(e.what()).find("'measured+rest'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

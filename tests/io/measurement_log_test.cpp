@@ -1,6 +1,7 @@
 #include "io/measurement_log.h"
 
 #include "core/pose_conversion.h"
+#include "io/csv.h"
 #include "io/input_error.h"
 
 #include <gtest/gtest.h>
@@ -147,6 +148,35 @@ TEST(MeasurementLogErrors, EmptyFileOrNoHeader) {
   const InputError e = parse_error("0,ball,1,2,3,0,0,0,1\n");
   EXPECT_EQ(e.line(), 1u);
   EXPECT_TRUE(contains(e.message(), "header line missing")) << e.what();
+}
+
+// A file without line breaks (a binary file, a mangled export) stops at the first line longer
+// than 1 MiB instead of being read into memory whole; a line just under the bound is read.
+TEST(MeasurementLogErrors, ALineLongerThanTheBoundIsAnErrorNotAnAllocation) {
+  const std::string row = "0,ball,0,0,0,0,0,0,1";
+  const std::string padded_header =
+      "t,object,x,y,z,qx,qy,qz,qw" + std::string(csv::kMaxLineBytes - 26 - 8, ' ') + ",comment\n";
+  ASSERT_EQ(padded_header.size(), csv::kMaxLineBytes + 1);  // the longest line, and its '\n'
+  EXPECT_EQ(parse(padded_header + row + ",x\n").frames.size(), 1u);
+
+  const InputError e =
+      parse_error(std::string(kHeader) + row + "\n" + std::string(3 * csv::kMaxLineBytes, 'x'));
+  EXPECT_EQ(e.line(), 3u);
+  EXPECT_TRUE(contains(e.message(), "line longer than 1048576 bytes")) << e.what();
+}
+
+// A long log (200 000 rows of 4 objects, 50 000 frames) is read in full, row for row.
+TEST(MeasurementLog, ReadsALongLogInFull) {
+  std::string text = kHeader;
+  constexpr int kFrames = 50'000;
+  for (int k = 0; k < kFrames; ++k)
+    for (const char* object : {"a", "b", "c", "d"})
+      text += std::to_string(k) + "e-2," + object + ",1,2,3,0,0,0,1\n";
+  const MeasurementLog log = parse(text);
+  ASSERT_EQ(log.frames.size(), static_cast<std::size_t>(kFrames));
+  EXPECT_EQ(log.objects.size(), 4u);
+  for (const Frame& frame : log.frames) ASSERT_EQ(frame.detections.size(), 4u) << frame.t;
+  EXPECT_DOUBLE_EQ(log.frames.back().t, (kFrames - 1) * 1e-2);
 }
 
 TEST(MeasurementLogErrors, MissingColumnsAreListed) {
