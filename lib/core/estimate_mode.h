@@ -1,6 +1,7 @@
 #pragma once
 // What produced an estimate: the word written in the `mode` column of result files.
 
+#include <array>
 #include <string_view>
 
 namespace opf {
@@ -12,6 +13,11 @@ enum class EstimateMode {
   kOccluder,    ///< OPF: updated with the occluder's measurement (occluder module)
   kRandomWalk,  ///< occlusion-aware PF: occluded particles random-walk in a widening search
 };
+
+/// Every mode, for readers that map a word back to its mode.
+inline constexpr std::array<EstimateMode, 5> kEstimateModes = {
+    EstimateMode::kMeasured, EstimateMode::kPredicted, EstimateMode::kDynamics,
+    EstimateMode::kOccluder, EstimateMode::kRandomWalk};
 
 constexpr std::string_view to_string(EstimateMode mode) {
   switch (mode) {

@@ -6,10 +6,6 @@
 namespace opf {
 namespace {
 
-constexpr std::array<EstimateMode, 5> kModes = {EstimateMode::kMeasured, EstimateMode::kPredicted,
-                                                EstimateMode::kDynamics, EstimateMode::kOccluder,
-                                                EstimateMode::kRandomWalk};
-
 // The events in the order they are written, each with its word.
 constexpr std::array<std::pair<std::string_view, bool RecoveryEvents::*>, 3> kEvents = {{
     {"reset", &RecoveryEvents::sensor_reset},
@@ -34,7 +30,7 @@ std::optional<ModeColumn> parse_mode_column(std::string_view text) {
   const std::string_view word = text.substr(0, plus);
   ModeColumn column;
   bool known = false;
-  for (const EstimateMode mode : kModes) {
+  for (const EstimateMode mode : kEstimateModes) {
     if (to_string(mode) != word) continue;
     column.mode = mode;
     known = true;

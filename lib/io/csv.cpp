@@ -17,14 +17,13 @@ constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
 // Reads one line into `text`, without its '\n'; false at the end of the input. Returns true with
 // `too_long` set as soon as the line exceeds kMaxLineBytes, so that a file with no line breaks
-// (a binary file, a mangled export) is never held in memory whole.
+// (a binary file, a mangled export) is never held in memory whole. It reads the stream buffer
+// directly, so a read error ends the input or propagates as the buffer's exception.
 bool read_bounded_line(std::istream& in, std::string& text, bool& too_long) {
   text.clear();
   too_long = false;
   std::streambuf* const buffer = in.rdbuf();
-  bool any = false;
   for (int c = buffer->sbumpc(); c != std::char_traits<char>::eof(); c = buffer->sbumpc()) {
-    any = true;
     if (c == '\n') return true;
     if (text.size() == kMaxLineBytes) {
       too_long = true;
@@ -32,7 +31,7 @@ bool read_bounded_line(std::istream& in, std::string& text, bool& too_long) {
     }
     text.push_back(static_cast<char>(c));
   }
-  return any;
+  return !text.empty();  // a last line without '\n'
 }
 
 bool is_blank(char c) {
@@ -204,8 +203,6 @@ bool Reader::read_line(std::vector<std::string>& fields) {
     fields = split_line(view, source_, line_);
     return true;
   }
-  if (in_.bad())
-    throw InputError(source_, 0, "", "read error after line " + std::to_string(lines_read_));
   return false;
 }
 

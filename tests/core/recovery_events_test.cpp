@@ -18,9 +18,7 @@ TEST(RecoveryEvents, ModeColumnIsTheModeWordThenEachEventInOrder) {
 }
 
 TEST(RecoveryEvents, EveryWrittenColumnParsesBackToWhatWasWritten) {
-  for (const EstimateMode mode :
-       {EstimateMode::kMeasured, EstimateMode::kPredicted, EstimateMode::kDynamics,
-        EstimateMode::kOccluder, EstimateMode::kRandomWalk}) {
+  for (const EstimateMode mode : kEstimateModes) {
     for (int bits = 0; bits < 8; ++bits) {
       const RecoveryEvents events{.sensor_reset = (bits & 1) != 0,
                                   .weights_underflow = (bits & 2) != 0,
