@@ -5,6 +5,7 @@
 #include "io/yaml_reader.h"
 #include "particles/resampling_scheme_names.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -93,6 +94,56 @@ void read_order(YamlReader& yaml, std::string_view key, int& order) {
   order = static_cast<int>(value);
 }
 
+void read_dynamics(YamlReader& yaml, DynamicsOptions& options) {
+  std::string predictor = options.predictor == DynamicsPredictor::kSelected ? "selected" : "paper";
+  yaml.get("predictor", predictor);
+  if (predictor == "selected")
+    options.predictor = DynamicsPredictor::kSelected;
+  else if (predictor == "paper")
+    options.predictor = DynamicsPredictor::kPaper;
+  else
+    yaml.fail("predictor", "expected selected or paper, got \"" + predictor + "\"");
+  MotionPredictionOptions& selection = options.selection;
+  yaml.get_positive("history_window", selection.history_window);
+  std::vector<std::string> windows;
+  yaml.get("fit_windows", windows);
+  if (!windows.empty()) {
+    selection.fit_windows.clear();
+    for (const std::string& w : windows) {
+      std::size_t used = 0;
+      double value = 0.0;
+      try {
+        value = std::stod(w, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      yaml.require("fit_windows", used == w.size() && value > 0.0 && std::isfinite(value),
+                   "a list of positive numbers of seconds");
+      selection.fit_windows.push_back(value);
+    }
+  }
+  yaml.get_positive("validation_horizon", selection.validation_horizon);
+  yaml.get("ballistic", selection.ballistic);
+  yaml.get("constant_acceleration", selection.constant_acceleration);
+  yaml.get("gravity", selection.gravity);
+  yaml.require("gravity", selection.gravity >= 0.0, "m/s^2 >= 0");
+  std::vector<double> up;
+  yaml.get("up", up, 3);
+  if (!up.empty()) {
+    selection.up = Eigen::Vector3d(up[0], up[1], up[2]);
+    yaml.require("up", selection.up.norm() > 0.0, "a non-zero vector");
+  }
+  yaml.get_positive("uncertainty_scale", selection.uncertainty_scale);
+  yaml.get("settle_time", selection.settle_time);
+  yaml.require("settle_time", selection.settle_time >= 0.0, "seconds >= 0");
+  yaml.get("onset_guard", selection.onset_guard);
+  yaml.require("onset_guard", selection.onset_guard >= 0.0, "seconds >= 0");
+  std::size_t iterations = static_cast<std::size_t>(selection.robust_iterations);
+  yaml.get("robust_iterations", iterations);
+  yaml.require("robust_iterations", iterations <= 20, "an integer from 0 to 20");
+  selection.robust_iterations = static_cast<int>(iterations);
+}
+
 void read_opf(YamlReader& yaml, OpfOptions& options) {
   YamlReader& modules = yaml.child("modules");
   modules.get("dynamics", options.modules.dynamics);
@@ -104,6 +155,10 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   yaml.get("history_reset_gap", options.history_reset_gap);
   yaml.require("history_reset_gap", options.history_reset_gap >= 0.0, "a number of seconds >= 0");
   yaml.get("carry_particles", options.carry_particles);
+
+  yaml.get("velocity_drift", options.velocity_drift);
+  yaml.get_positive("velocity_window", options.velocity_window);
+  read_dynamics(yaml.child("dynamics"), options.dynamics);
 
   YamlReader& motion = yaml.child("motion_thresholds");
   motion.get("translation", options.motion.translation);

@@ -1,11 +1,13 @@
 #include "estimators/object_permanence_filter.h"
 
 #include "core/pose_conversion.h"
+#include "core/so3.h"
 #include "particles/random.h"
 #include "permanence/motion_classifier.h"
 #include "permanence/occluder_selection.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -40,6 +42,9 @@ void validate(const OpfOptions& options) {
   if (options.trajectory.translation_order < 0 || options.trajectory.translation_order > 5 ||
       options.trajectory.rotation_order < 0 || options.trajectory.rotation_order > 5)
     throw std::invalid_argument("OPF trajectory polynomial orders must be in [0, 5]");
+  if (!(options.velocity_window > 0.0) || !std::isfinite(options.velocity_window))
+    throw std::invalid_argument("OPF option velocity_window must be a positive number of s");
+  validate(options.dynamics.selection);
 }
 
 ObjectPermanenceFilter::ObjectPermanenceFilter(const OpfOptions& options, std::string object,
@@ -54,11 +59,36 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
                            CovarianceInflation(options_.uncertainty));
   hypotheses_[0].filter.initialise(translation_of(first), orientation_of(first));
   history_.clear();
-  history_.push_back({t, translation_of(first), orientation_of(first)});
   t_ = t;
   hidden_ = false;
   initialised_ = true;
-  return make_estimate(hypotheses_[0], 0);
+  const Estimate estimate = make_estimate(hypotheses_[0], 0);
+  remember(t, translation_of(first), orientation_of(first), estimate);
+  return estimate;
+}
+
+void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
+                                      const Eigen::Quaterniond& orientation,
+                                      const Estimate& estimate) {
+  history_.push_back({t, position, orientation, translation_of(estimate.pose.mean),
+                      orientation_of(estimate.pose.mean)});
+  if (options_.dynamics.predictor == DynamicsPredictor::kPaper) {
+    while (history_.size() > options_.history_length) history_.pop_front();
+  } else {
+    const double window =
+        std::max(options_.dynamics.selection.history_window, options_.velocity_window);
+    while (history_.size() > 2 && t - history_.front().t > window) history_.pop_front();
+  }
+}
+
+void ObjectPermanenceFilter::drift_with_recent_velocity(Hypothesis& h, double dt) {
+  const auto velocity = recent_velocity(history_, options_.velocity_window);
+  if (!velocity) return;
+  // The body-frame angular velocity turns the estimate's orientation; as a world rotation it
+  // turns every particle about the same axis (they lie within a few degrees of the estimate).
+  const Eigen::Quaterniond q = history_.back().estimated_orientation.normalized();
+  const Eigen::Quaterniond turn = q * so3::exp(velocity->angular * dt) * q.conjugate();
+  h.filter.shift(velocity->linear * dt, turn.normalized());
 }
 
 Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* measurement,
@@ -72,9 +102,11 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
   }
   const double last_seen = t_;
   t_ = t;
-  for (Hypothesis& h : hypotheses_) h.filter.predict(dt);
 
   if (measurement) {
+    // The object was seen in the previous frame too: its recent velocity carries the particles.
+    if (options_.velocity_drift && !hidden_) drift_with_recent_velocity(hypotheses_[0], dt);
+    for (Hypothesis& h : hypotheses_) h.filter.predict(dt);
     const Eigen::Vector3d position = translation_of(*measurement);
     const Eigen::Quaterniond orientation = orientation_of(*measurement);
     keep_hypothesis_explaining(position);
@@ -86,6 +118,8 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     h.inflation.reset();
     h.source = Source::kMeasurement;
     h.trajectory.reset();
+    h.prediction.reset();
+    h.prediction_trace = 0.0;
     h.occluder.clear();
     h.last_carrier_position.reset();
     h.carrier_track.clear();
@@ -98,10 +132,9 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
                  t - hidden_since_ > options_.history_reset_gap))
       history_.clear();
     hidden_ = false;
-    // The history sample is the estimate itself: its moments are computed once per step.
+    // The history sample holds the estimate itself: its moments are computed once per step.
     const Estimate estimate = make_estimate(h, 0);
-    history_.push_back({t, translation_of(estimate.pose.mean), orientation_of(estimate.pose.mean)});
-    while (history_.size() > options_.history_length) history_.pop_front();
+    remember(t, position, orientation, estimate);
     return estimate;
   }
 
@@ -111,6 +144,11 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     start_occlusion(last_seen, ensemble);
   }
   for (Hypothesis& h : hypotheses_) {
+    if (h.prediction) {
+      follow_prediction(h, last_seen, t);
+      continue;
+    }
+    h.filter.predict(dt);
     const auto virtual_z = virtual_measurement(h, t, ensemble);
     if (virtual_z && options_.carry_particles)
       h.filter.shift(virtual_z->carrier_translation, virtual_z->carrier_rotation);
@@ -132,10 +170,16 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
   Hypothesis& h = hypotheses_[0];
   h.source = Source::kNone;
 
-  const std::vector<TrajectorySample> window(history_.begin(), history_.end());
+  if (options_.modules.dynamics && options_.dynamics.predictor == DynamicsPredictor::kSelected &&
+      start_dynamics(h))
+    return;
+  std::vector<TrajectorySample> window;
+  for (const MotionSample& sample : history_)
+    window.push_back({sample.t, sample.estimated_position, sample.estimated_orientation});
   const int needed =
       std::max(options_.trajectory.translation_order, options_.trajectory.rotation_order) + 1;
-  if (options_.modules.dynamics && static_cast<int>(window.size()) >= std::max(needed, 2)) {
+  if (options_.modules.dynamics && options_.dynamics.predictor == DynamicsPredictor::kPaper &&
+      static_cast<int>(window.size()) >= std::max(needed, 2)) {
     const bool pairwise = options_.motion.test == MotionTest::kMaxPairwise;
     if (!pairwise || classify_motion(window, options_.motion) == Motion::kMoving) {
       try {
@@ -182,6 +226,58 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
     follow_occluder(h, candidates[*choice.nearest].object, *candidate_estimates[*choice.nearest],
                     ensemble);
   }
+}
+
+bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
+  // Moving or static is decided as with the paper's predictor (the motion test over the
+  // history), so a static object still goes to the occluder module.
+  std::vector<TrajectorySample> window;
+  for (const MotionSample& sample : history_)
+    window.push_back({sample.t, sample.estimated_position, sample.estimated_orientation});
+  if (window.size() < 2) return false;
+  if (options_.motion.test == MotionTest::kMaxPairwise) {
+    if (classify_motion(window, options_.motion) != Motion::kMoving) return false;
+  } else {
+    try {
+      const TrajectoryModel line = fit_trajectory(window, options_.trajectory);
+      if (classify_fitted_motion(line, window.front().t, window.back().t, options_.motion) !=
+          Motion::kMoving)
+        return false;
+    } catch (const std::exception&) {
+      return false;  // a degenerate window: treat the object as static
+    }
+  }
+  const std::vector<MotionSample> samples(history_.begin(), history_.end());
+  auto prediction = predict_motion(samples, options_.dynamics.selection);
+  if (!prediction) return false;
+  h.prediction = std::move(prediction);
+  h.prediction_trace = 0.0;
+  h.source = Source::kTrajectory;
+  return true;
+}
+
+void ObjectPermanenceFilter::follow_prediction(Hypothesis& h, double t_previous, double t) {
+  // The particles ARE the prediction: moved by the model's motion since the previous step and
+  // spread by the growth of its covariance, with no virtual measurement pulling them back onto
+  // the model (that would claim the model's own output as evidence and shrink the cloud).
+  const MotionPrediction& p = *h.prediction;
+  const double h0 = t_previous - p.t_last;
+  const double h1 = t - p.t_last;
+  h.filter.shift(p.position(h1) - p.position(h0),
+                 (p.orientation(h1) * p.orientation(h0).conjugate()).normalized());
+  // The spread stops growing where Q~ reaches the uncertainty module's cap, as Q~ itself does.
+  const double q = h.filter.observation_trace(1.0);
+  const double cap = (options_.uncertainty.max_scale - 1.0) * q;
+  const double trace = p.translation_variance(h1).sum() + 3.0 * p.rotation_variance(h1);
+  const bool capped = trace >= cap;
+  if (!capped) {
+    const Eigen::Vector3d translation_growth =
+        (p.translation_variance(h1) - p.translation_variance(h0)).cwiseMax(0.0);
+    const double rotation_growth = std::max(0.0, p.rotation_variance(h1) - p.rotation_variance(h0));
+    h.filter.diffuse(translation_growth.cwiseSqrt(), std::sqrt(rotation_growth));
+  }
+  h.prediction_trace = std::min(trace, cap);
+  h.recovery = {.trace_capped = capped && options_.modules.uncertainty};
 }
 
 void ObjectPermanenceFilter::follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
@@ -280,7 +376,12 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
   estimate.object = object_;
   estimate.t = t_;
   estimate.pose = h.filter.estimate();
-  estimate.observation_trace = h.filter.observation_trace(h.inflation.scale());
+  // Q~: the inflated Q of the uncertainty module, or, for the selected predictor, Q plus the
+  // prediction's covariance (the same uncertainty the particles carry).
+  estimate.observation_trace = h.prediction
+                                   ? h.filter.observation_trace(1.0) +
+                                         (options_.modules.uncertainty ? h.prediction_trace : 0.0)
+                                   : h.filter.observation_trace(h.inflation.scale());
   estimate.alert = safety_alert(estimate.observation_trace, options_.feedback);
   estimate.hypothesis = index;
   estimate.recovery = h.recovery;
@@ -290,6 +391,7 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
       break;
     case Source::kTrajectory:
       estimate.mode = EstimateMode::kDynamics;
+      if (h.prediction) estimate.motion_model = describe(*h.prediction);
       break;
     case Source::kOccluder:
       estimate.mode = EstimateMode::kOccluder;

@@ -39,7 +39,10 @@ class ObjectPermanenceFilter final : public Estimator {
     PoseParticleFilter filter;
     CovarianceInflation inflation;
     Source source = Source::kMeasurement;
-    std::optional<TrajectoryModel> trajectory;
+    std::optional<TrajectoryModel> trajectory;   ///< the `paper` predictor's fit
+    std::optional<MotionPrediction> prediction;  ///< the `selected` predictor's models
+    // trace of the prediction's covariance at this step (added to Q for Q~).
+    double prediction_trace = 0.0;
     std::string occluder;
     // The occluder's pose and this object's pose at occlusion onset: the hidden object is carried
     // rigidly with the occluder's rotation (and, with keep_offset, at its initial offset).
@@ -66,6 +69,11 @@ class ObjectPermanenceFilter final : public Estimator {
   };
 
   void start_occlusion(double last_seen, const EnsembleView& ensemble);
+  bool start_dynamics(Hypothesis& hypothesis);
+  void follow_prediction(Hypothesis& hypothesis, double t_previous, double t);
+  void drift_with_recent_velocity(Hypothesis& hypothesis, double dt);
+  void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                const Estimate& estimate);
   void follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
                        const Estimate& occluder_estimate, const EnsembleView& ensemble) const;
   std::optional<VirtualMeasurement> virtual_measurement(Hypothesis& hypothesis, double t,
@@ -78,7 +86,7 @@ class ObjectPermanenceFilter final : public Estimator {
   std::uint64_t seed_;
   std::uint64_t spawned_ = 0;
   std::vector<Hypothesis> hypotheses_;  ///< [0] is the object's main estimate
-  std::deque<TrajectorySample> history_;
+  std::deque<MotionSample> history_;    ///< measured frames: measurement and estimate
   double t_ = 0.0;
   double hidden_since_ = 0.0;
   bool hidden_ = false;

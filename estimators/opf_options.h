@@ -6,6 +6,7 @@
 #include "particles/particle_filter_options.h"
 #include "permanence/covariance_inflation.h"
 #include "permanence/motion_classifier.h"
+#include "permanence/motion_prediction.h"
 #include "permanence/occluder_selection.h"
 #include "permanence/safety_feedback.h"
 
@@ -19,11 +20,28 @@ struct OpfModules {
   bool uncertainty = true;  ///< inflate Q while hidden (Sec. III-B.3); off: Q~ = Q
 };
 
+/// How the dynamics module extrapolates a moving hidden object.
+enum class DynamicsPredictor {
+  /// The model chosen from the object's own history (permanence/motion_prediction.h): continuous
+  /// with the last estimate, with a prediction covariance that spreads the particles and sets
+  /// Q~. The toolkit's default.
+  kSelected,
+  /// The paper's rule (Eq. 12): the Ceres polynomial fit of `trajectory` to the last H estimates,
+  /// fed as a virtual measurement with Q~ inflated by the uncertainty module.
+  kPaper,
+};
+
+struct DynamicsOptions {
+  DynamicsPredictor predictor = DynamicsPredictor::kSelected;
+  MotionPredictionOptions selection;  ///< of the kSelected predictor
+};
+
 struct OpfOptions {
   PoseParticleFilterOptions particles;
   OpfModules modules;
-  /// H, the states the dynamics module looks back on (paper: 50). The history holds estimates
-  /// from frames with a real measurement.
+  /// H, the states the `paper` predictor looks back on (paper: 50). The history holds estimates
+  /// from frames with a real measurement; the `selected` predictor keeps
+  /// dynamics.selection.history_window seconds of them instead.
   std::size_t history_length = 50;
   /// After an occlusion longer than this (s) in which the object was carried by its occluder or
   /// only predicted, the history restarts when it reappears: the states before it describe where
@@ -36,6 +54,12 @@ struct OpfOptions {
   /// lags a moving virtual measurement by about v (1 - K) / K per frame, and the lag grows as Q~
   /// inflates and the gain K falls. false gives the paper-literal filter (an ablation).
   bool carry_particles = true;
+  /// While the object is visible, move the particles by the velocity and angular velocity of
+  /// its last `velocity_window` seconds of measurements before the random walk, so a fast object
+  /// is followed without lag. false: the paper's pure random walk.
+  bool velocity_drift = true;
+  double velocity_window = 0.3;  ///< s
+  DynamicsOptions dynamics;
   MotionThresholds motion;
   TrajectoryFitOptions trajectory;
   OccluderOptions occluder;

@@ -1,6 +1,7 @@
 #include "arguments.h"
 
 #include <charconv>
+#include <cmath>
 #include <sstream>
 
 namespace opf::cli {
@@ -61,6 +62,16 @@ std::optional<unsigned long long> Arguments::get_count(const std::string& name) 
   const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), value);
   if (error != std::errc() || end != text->data() + text->size())
     throw UsageError{"option '--" + name + "' expects a non-negative integer, got '" + *text + "'"};
+  return value;
+}
+
+std::optional<double> Arguments::get_number(const std::string& name) const {
+  const auto text = get(name);
+  if (!text) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text->data(), text->data() + text->size(), value);
+  if (error != std::errc() || end != text->data() + text->size() || !std::isfinite(value))
+    throw UsageError{"option '--" + name + "' expects a number, got '" + *text + "'"};
   return value;
 }
 

@@ -31,6 +31,8 @@ class Arguments {
   std::string require(const std::string& name) const;
   /// The value as a number; throws UsageError naming the option when it is not one.
   std::optional<unsigned long long> get_count(const std::string& name) const;
+  /// The value as a finite decimal number; throws UsageError naming the option when it is not one.
+  std::optional<double> get_number(const std::string& name) const;
 
  private:
   std::vector<std::pair<std::string, std::string>> values_;

@@ -2,6 +2,8 @@
 
 #include "arguments.h"
 #include "core/heap_policy.h"
+#include "detect_command.h"
+#include "dropout_command.h"
 #include "evaluate_command.h"
 #include "experiment_commands.h"
 #include "render_command.h"
@@ -27,6 +29,8 @@ constexpr const char* kHelp =
     "  run        run one experiment file (rendered scene, every estimator, several seeds)\n"
     "  render     render one frame of an experiment with what the detector sees\n"
     "  sweep      run a grid of experiment runs across the cores, resumable, into one table\n"
+    "  detect     segment objects in a real video and write their poses as a measurement log\n"
+    "  dropout    remove objects' detections from a measurement log in periodic windows\n"
     "\n"
     "Run 'opf <command> --help' for a command's options.\n";
 
@@ -48,6 +52,8 @@ int main(int argc, char** argv) {
     if (command == "run") return opf::cli::run_command(rest);
     if (command == "render") return opf::cli::render_command(rest);
     if (command == "sweep") return opf::cli::sweep_command(rest);
+    if (command == "detect") return opf::cli::detect_command(rest);
+    if (command == "dropout") return opf::cli::dropout_command(rest);
     std::cerr << "opf: unknown command '" << command << "'\n\n" << kHelp;
     return 2;
   } catch (const opf::cli::UsageError& error) {

@@ -93,7 +93,7 @@ void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& 
 void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "frame,t,object,estimator,seed,true_x,true_y,true_z,true_qx,true_qy,true_qz,true_qw,"
-           "x,y,z,qx,qy,qz,qw,trace,mode,visible,hypothesis,alert\n";
+           "x,y,z,qx,qy,qz,qw,trace,mode,visible,hypothesis,alert,model\n";
     for (const FrameRecord& r : results.records) {
       Eigen::Quaterniond q = orientation_of(r.estimate.pose.mean);
       if (q.w() < 0) q.coeffs() *= -1.0;
@@ -109,9 +109,26 @@ void write_records_csv(const std::filesystem::path& path, const ExperimentResult
           << ',' << number(q.x()) << ',' << number(q.y()) << ',' << number(q.z()) << ','
           << number(q.w()) << ',' << number(r.estimate.observation_trace) << ','
           << mode_column(r.estimate.mode, r.estimate.recovery) << ',' << (r.visible ? 1 : 0) << ','
-          << r.estimate.hypothesis << ',' << (r.estimate.alert ? 1 : 0) << '\n';
+          << r.estimate.hypothesis << ',' << (r.estimate.alert ? 1 : 0) << ','
+          << csv::quote_if_needed(r.estimate.motion_model) << '\n';
     }
   });
+}
+
+std::map<std::string, std::size_t> dynamics_model_counts(const std::vector<FrameRecord>& records,
+                                                         const std::string& estimator) {
+  // An occlusion's model is counted at its first frame: where a record names a model and the
+  // previous record of the same run and body did not name the same.
+  std::map<std::string, std::size_t> counts;
+  std::map<std::pair<std::size_t, std::string>, std::string> previous;
+  for (const FrameRecord& r : records) {
+    if (r.estimator != estimator || r.estimate.hypothesis != 0) continue;
+    std::string& last = previous[{r.seed_index, r.estimate.object}];
+    if (!r.estimate.motion_model.empty() && r.estimate.motion_model != last)
+      ++counts[r.estimate.motion_model];
+    last = r.estimate.motion_model;
+  }
+  return counts;
 }
 
 void write_summary_json(const std::filesystem::path& path,
@@ -135,7 +152,14 @@ void write_summary_json(const std::filesystem::path& path,
         const auto drops = x.drops.find(x.estimators[i]);
         const bool closed_loop = drops != x.drops.end();
         stat("translation_error_unobserved", metric_of(runs, Metric::kTranslationUnobserved),
-             !closed_loop);
+             false);
+        // How often the dynamics module chose each model, one count per occlusion it carried
+        // (over every seed and tracked body).
+        out << "        \"dynamics_models\": {";
+        const auto models = dynamics_model_counts(x.records, x.estimators[i]);
+        for (auto it = models.begin(); it != models.end(); ++it)
+          out << (it == models.begin() ? "" : ", ") << '"' << it->first << "\": " << it->second;
+        out << "}" << (closed_loop ? ",\n" : "\n");
         if (closed_loop) {
           std::size_t released = 0, landed = 0;
           for (const DropOutcome& d : drops->second) {

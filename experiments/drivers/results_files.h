@@ -4,13 +4,17 @@
 
 #include "drivers/experiment_run.h"
 
+#include <cstddef>
 #include <filesystem>
+#include <map>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace opf::experiments {
 
-/// frame,t,object,estimator,seed,true_x,...,true_qw,x,...,qw,trace,mode,visible,hypothesis,alert
+/// frame,t,object,estimator,seed,true_x,...,true_qw,x,...,qw,trace,mode,visible,hypothesis,alert,
+/// model
 void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results);
 
 /// One row per estimator and seed, the tidy form sweeps aggregate:
@@ -21,8 +25,14 @@ void write_records_csv(const std::filesystem::path& path, const ExperimentResult
 void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& results);
 
 /// experiments.<name>.<estimator>.{translation_error, rotation_error_paper,
-/// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus seeds, and for
-/// closed-loop experiments payload_released and payload_landed (counts over the seeds).
+/// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus seeds,
+/// dynamics_models (per motion model, the occlusions the dynamics module carried with it, over
+/// the seeds and tracked bodies), and for closed-loop experiments payload_released and
+/// payload_landed (counts over the seeds).
+/// Per motion model (Estimate::motion_model), the occlusions `estimator` carried with it.
+std::map<std::string, std::size_t> dynamics_model_counts(const std::vector<FrameRecord>& records,
+                                                         const std::string& estimator);
+
 void write_summary_json(const std::filesystem::path& path,
                         const std::vector<ExperimentResults>& experiments);
 

@@ -29,6 +29,10 @@ struct Estimate {
   bool alert = false;
   /// Probability that the object is occluded, for estimators that model it (occlusion-aware PF).
   std::optional<double> occlusion_probability;
+  /// The motion models a dynamics module extrapolates with while the object is hidden (the OPF's:
+  /// the heaviest translation model per axis x, y, z, then the rotation model, e.g.
+  /// "cv,cv,cp/cw"); empty otherwise.
+  std::string motion_model;
 };
 
 }  // namespace opf

@@ -29,7 +29,7 @@ constexpr double kQuaternionNormTolerance = 0.01;
 
 void write_estimate_header(std::ostream& out) {
   out << "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
-         "hypothesis,alert,occlusion_probability\n";
+         "hypothesis,alert,occlusion_probability,model\n";
 }
 
 void write_estimate_row(std::ostream& out, const Estimate& estimate) {
@@ -50,6 +50,7 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate) {
   row += estimate.alert ? ",1," : ",0,";
   // Empty for estimators that do not model occlusion.
   if (estimate.occlusion_probability) row += csv::format_double(*estimate.occlusion_probability);
+  row += ',' + csv::quote_if_needed(estimate.motion_model);
   out << row << '\n';
 }
 
@@ -68,6 +69,7 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
   };
   const auto hypothesis_column = optional_column("hypothesis");
   const auto alert_column = optional_column("alert");
+  const auto model_column = optional_column("model");
 
   std::vector<EstimateRecord> records;
   while (reader.next()) {
@@ -103,6 +105,7 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
       if (a != "0" && a != "1") reader.fail(*alert_column, "expected 0 or 1");
       record.alert = a == "1";
     }
+    if (model_column) record.model = reader.field(*model_column);
     records.push_back(std::move(record));
   }
   return records;

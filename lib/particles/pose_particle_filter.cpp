@@ -112,6 +112,14 @@ void PoseParticleFilter::shift(const Eigen::Vector3d& translation,
   rotate_all(rotation_, rotation);
 }
 
+void PoseParticleFilter::diffuse(const Eigen::Vector3d& translation_sigma, double rotation_sigma) {
+  if (!(translation_sigma.minCoeff() >= 0.0) || !(rotation_sigma >= 0.0))
+    throw std::invalid_argument("PoseParticleFilter::diffuse: spreads must be >= 0");
+  if (translation_sigma.maxCoeff() > 0.0)
+    predict_random_walk_per_axis(translation_, translation_sigma, noise_);
+  if (rotation_sigma > 0.0) predict_random_walk(rotation_, rotation_sigma, noise_);
+}
+
 void PoseParticleFilter::reweight(const Eigen::Vector3d& position,
                                   const Eigen::Quaterniond& orientation, double covariance_scale) {
   reweight_translation(position, covariance_scale);

@@ -59,6 +59,10 @@ class PoseParticleFilter {
   /// when the object is carried by a known motion.
   void shift(const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
 
+  /// Adds zero-mean Gaussian noise: per world axis `translation_sigma` (m) to the translation
+  /// particles, `rotation_sigma` (rad, per body axis) to the rotation particles. Weights are kept.
+  void diffuse(const Eigen::Vector3d& translation_sigma, double rotation_sigma);
+
   /// Weights the particles by the likelihood of a (real or virtual) measurement with observation
   /// covariance covariance_scale * Q (the OPF's Q~ = alpha Q, paper Eq. 14).
   void reweight(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,

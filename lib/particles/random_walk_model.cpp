@@ -35,6 +35,22 @@ void add_noise(TranslationParticles& particles, double sigma, const double* per_
   }
 }
 
+// The same with one spread per row (world axis).
+void add_axis_noise(TranslationParticles& particles, const Eigen::Vector3d& sigma,
+                    GaussianSampler& noise) {
+  const std::size_t n = particles.size();
+  alignas(64) std::array<float, kChunk> block;
+  for (std::size_t r = 0; r < 3; ++r) {
+    double* row = particles.states.data() + r * n;
+    for (std::size_t begin = 0; begin < n; begin += kChunk) {
+      const std::size_t count = std::min(kChunk, n - begin);
+      noise.fill({block.data(), count});
+      kernels::add_scaled_noise(row + begin, block.data(), sigma(static_cast<Eigen::Index>(r)),
+                                count);
+    }
+  }
+}
+
 void perturb(RotationParticles& particles, double sigma, const double* per_particle,
              GaussianSampler& noise) {
   const std::size_t n = particles.size();
@@ -67,6 +83,11 @@ void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& si
                          GaussianSampler& noise) {
   require_size(sigma, particles.size());
   perturb(particles, 0.0, sigma.data(), noise);
+}
+
+void predict_random_walk_per_axis(TranslationParticles& particles, const Eigen::Vector3d& sigma,
+                                  GaussianSampler& noise) {
+  add_axis_noise(particles, sigma, noise);
 }
 
 void scatter_around(TranslationParticles& particles, const Eigen::Vector3d& centre, double sigma,

@@ -20,6 +20,10 @@ void predict_random_walk(TranslationParticles& particles, const Eigen::VectorXd&
 void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& sigma,
                          GaussianSampler& noise);
 
+/// Translation noise with its own spread per world axis (sigma(d) for coordinate d).
+void predict_random_walk_per_axis(TranslationParticles& particles, const Eigen::Vector3d& sigma,
+                                  GaussianSampler& noise);
+
 /// Places every particle at `centre` perturbed by the same kind of noise (initialisation).
 void scatter_around(TranslationParticles& particles, const Eigen::Vector3d& centre, double sigma,
                     GaussianSampler& noise);

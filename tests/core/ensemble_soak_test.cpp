@@ -122,11 +122,14 @@ TEST(EnsembleSoak, AMillionObjectStepsStayFiniteInFlatMemory) {
   EXPECT_GT(wrong_measurements, 400u);  // about 660 expected
   EXPECT_NEAR(largest_trace, 1e6 * 0.0078, 1e-6);
   // ... and reported them: each wrong measurement (5 m = 500 sigmas off) and the return to the
-  // truth after it re-scatter the cloud. A two-minute occlusion is capped after 468 of its 3600
-  // frames; a cycle lasts 2 + 0.98 * 1 + 0.02 * 120 = 5.4 s on average, so the 8 x 4167 s hold
-  // about 124 such occlusions (Poisson, sd 11) and 390 000 capped object-steps.
+  // truth after it re-scatter the cloud. A cycle lasts 2 + 0.98 * 1 + 0.02 * 120 = 5.4 s on
+  // average, so the 8 x 4167 s hold about 124 two-minute occlusions (Poisson, sd 11). The
+  // dynamics module's prediction variance grows with the time hidden (as h^2 to h^4, fitted to
+  // each object's own history) and reaches the cap of 10^6 Q within the first 80 s of each:
+  // more than 124 x 40 s x 30 Hz = 150 000 capped object-steps (the paper predictor's kappa^v
+  // inflation reaches it after 468 frames, 390 000 in all).
   EXPECT_GE(resets, wrong_measurements);
-  EXPECT_GT(capped, 200'000u);
+  EXPECT_GT(capped, 140'000u);
 #if !defined(__SANITIZE_ADDRESS__)
   // Flat memory: under 1 MiB of growth over the last 900 000 object-steps (4 KiB when written).
   EXPECT_LE(memory_at_end, memory_after_warm_up + (std::size_t{1} << 20))

@@ -147,11 +147,12 @@ TEST(SweepSpec, ParticlesParameterSetsTheRunOption) {
 // the runs its comment promises.
 TEST(SweepSpec, BundledSweepsLoadAndExpand) {
   const std::map<std::string, std::size_t> expected_runs = {
-      {"module_ablation", 75},  {"kappa", 50},
-      {"history_length", 50},   {"epsilon_occ", 50},
-      {"trajectory_order", 30}, {"occluder_plane", 30},
-      {"occluder_offset", 10},  {"resampler", 40},
-      {"particle_counts", 80},  {"smoke", 8}};
+      {"module_ablation", 75},   {"kappa", 50},
+      {"history_length", 50},    {"epsilon_occ", 50},
+      {"trajectory_order", 30},  {"occluder_plane", 30},
+      {"occluder_offset", 10},   {"resampler", 40},
+      {"particle_counts", 80},   {"smoke", 8},
+      {"dynamics_predictor", 80}};
   std::size_t found = 0;
   for (const auto& entry : std::filesystem::directory_iterator(kFile.parent_path())) {
     if (entry.path().extension() != ".yaml") continue;

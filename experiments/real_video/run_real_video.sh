@@ -1,0 +1,141 @@
+#!/usr/bin/env bash
+# The estimators on real motion with synthetic dropouts: OpenCV's sample clips (package opencv-doc)
+# through `opf detect` (box.mp4: a yellow box moved by hand, HSV range, box.yaml; vtest.avi: one
+# pedestrian crossing a lawn, background subtraction, vtest.yaml), the detections removed for
+# 0.3 s and 0.6 s every 2 s (`opf dropout`, the first window 1 s after the track begins), then
+# `opf evaluate` of the dropped log against the full one.
+#
+# Usage: experiments/real_video/run_real_video.sh OUT_DIR
+#   OPF=path/to/opf (default <repo>/build/bin/opf), SEEDS=5, ESTIMATORS=opf,pf,cvkf,oapf
+# Writes into OUT_DIR: clips/ (decompressed clips), <clip>.csv (the detections, the ground truth),
+# <clip>_<dropout>.csv (the dropped logs), <clip>_<dropout>.txt (evaluate's output),
+# overlay_<clip>/ (every 30th frame with the segmentation drawn), table.md (all of it).
+set -euo pipefail
+
+if (($# != 1)); then
+  echo "usage: $0 OUT_DIR" >&2
+  exit 2
+fi
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+repo="$(cd "$here/../.." && pwd)"
+opf="${OPF:-$repo/build/bin/opf}"
+seeds="${SEEDS:-5}"
+estimators="${ESTIMATORS:-opf,pf,cvkf,oapf}"
+out="$1"
+[ -x "$opf" ] || { echo "$0: no opf binary at $opf (build it, or set OPF)" >&2; exit 1; }
+mkdir -p "$out/clips"
+out="$(cd "$out" && pwd)"
+
+# A clip of opencv-doc by file name, decompressed into OUT_DIR/clips when shipped gzipped.
+find_clip() {
+  local name="$1" packaged
+  if ! packaged="$(dpkg -L opencv-doc 2>/dev/null | grep -E "/$name(\.gz)?\$" | head -n 1)" ||
+    [ -z "$packaged" ]; then
+    echo "$0: $name not found in package opencv-doc; install it: apt-get install opencv-doc" >&2
+    return 1
+  fi
+  if [[ "$packaged" == *.gz ]]; then
+    local cached="$out/clips/$name"
+    if [ ! -s "$cached" ] || [ "$packaged" -nt "$cached" ]; then
+      gunzip -c "$packaged" >"$cached.tmp" && mv "$cached.tmp" "$cached"
+    fi
+    echo "$cached"
+  else
+    echo "$packaged"
+  fi
+}
+
+# Fails unless the log has at least 100 detections and one in >= 90% of the frames between its
+# first and last (the frame interval being the smallest step of t).
+check_log() {
+  awk -F, -v file="$1" '
+    NR == 1 { next }
+    $3 != "" { t[n++] = $1 + 0 }
+    END {
+      if (n < 100) { printf "%s: only %d detections\n", file, n > "/dev/stderr"; exit 1 }
+      dt = 1e9
+      for (i = 1; i < n; i++) if (t[i] - t[i-1] > 0 && t[i] - t[i-1] < dt) dt = t[i] - t[i-1]
+      span = int((t[n-1] - t[0]) / dt + 0.5) + 1
+      printf "%s: detections in %d of %d frames (%.1f%%), t %.3f-%.3f s, %.3f s per frame\n",
+             file, n, span, 100 * n / span, t[0], t[n-1], dt
+      if (n < 0.9 * span) { print file ": the object is missing from too many frames" > "/dev/stderr"; exit 1 }
+    }' "$1"
+}
+
+# clip name | video file | spec | extra detect options
+clips=(
+  "box|box.mp4|box.yaml|"
+  "vtest|vtest.avi|vtest.yaml|--first 450 --frames 271"
+)
+dropouts=(0.3 0.6)
+summary="$out/summary.txt"
+: >"$summary"
+for entry in "${clips[@]}"; do
+  IFS='|' read -r clip file spec extra <<<"$entry"
+  video="$(find_clip "$file")"
+  log="$out/$clip.csv"
+  echo "== $clip: $video" | tee -a "$summary"
+  # shellcheck disable=SC2086  # $extra is a list of options
+  "$opf" detect --video "$video" --objects "$here/$spec" --out "$log" $extra \
+    --overlay "$out/overlay_$clip" --overlay-every 30 2>"$out/${clip}_detect.log" |
+    tee -a "$summary"
+  check_log "$log" | tee -a "$summary"
+  t0="$(awk -F, 'NR == 2 { print $1; exit }' "$log")"
+  start="$(awk -v t="$t0" 'BEGIN { printf "%.9g", t + 1.0 }')"
+  for length in "${dropouts[@]}"; do
+    dropped="$out/${clip}_${length}.csv"
+    "$opf" dropout --in "$log" --out "$dropped" --length "$length" --period 2 --start "$start" |
+      tee -a "$summary"
+    echo "-- $clip, dropouts of $length s every 2 s: opf evaluate"
+    "$opf" evaluate --in "$dropped" --truth "$log" --seeds "$seeds" --estimators "$estimators" \
+      >"$out/${clip}_${length}.txt"
+    cat "$out/${clip}_${length}.txt"
+  done
+done
+
+# table.md: the clips, then each table of evaluate's output (a header line starting with
+# "estimator", then one row per estimator, cells separated by two or more spaces; the header is cut
+# where the first row's cells start) with all runs in one markdown table.
+/usr/bin/python3 - "$out" "$seeds" "${dropouts[@]}" <<'EOF'
+import pathlib, re, sys
+
+out, seeds, dropouts = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3:]
+clips = ["box", "vtest"]
+lines = ["# Real-video benchmark", "",
+         f"Dropouts every 2 s, the first 1 s after the track begins; {seeds} seeds; "
+         "ground truth = the detections themselves (the log before the dropouts).", "",
+         "```", *out.joinpath("summary.txt").read_text().splitlines(), "```", ""]
+cell_start = re.compile(r"(?:^|(?<=\s\s))\S")
+tables = []  # per table of evaluate's output: [header cells, rows]
+notes = []  # the lines after the tables (of the first run)
+for clip in clips:
+    for dropout in dropouts:
+        text = out.joinpath(f"{clip}_{dropout}.txt").read_text().splitlines()
+        index, i = 0, 0
+        while i < len(text):
+            if not text[i].startswith("estimator"):
+                if index > 0 and text[i].strip() and (clip, dropout) == (clips[0], dropouts[0]):
+                    notes.append(text[i])
+                i += 1
+                continue
+            header, rows = text[i], []
+            i += 1
+            while i < len(text) and text[i].strip():
+                rows.append(text[i])
+                i += 1
+            starts = [m.start() for m in cell_start.finditer(rows[0])] if rows else [0]
+            cells = [header[a:b].strip() for a, b in zip(starts, starts[1:] + [None])]
+            if index == len(tables):
+                tables.append([cells, []])
+            for row in rows:
+                tables[index][1].append([clip, f"{dropout} s"] + re.split(r"\s{2,}", row.strip()))
+            index += 1
+for cells, rows in tables:
+    columns = ["clip", "dropout"] + cells
+    lines += ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+    lines += ["| " + " | ".join(row) + " |" for row in rows]
+    lines.append("")
+lines += notes
+out.joinpath("table.md").write_text("\n".join(lines) + "\n")
+EOF
+echo "table: $out/table.md"

@@ -1,0 +1,83 @@
+#include "io/measurement_dropout.h"
+
+#include "io/csv.h"
+#include "io/input_error.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string_view>
+
+namespace opf {
+
+namespace {
+
+constexpr std::array<std::string_view, 9> kColumns = {"t",  "object", "x",  "y", "z",
+                                                      "qx", "qy",     "qz", "qw"};
+
+void write_fields(std::ostream& out, const std::vector<std::string>& fields) {
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    out << (i ? "," : "") << csv::quote_if_needed(fields[i]);
+  out << '\n';
+}
+
+}  // namespace
+
+void check_dropout_windows(const DropoutWindows& windows) {
+  if (!std::isfinite(windows.start))
+    throw std::invalid_argument("dropout: the first window's start must be a finite time");
+  if (!(windows.period > 0.0) || !std::isfinite(windows.period))
+    throw std::invalid_argument("dropout: the period must be a positive number of seconds");
+  if (!(windows.length > 0.0) || !(windows.length < windows.period))
+    throw std::invalid_argument(
+        "dropout: the window length must be > 0 and shorter than the period");
+}
+
+bool in_dropout_window(double t, const DropoutWindows& windows) {
+  const double since = t - windows.start;
+  if (since < -kDropoutTimeTolerance) return false;
+  const double k = std::floor((since + kDropoutTimeTolerance) / windows.period);
+  const double phase = since - k * windows.period;  // in [-tolerance, period)
+  return phase < windows.length - kDropoutTimeTolerance;
+}
+
+DropoutCounts apply_dropout(std::istream& in, const std::string& source, std::ostream& out,
+                            const std::vector<std::string>& objects,
+                            const DropoutWindows& windows) {
+  check_dropout_windows(windows);
+  csv::Reader reader(in, source, kColumns);
+  const std::size_t t_column = reader.column("t");
+  const std::size_t object_column = reader.column("object");
+  std::array<std::size_t, 7> pose_columns{};
+  for (std::size_t i = 0; i < pose_columns.size(); ++i)
+    pose_columns[i] = reader.column(kColumns[2 + i]);
+
+  write_fields(out, reader.header());
+  std::vector<bool> seen(objects.size(), false);
+  DropoutCounts counts;
+  while (reader.next()) {
+    std::vector<std::string> fields(reader.header().size());
+    for (std::size_t i = 0; i < fields.size(); ++i) fields[i] = reader.field(i);
+    const double t = reader.number(t_column);
+    const std::string& object = fields[object_column];
+    const auto chosen = std::find(objects.begin(), objects.end(), object);
+    if (chosen != objects.end()) seen[chosen - objects.begin()] = true;
+    if ((objects.empty() || chosen != objects.end()) && in_dropout_window(t, windows)) {
+      bool had_pose = false;
+      for (const std::size_t column : pose_columns) {
+        had_pose = had_pose || !fields[column].empty();
+        fields[column].clear();
+      }
+      counts.blanked += had_pose ? 1 : 0;
+    }
+    write_fields(out, fields);
+    ++counts.rows;
+  }
+  for (std::size_t i = 0; i < objects.size(); ++i)
+    if (!seen[i])
+      throw InputError(source, 0, "object", "no row of object '" + objects[i] + "' to drop");
+  return counts;
+}
+
+}  // namespace opf

@@ -1,0 +1,630 @@
+#include "permanence/motion_prediction.h"
+
+#include "core/so3.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace opf {
+namespace {
+
+int complexity(TranslationModel model) {
+  switch (model) {
+    case TranslationModel::kConstantPosition:
+      return 0;
+    case TranslationModel::kConstantVelocity:
+      return 1;
+    case TranslationModel::kBallistic:
+      return 2;
+    case TranslationModel::kConstantAcceleration:
+      return 3;
+  }
+  return 0;
+}
+
+constexpr double kValidationSpan = 1.0;
+constexpr double kWanderLag = 0.25;  // s
+// The validation's many fits reweight once (one Huber step already discounts an outlier); the
+// fits kept for the prediction take options.robust_iterations.
+constexpr int kValidationRobustIterations = 1;
+constexpr double kValidationPeriod = 1.0 / 30.0;  // s
+
+struct Candidate {
+  int order = 0;
+  bool ballistic = false;
+};
+
+// Times, positions relative to the last measurement, and body-frame rotation vectors relative to
+// the last measured orientation, unwrapped by summing the per-frame increments (so an object
+// turning more than pi over the window keeps a growing vector instead of wrapping).
+struct Series {
+  std::vector<double> t;
+  Eigen::Matrix3Xd position;
+  Eigen::Matrix3Xd rotation;
+};
+
+Series make_series(std::span<const MotionSample> history) {
+  const std::size_t n = history.size();
+  Series s;
+  s.t.resize(n);
+  s.position.resize(3, static_cast<Eigen::Index>(n));
+  s.rotation.resize(3, static_cast<Eigen::Index>(n));
+  const Eigen::Vector3d last = history.back().measured_position;
+  Eigen::Vector3d turned = Eigen::Vector3d::Zero();
+  for (std::size_t k = n; k-- > 0;) {
+    const auto i = static_cast<Eigen::Index>(k);
+    s.t[k] = history[k].t;
+    s.position.col(i) = history[k].measured_position - last;
+    if (k + 1 < n)
+      turned += so3::difference(history[k + 1].measured_orientation.normalized(),
+                                history[k].measured_orientation.normalized());
+    s.rotation.col(i) = turned;
+  }
+  return s;
+}
+
+// Squared-error sums of one candidate's validation, and the (horizon, error) pairs behind them.
+struct Validation {
+  bool valid = false;
+  double squared_error = 0.0;
+  double count = 0.0;
+  std::vector<double> horizons;
+  std::vector<Eigen::Vector3d> errors;
+
+  double mean_squared() const {
+    return count > 0.0 ? squared_error / count : std::numeric_limits<double>::infinity();
+  }
+  double mean_squared(int axis) const {
+    return count > 0.0 ? axis_squared_error(axis) / count : std::numeric_limits<double>::infinity();
+  }
+  Eigen::Vector3d axis_squared_error = Eigen::Vector3d::Zero();
+};
+
+// The share of the way from the anchor to the fit's track after h seconds.
+double settled(double h, double settle_time) {
+  if (!(h > 0.0)) return 0.0;
+  return settle_time > 0.0 ? 1.0 - std::exp(-h / settle_time) : 1.0;
+}
+
+Eigen::Vector3d gravity_of(const MotionPredictionOptions& options) {
+  return -options.gravity * options.up.normalized();
+}
+
+Validation validate_translation(std::span<const MotionSample> history, const Series& s,
+                                std::span<const std::size_t> origins, double horizon,
+                                const Candidate& candidate, double window,
+                                const MotionPredictionOptions& options) {
+  Validation v;
+  const Eigen::Vector3d acceleration =
+      candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d last = history.back().measured_position;
+  for (const std::size_t o : origins) {
+    LocalPolynomial fit;
+    const double t_o = s.t[o];
+    if (!fit_local_polynomial(s.t, s.position, t_o - window, t_o, candidate.order, acceleration,
+                              std::min(options.robust_iterations, kValidationRobustIterations),
+                              fit))
+      return v;
+    // Anchored at the filter's estimate at the origin and settling onto the fit, as the
+    // prediction is at onset.
+    const Eigen::Vector3d anchor = history[o].estimated_position - last;
+    const Eigen::Vector3d offset = fit.value(t_o) - anchor;
+    for (std::size_t i = o + 1; i < s.t.size() && s.t[i] - t_o <= horizon * (1.0 + 1e-9); ++i) {
+      const Eigen::Vector3d predicted =
+          anchor + fit.value(s.t[i]) - fit.value(t_o) +
+          (candidate.order >= 1 ? settled(s.t[i] - t_o, options.settle_time) : 0.0) * offset;
+      const Eigen::Vector3d error = predicted - s.position.col(static_cast<Eigen::Index>(i));
+      v.squared_error += error.squaredNorm();
+      v.axis_squared_error += error.cwiseAbs2();
+      v.count += 1.0;
+      v.horizons.push_back(s.t[i] - t_o);
+      v.errors.push_back(error);
+    }
+  }
+  v.valid = true;
+  return v;
+}
+
+Validation validate_rotation(std::span<const MotionSample> history, const Series& s,
+                             std::span<const std::size_t> origins, double horizon, int order,
+                             double window, const MotionPredictionOptions& options) {
+  Validation v;
+  for (const std::size_t o : origins) {
+    LocalPolynomial fit;
+    const double t_o = s.t[o];
+    if (!fit_local_polynomial(s.t, s.rotation, t_o - window, t_o, order, Eigen::Vector3d::Zero(),
+                              std::min(options.robust_iterations, kValidationRobustIterations),
+                              fit))
+      return v;
+    const Eigen::Quaterniond anchor = history[o].estimated_orientation.normalized();
+    const Eigen::Vector3d at_origin = fit.value(t_o);
+    const Eigen::Vector3d offset = so3::difference(
+        anchor, history.back().measured_orientation.normalized() * so3::exp(at_origin));
+    for (std::size_t i = o + 1; i < s.t.size() && s.t[i] - t_o <= horizon * (1.0 + 1e-9); ++i) {
+      const Eigen::Quaterniond predicted =
+          anchor *
+          so3::exp((order >= 1 ? settled(s.t[i] - t_o, options.settle_time) : 0.0) * offset) *
+          so3::exp(fit.value(s.t[i]) - at_origin);
+      const Eigen::Vector3d error =
+          so3::difference(history[i].measured_orientation.normalized(), predicted);
+      v.squared_error += error.squaredNorm();
+      v.count += 1.0;
+      v.horizons.push_back(s.t[i] - t_o);
+      v.errors.push_back(error);
+    }
+  }
+  v.valid = true;
+  return v;
+}
+
+// Non-negative least squares of e^2 - noise ~ a2 h^2 + a3 h^3 + a4 h^4 for one axis of the
+// errors (the mean over axes for axis < 0): h^2 for a wrong velocity, h^3 for a velocity that
+// wanders (white random acceleration, the constant-velocity Kalman filter's model), h^4 for a
+// wrong acceleration. `noise` is the measurement noise's variance, which the validation errors
+// carry (they are against measurements) but a prediction of the object does not. Three unknowns:
+// every subset of active terms is solved and the best non-negative one kept.
+Eigen::Vector3d growth(const Validation& v, int axis, double noise) {
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  double target_squares = 0.0;
+  for (std::size_t i = 0; i < v.horizons.size(); ++i) {
+    const double h = v.horizons[i];
+    const Eigen::Vector3d basis(h * h, h * h * h, h * h * h * h);
+    const double e2 =
+        (axis < 0 ? v.errors[i].squaredNorm() / 3.0 : v.errors[i](axis) * v.errors[i](axis)) -
+        noise;
+    normal += basis * basis.transpose();
+    rhs += e2 * basis;
+    target_squares += e2 * e2;
+  }
+  Eigen::Vector3d best = Eigen::Vector3d::Zero();
+  double best_residual = target_squares;  // all terms off
+  for (int subset = 1; subset < 8; ++subset) {
+    std::vector<int> active;
+    for (int k = 0; k < 3; ++k)
+      if (subset & (1 << k)) active.push_back(k);
+    const auto n = static_cast<Eigen::Index>(active.size());
+    Eigen::MatrixXd a(n, n);
+    Eigen::VectorXd b(n);
+    for (Eigen::Index r = 0; r < n; ++r) {
+      b(r) = rhs(active[static_cast<std::size_t>(r)]);
+      for (Eigen::Index c = 0; c < n; ++c)
+        a(r, c) = normal(active[static_cast<std::size_t>(r)], active[static_cast<std::size_t>(c)]);
+    }
+    const Eigen::LDLT<Eigen::MatrixXd> solver(a);
+    if (solver.info() != Eigen::Success) continue;
+    const Eigen::VectorXd x = solver.solve(b);
+    if (!x.allFinite() || (x.array() < 0.0).any()) continue;
+    Eigen::Vector3d candidate = Eigen::Vector3d::Zero();
+    for (Eigen::Index r = 0; r < n; ++r) candidate(active[static_cast<std::size_t>(r)]) = x(r);
+    // |e - B a|^2 = sum e^2 - 2 a.rhs + a' N a
+    const double residual =
+        target_squares - 2.0 * candidate.dot(rhs) + candidate.dot(normal * candidate);
+    if (residual < best_residual) {
+      best_residual = residual;
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+// The sample indices the validation predicts from: every quarter of the horizon back from the
+// last sample to `earliest`, as close as the frames allow, so that no single origin decides.
+std::vector<std::size_t> validation_origins(const std::vector<double>& t, double horizon,
+                                            double earliest) {
+  std::vector<std::size_t> origins;
+  for (double back = 0.5 * horizon; t.back() - back >= earliest; back += 0.5 * horizon) {
+    const double target = t.back() - back;
+    const auto it = std::lower_bound(t.begin(), t.end(), target);
+    std::size_t index = static_cast<std::size_t>(it - t.begin());
+    if (index > 0 && (it == t.end() || target - t[index - 1] < *it - target)) --index;
+    index = std::min(index, t.size() - 2);  // at least one sample to predict
+    if (origins.empty() || origins.back() != index) origins.push_back(index);
+  }
+  return origins;
+}
+
+// Where the chosen fit's velocity is only known from `samples` over `window`: a floor on the
+// h^2 term, so a validation that happened to land on the line does not claim certainty.
+double velocity_variance_floor(double residual_variance, int samples, double window) {
+  if (samples < 2 || !(window > 0.0)) return 0.0;
+  return 12.0 * residual_variance / (static_cast<double>(samples) * window * window);
+}
+
+// The intensity q^2 of the motion's random acceleration per axis (m^2/s^3): for a velocity that
+// wanders as a Wiener process, the lagged second difference x(t + L) - 2 x(t) + x(t - L) has
+// variance (2/3) q^2 L^3 plus 6 times the measurement noise's variance. Its variance about its
+// mean is used, so a constant acceleration (a throw) counts for nothing; L is about a quarter
+// of a second, where the wander shows above the noise. The predictions' variance then grows at
+// least as q^2 h^3 / 3, as a constant-velocity Kalman filter's with that process noise.
+Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matrix3Xd& values,
+                                 const Eigen::Vector3d& noise) {
+  const Eigen::Index n = values.cols();
+  const double period =
+      (t.back() - t.front()) / static_cast<double>(std::max<Eigen::Index>(n - 1, 1));
+  const Eigen::Index lag = std::max<Eigen::Index>(1, std::lround(kWanderLag / period));
+  if (n < 2 * lag + 3) return Eigen::Vector3d::Zero();
+  const Eigen::Index count = n - 2 * lag;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero(), sum_squares = Eigen::Vector3d::Zero();
+  for (Eigen::Index k = lag; k + lag < n; ++k) {
+    const Eigen::Vector3d d = values.col(k + lag) - 2.0 * values.col(k) + values.col(k - lag);
+    sum += d;
+    sum_squares += d.cwiseAbs2();
+  }
+  const double c = static_cast<double>(count);
+  const Eigen::Vector3d variance = (sum_squares - sum.cwiseAbs2() / c) / (c - 1.0);
+  const double span = static_cast<double>(lag) * period;
+  return ((variance - 6.0 * noise).cwiseMax(0.0)) / (2.0 / 3.0 * span * span * span);
+}
+
+// Bates-Granger weights: inversely proportional to each candidate's mean squared validation error
+// (on `axis`, or over all axes for axis < 0) in excess of the measurement noise `noise`, which
+// every candidate's validation errors carry alike (they are against measurements): without the
+// subtraction, noise-dominated scores would weigh a good model and a noise-fitting one evenly.
+// The excess is floored at a tenth of the noise. An exact candidate (zero error) takes it all.
+template <class Scored>
+std::vector<double> inverse_error_weights(const std::vector<Scored>& candidates, int axis,
+                                          double noise) {
+  std::vector<double> excess(candidates.size());
+  double smallest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    const double mse = axis < 0 ? candidates[i].validation.mean_squared()
+                                : candidates[i].validation.mean_squared(axis);
+    excess[i] = std::max(mse - noise, 0.1 * noise);
+    smallest = std::min(smallest, excess[i]);
+  }
+  std::vector<double> weights(candidates.size(), 0.0);
+  double total = 0.0;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    // Relative to the smallest, so an exact fit (excess 0) is a clean 1 and the rest 0.
+    weights[i] = smallest > 0.0 ? smallest / excess[i] : (excess[i] == 0.0 ? 1.0 : 0.0);
+    total += weights[i];
+  }
+  for (double& w : weights) w /= total;
+  return weights;
+}
+
+// The measurement noise's variance per axis, from the series itself: the second difference of
+// samples of a smooth motion is mostly noise, N(0, 6 sigma^2) at even spacing; its median square
+// is 6 sigma^2 times 0.4549 (the median of chi-square with one degree of freedom), which
+// ignores the few differences a turn or an outlier inflates.
+Eigen::Vector3d noise_variance(const Eigen::Matrix3Xd& values) {
+  const Eigen::Index n = values.cols();
+  if (n < 3) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d variance;
+  std::vector<double> squares(static_cast<std::size_t>(n - 2));
+  for (int axis = 0; axis < 3; ++axis) {
+    for (Eigen::Index k = 1; k + 1 < n; ++k) {
+      const double d = values(axis, k + 1) - 2.0 * values(axis, k) + values(axis, k - 1);
+      squares[static_cast<std::size_t>(k - 1)] = d * d;
+    }
+    const auto middle = squares.begin() + static_cast<std::ptrdiff_t>(squares.size() / 2);
+    std::nth_element(squares.begin(), middle, squares.end());
+    variance(axis) = *middle / (6.0 * 0.4549);
+  }
+  return variance;
+}
+
+}  // namespace
+
+std::string_view to_string(TranslationModel model) {
+  switch (model) {
+    case TranslationModel::kConstantPosition:
+      return "cp";
+    case TranslationModel::kConstantVelocity:
+      return "cv";
+    case TranslationModel::kConstantAcceleration:
+      return "ca";
+    case TranslationModel::kBallistic:
+      return "ballistic";
+  }
+  return "?";
+}
+
+std::string_view to_string(RotationModel model) {
+  return model == RotationModel::kConstantOrientation ? "co" : "cw";
+}
+
+std::string describe(const MotionPrediction& prediction) {
+  std::string text;
+  for (const TranslationModel model : prediction.translation_models)
+    text.append(text.empty() ? "" : ",").append(to_string(model));
+  return text.append("/").append(to_string(prediction.rotation_model));
+}
+
+void validate(const MotionPredictionOptions& options) {
+  auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+  if (!positive(options.history_window))
+    throw std::invalid_argument("dynamics option history_window must be a positive number of s");
+  if (options.fit_windows.empty())
+    throw std::invalid_argument("dynamics option fit_windows must list at least one window");
+  for (const double w : options.fit_windows)
+    if (!positive(w))
+      throw std::invalid_argument("dynamics option fit_windows must be positive numbers of s");
+  if (!positive(options.validation_horizon))
+    throw std::invalid_argument("dynamics option validation_horizon must be positive");
+  if (!(options.gravity >= 0.0) || !std::isfinite(options.gravity))
+    throw std::invalid_argument("dynamics option gravity must be >= 0");
+  if (!(options.up.norm() > 0.0) || !options.up.allFinite())
+    throw std::invalid_argument("dynamics option up must be a non-zero vector");
+  if (!positive(options.uncertainty_scale))
+    throw std::invalid_argument("dynamics option uncertainty_scale must be positive");
+  if (!(options.settle_time >= 0.0) || !(options.onset_guard >= 0.0) ||
+      !std::isfinite(options.settle_time) || !std::isfinite(options.onset_guard))
+    throw std::invalid_argument("dynamics options settle_time and onset_guard must be >= 0");
+  if (options.robust_iterations < 0 || options.robust_iterations > 20)
+    throw std::invalid_argument("dynamics option robust_iterations must be in [0, 20]");
+}
+
+Eigen::Vector3d MotionPrediction::position(double h) const {
+  Eigen::Vector3d p = anchor_position;
+  const double t = t_last + h;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const WeightedFit& m : translation[static_cast<std::size_t>(axis)]) {
+      const double now = m.fit.value(t_last)(axis);
+      const double settling = m.settles ? settled(h, settle_time) : 0.0;
+      const double offset = measured_position(axis) + now - anchor_position(axis);
+      p(axis) += m.weight * (m.fit.value(t)(axis) - now + settling * offset);
+    }
+  }
+  return p;
+}
+
+Eigen::Quaterniond MotionPrediction::orientation(double h) const {
+  // In the body frame of the anchor: the settling correction towards each fit's orientation,
+  // then the turn since the last measurement, both weighted.
+  Eigen::Vector3d turn = Eigen::Vector3d::Zero();
+  for (const WeightedFit& m : rotation) {
+    const Eigen::Vector3d now = m.fit.value(t_last);
+    const double settling = m.settles ? settled(h, settle_time) : 0.0;
+    const Eigen::Vector3d offset =
+        so3::difference(anchor_orientation, measured_orientation * so3::exp(now));
+    turn += m.weight * (settling * offset + m.fit.value(t_last + h) - now);
+  }
+  return (anchor_orientation * so3::exp(turn)).normalized();
+}
+
+Eigen::Vector3d MotionPrediction::translation_variance(double h) const {
+  const Eigen::Vector3d powers(h * h, h * h * h, h * h * h * h);
+  return uncertainty_scale * uncertainty_scale * (translation_growth * powers);
+}
+
+double MotionPrediction::rotation_variance(double h) const {
+  const Eigen::Vector3d powers(h * h, h * h * h, h * h * h * h);
+  return uncertainty_scale * uncertainty_scale * rotation_growth.dot(powers);
+}
+
+std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all,
+                                               const MotionPredictionOptions& options) {
+  if (all.size() < 4) return std::nullopt;
+  // The measurements just before a loss are its least trustworthy (a half-covered object's
+  // centroid leans towards its visible side): the models are fitted and scored without them.
+  std::size_t kept = all.size();
+  while (kept > 4 && all.back().t - all[kept - 1].t < options.onset_guard) --kept;
+  const std::span<const MotionSample> history = all.first(kept);
+  const Series s = make_series(history);
+  const double span = s.t.back() - s.t.front();
+  const double period = span / static_cast<double>(s.t.size() - 1);
+  const double horizon = std::min(options.validation_horizon, span / 3.0);
+  if (!(horizon >= 2.0 * period)) return std::nullopt;
+  // The validation's many fits run on the history thinned to about 30 Hz (every sample of a
+  // slower log): scores of the same models, at a third of the cost on 100 Hz motion capture.
+  const auto stride =
+      static_cast<std::size_t>(std::max(1L, std::lround(kValidationPeriod / period)));
+  std::vector<MotionSample> thinned;
+  for (std::size_t k = (history.size() - 1) % stride; k < history.size(); k += stride)
+    thinned.push_back(history[k]);
+  const Series coarse = make_series(thinned);
+  const double earliest =
+      std::max(coarse.t.front() + std::min(options.fit_windows.front(), span / 3.0),
+               coarse.t.back() - kValidationSpan);
+  const std::vector<std::size_t> origins = validation_origins(coarse.t, horizon, earliest);
+  if (origins.empty() || thinned.size() < 4) return std::nullopt;
+
+  // Constant velocity first: the motion assumed when nothing better is shown (the Kalman
+  // baseline's), then holding still, which must predict better to be chosen.
+  std::vector<std::pair<TranslationModel, Candidate>> translation_candidates = {
+      {TranslationModel::kConstantVelocity, {1, false}},
+      {TranslationModel::kConstantPosition, {0, false}},
+  };
+  // Ballistic flight has a constant velocity's free parameters, fewer than constant acceleration.
+  if (options.ballistic && options.gravity > 0.0)
+    translation_candidates.push_back({TranslationModel::kBallistic, {1, true}});
+  if (options.constant_acceleration)
+    translation_candidates.push_back({TranslationModel::kConstantAcceleration, {2, false}});
+
+  MotionPrediction prediction;
+  prediction.t_last = all.back().t;
+  prediction.uncertainty_scale = options.uncertainty_scale;
+  prediction.settle_time = options.settle_time;
+  prediction.anchor_position = all.back().estimated_position;
+  prediction.anchor_orientation = all.back().estimated_orientation.normalized();
+  prediction.measured_position = history.back().measured_position;
+  prediction.measured_orientation = history.back().measured_orientation.normalized();
+
+  // Translation, axis by axis (a pedestrian walks across the image while the depth read from its
+  // size only jitters): each model's best window on that axis, then the inverse-error weights.
+  struct Scored {
+    TranslationModel model;
+    Candidate candidate;
+    double window;
+    Validation validation;
+  };
+  std::array<std::vector<Scored>, 3> scored;
+  const Eigen::Vector3d position_noise = noise_variance(s.position);
+  const double rotation_noise = noise_variance(s.rotation).mean();
+  const Eigen::Vector3d position_wander = wander_intensity(s.t, s.position, position_noise);
+  const double rotation_wander =
+      wander_intensity(s.t, s.rotation, Eigen::Vector3d::Constant(rotation_noise)).mean();
+  for (const auto& [model, candidate] : translation_candidates) {
+    std::vector<Validation> by_window;
+    for (const double window : options.fit_windows)
+      by_window.push_back(
+          validate_translation(thinned, coarse, origins, horizon, candidate, window, options));
+    for (int axis = 0; axis < 3; ++axis) {
+      // Off the gravity's axes ballistic flight is constant velocity: not a model of its own.
+      if (candidate.ballistic && gravity_of(options)(axis) == 0.0) continue;
+      std::size_t best = by_window.size();
+      for (std::size_t w = 0; w < by_window.size(); ++w)
+        if (by_window[w].valid &&
+            (best == by_window.size() ||
+             by_window[w].mean_squared(axis) < by_window[best].mean_squared(axis)))
+          best = w;
+      if (best == by_window.size()) continue;
+      scored[static_cast<std::size_t>(axis)].push_back(
+          {model, candidate, options.fit_windows[best], by_window[best]});
+    }
+  }
+  double squared_score = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    auto& candidates = scored[static_cast<std::size_t>(axis)];
+    if (candidates.empty()) return std::nullopt;
+    const std::vector<double> weights =
+        inverse_error_weights(candidates, axis, position_noise(axis));
+    auto& fits = prediction.translation[static_cast<std::size_t>(axis)];
+    Validation combined = candidates.front().validation;
+    for (auto& e : combined.errors) e.setZero();
+    const double noise = position_noise(axis);
+    double floor = 0.0, heaviest = -1.0;
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      if (!(weights[c] > 0.0)) continue;
+      const Scored& m = candidates[c];
+      const Eigen::Vector3d acceleration =
+          m.candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
+      WeightedFit wf;
+      wf.weight = weights[c];
+      wf.window = m.window;
+      wf.settles = m.candidate.order >= 1;
+      if (!fit_local_polynomial(s.t, s.position, s.t.back() - m.window, s.t.back(),
+                                m.candidate.order, acceleration, options.robust_iterations, wf.fit))
+        return std::nullopt;
+      for (std::size_t j = 0; j < combined.errors.size(); ++j)
+        combined.errors[j](axis) += weights[c] * m.validation.errors[j](axis);
+      if (m.candidate.order >= 1 || m.candidate.ballistic)
+        floor += weights[c] *
+                 velocity_variance_floor(wf.fit.residual_variance(axis), wf.fit.samples, m.window);
+      if (weights[c] > heaviest) {
+        heaviest = weights[c];
+        prediction.translation_models[static_cast<std::size_t>(axis)] = m.model;
+      }
+      fits.push_back(std::move(wf));
+    }
+    double sum = 0.0;
+    for (const auto& e : combined.errors) sum += e(axis) * e(axis);
+    squared_score += sum / static_cast<double>(std::max<std::size_t>(combined.errors.size(), 1));
+    // The guarded measurements were not fitted: how far the combination misses them is the
+    // freshest evidence of how well it predicts (a turn just before the loss, or the bias of a
+    // half-covered object), so they join the errors the growth is fitted to.
+    for (std::size_t k = kept; k < all.size(); ++k) {
+      double predicted = 0.0;
+      for (const WeightedFit& m : fits) predicted += m.weight * m.fit.value(all[k].t)(axis);
+      Eigen::Vector3d error = Eigen::Vector3d::Zero();
+      error(axis) =
+          history.back().measured_position(axis) + predicted - all[k].measured_position(axis);
+      combined.horizons.push_back(all[k].t - s.t.back());
+      combined.errors.push_back(error);
+    }
+    Eigen::Vector3d g = growth(combined, axis, noise);
+    g(0) = std::max(g(0), floor);
+    g(1) = std::max(g(1), position_wander(axis) / 3.0);
+    prediction.translation_growth.row(axis) = g.transpose();
+  }
+  prediction.translation_score = std::sqrt(squared_score);
+  prediction.translation_model = *std::max_element(
+      prediction.translation_models.begin(), prediction.translation_models.end(),
+      [](TranslationModel a, TranslationModel b) { return complexity(a) < complexity(b); });
+
+  // Rotation: constant orientation and constant angular velocity, combined the same way.
+  std::vector<Scored> rotation_scored;
+  for (const int order : {0, 1}) {
+    std::size_t best = options.fit_windows.size();
+    Validation best_validation;
+    for (std::size_t w = 0; w < options.fit_windows.size(); ++w) {
+      Validation v = validate_rotation(thinned, coarse, origins, horizon, order,
+                                       options.fit_windows[w], options);
+      if (!v.valid || !(v.mean_squared() < best_validation.mean_squared())) continue;
+      best_validation = std::move(v);
+      best = w;
+    }
+    if (best == options.fit_windows.size()) continue;
+    rotation_scored.push_back({TranslationModel::kConstantPosition,
+                               {order, false},
+                               options.fit_windows[best],
+                               std::move(best_validation)});
+  }
+  if (rotation_scored.empty()) return std::nullopt;
+  const std::vector<double> rotation_weights =
+      inverse_error_weights(rotation_scored, -1, rotation_noise);
+  Validation combined = rotation_scored.front().validation;
+  for (auto& e : combined.errors) e.setZero();
+  const double noise = rotation_noise;
+  double floor = 0.0, heaviest = -1.0;
+  for (std::size_t c = 0; c < rotation_scored.size(); ++c) {
+    if (!(rotation_weights[c] > 0.0)) continue;
+    const Scored& m = rotation_scored[c];
+    WeightedFit wf;
+    wf.weight = rotation_weights[c];
+    wf.window = m.window;
+    wf.settles = m.candidate.order >= 1;
+    if (!fit_local_polynomial(s.t, s.rotation, s.t.back() - m.window, s.t.back(), m.candidate.order,
+                              Eigen::Vector3d::Zero(), options.robust_iterations, wf.fit))
+      return std::nullopt;
+    for (std::size_t j = 0; j < combined.errors.size(); ++j)
+      combined.errors[j] += rotation_weights[c] * m.validation.errors[j];
+    if (m.candidate.order >= 1)
+      floor += rotation_weights[c] *
+               velocity_variance_floor(wf.fit.residual_variance.mean(), wf.fit.samples, m.window);
+    if (rotation_weights[c] > heaviest) {
+      heaviest = rotation_weights[c];
+      prediction.rotation_model = m.candidate.order == 0 ? RotationModel::kConstantOrientation
+                                                         : RotationModel::kConstantAngularVelocity;
+    }
+    prediction.rotation.push_back(std::move(wf));
+  }
+  double rotation_sum = 0.0;
+  for (const auto& e : combined.errors) rotation_sum += e.squaredNorm();
+  prediction.rotation_score = std::sqrt(
+      rotation_sum / static_cast<double>(std::max<std::size_t>(combined.errors.size(), 1)));
+  prediction.rotation_growth = growth(combined, -1, noise);
+  prediction.rotation_growth(0) = std::max(prediction.rotation_growth(0), floor);
+  prediction.rotation_growth(1) = std::max(prediction.rotation_growth(1), rotation_wander / 3.0);
+  return prediction;
+}
+
+std::optional<RecentVelocity> recent_velocity(const std::deque<MotionSample>& history,
+                                              double window) {
+  if (history.size() < 3) return std::nullopt;
+  const MotionSample& last = history.back();
+  const Eigen::Quaterniond last_inverse = last.measured_orientation.normalized().conjugate();
+  // Least-squares slopes about the window's mean time, in one pass over the samples in it.
+  double st = 0.0, stt = 0.0;
+  Eigen::Vector3d sp = Eigen::Vector3d::Zero(), stp = Eigen::Vector3d::Zero();
+  Eigen::Vector3d sr = Eigen::Vector3d::Zero(), str = Eigen::Vector3d::Zero();
+  std::size_t n = 0;
+  for (auto it = history.rbegin(); it != history.rend() && last.t - it->t <= window; ++it, ++n) {
+    const double tau = it->t - last.t;
+    const Eigen::Vector3d p = it->measured_position - last.measured_position;
+    const Eigen::Vector3d r = so3::log(last_inverse * it->measured_orientation.normalized());
+    st += tau;
+    stt += tau * tau;
+    sp += p;
+    stp += tau * p;
+    sr += r;
+    str += tau * r;
+  }
+  if (n < 3) return std::nullopt;
+  const double count = static_cast<double>(n);
+  const double denominator = stt - st * st / count;
+  if (!(denominator > 0.0)) return std::nullopt;
+  RecentVelocity v;
+  v.linear = (stp - st * sp / count) / denominator;
+  v.angular = (str - st * sr / count) / denominator;
+  return v;
+}
+
+}  // namespace opf

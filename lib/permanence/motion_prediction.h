@@ -1,0 +1,163 @@
+#pragma once
+// The dynamics module's predictor (this toolkit's default; the paper's Eq. 12 fit is the `paper`
+// predictor): at occlusion onset it chooses, from the object's own recent history, the motion
+// model that best predicts it, and extrapolates from the last estimate with an uncertainty that
+// grows with the time hidden.
+//
+// Candidates, per world axis: constant position, constant velocity, constant acceleration and
+// ballistic flight (gravity known), each fitted over several windows (seconds, so 10, 30 and
+// 100 Hz logs behave alike); for rotation, constant orientation and constant angular velocity
+// about the recent axis (a rotation vector growing linearly in the body frame). Each candidate is
+// scored the way it will be used: fitted on the history up to an earlier origin, anchored at the
+// filter's estimate there, and asked to predict the measurements up to a horizon after it, from
+// origins spread over the last second (rolling-origin validation). Each model's best window is
+// refitted at the onset, and the models are combined with weights inversely proportional to
+// their validation errors (Bates and Granger): no single lucky score decides, and a model that
+// predicts well dominates. The combination's validation errors, against the time they were
+// predicted ahead, give the growth of the prediction's variance.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "fit/local_polynomial.h"
+
+#include <array>
+#include <deque>
+#include <limits>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace opf {
+
+enum class TranslationModel {
+  kConstantPosition,
+  kConstantVelocity,
+  kConstantAcceleration,
+  kBallistic
+};
+enum class RotationModel { kConstantOrientation, kConstantAngularVelocity };
+
+inline constexpr int kTranslationModelCount = 4;
+inline constexpr int kRotationModelCount = 2;
+
+/// Short names used in result files and summaries: cp, cv, ca, ballistic; co, cw.
+std::string_view to_string(TranslationModel model);
+std::string_view to_string(RotationModel model);
+
+struct MotionPredictionOptions {
+  /// s of history kept and searched (measurements and the estimates at their frames).
+  double history_window = 2.0;
+  /// s: the fit windows tried for every model (clipped to the history).
+  std::vector<double> fit_windows = {0.2, 0.4, 0.8, 1.6};
+  /// s: how far ahead the validation predicts (at most a third of the history).
+  double validation_horizon = 0.5;
+  /// Try ballistic flight under gravity as a model.
+  bool ballistic = true;
+  /// Try a fitted constant acceleration as a model. Its error grows as h^2 beyond the horizon it
+  /// was scored on (with 1 mm noise over 0.2 s the acceleration is known to +-0.15 m/s^2: 2 cm
+  /// after 0.5 s), but on real hand-held and walking motion it earns its weight (the real-video
+  /// benchmark loses a third without it).
+  bool constant_acceleration = true;
+  double gravity = 9.81;                          ///< m/s^2
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();  ///< world axis opposite to gravity
+  /// Multiplies the predicted standard deviations: validation errors of the chosen model are
+  /// optimistic (it won on them), and a hidden object's true motion is not the model's.
+  double uncertainty_scale = 1.5;
+  /// s: the prediction starts at the filter's estimate (no jump at onset) and, for a fitted
+  /// motion (not a constant model), settles onto the robust fit's own track with this time
+  /// constant. The last estimates before an occlusion are
+  /// often its worst (a half-covered object's centroid is biased towards its visible side),
+  /// while the fit down-weights them. 0: onto the fit at once.
+  double settle_time = 0.2;
+  /// s: the measurements this close to the last one are left out of the fits and their scores
+  /// (a half-covered object's centroid leans towards its visible side just before it is lost);
+  /// the prediction still starts at the last estimate.
+  double onset_guard = 0.1;
+  int robust_iterations = 3;  ///< Huber reweightings per fit; 0: plain least squares
+};
+
+/// One frame of an object's history: its measurement and the filter's estimate after it.
+struct MotionSample {
+  double t = 0.0;
+  Eigen::Vector3d measured_position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond measured_orientation = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d estimated_position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond estimated_orientation = Eigen::Quaterniond::Identity();
+};
+
+/// One model of a combination: its fit and its share of the prediction.
+struct WeightedFit {
+  double weight = 0.0;
+  LocalPolynomial fit;
+  double window = 0.0;  ///< s of history it was fitted to
+  /// A fitted motion (order >= 1) says where the object is now, and the prediction settles onto
+  /// its track; a constant model's track is the mean of its window, which a moving object has
+  /// left.
+  bool settles = false;
+};
+
+/// The models combined at the onset, anchored there: everything as a function of the time h >= 0
+/// since the last measurement.
+struct MotionPrediction {
+  /// Per world axis, the models and their weights (summing to 1); the translation fits are of
+  /// positions relative to the last measurement.
+  std::array<std::vector<WeightedFit>, 3> translation;
+  /// Rotation vectors in the body frame of the last measured orientation.
+  std::vector<WeightedFit> rotation;
+  /// The models with the largest weights: per axis, the most elaborate of those, and for
+  /// rotation (for reports).
+  std::array<TranslationModel, 3> translation_models{};
+  TranslationModel translation_model = TranslationModel::kConstantPosition;
+  RotationModel rotation_model = RotationModel::kConstantOrientation;
+  double translation_score = 0.0;  ///< RMS validation error of the combination, m
+  double rotation_score = 0.0;     ///< rad
+  double t_last = 0.0;             ///< time of the last measurement
+  /// The prediction variance is (a2 h^2 + a3 h^3 + a4 h^4) uncertainty_scale^2, fitted to the
+  /// combination's validation errors: per axis, a row (a2, a3, a4); for rotation, per body axis.
+  Eigen::Matrix3d translation_growth = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rotation_growth = Eigen::Vector3d::Zero();
+  double uncertainty_scale = 1.0;
+  /// The estimate at the last measurement, where the prediction starts.
+  Eigen::Vector3d anchor_position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond anchor_orientation = Eigen::Quaterniond::Identity();
+  /// The last measurement the fits used, their origin.
+  Eigen::Vector3d measured_position = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond measured_orientation = Eigen::Quaterniond::Identity();
+  double settle_time = 0.0;
+
+  /// The predicted pose h seconds after the last measurement: the anchor at h = 0, moved by the
+  /// models and settling onto the fitted motions' tracks.
+  Eigen::Vector3d position(double h) const;
+  Eigen::Quaterniond orientation(double h) const;
+  /// Per-axis variance of position(h) (m^2) and per-axis variance of the body-frame rotation
+  /// (rad^2): how far the object may be from the prediction.
+  Eigen::Vector3d translation_variance(double h) const;
+  double rotation_variance(double h) const;
+};
+
+/// Chooses and fits the models on `history` (oldest first, strictly increasing times). Returns
+/// nothing when the history is too short to validate anything (under four samples, or spanning
+/// less than three frames' worth of time).
+std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> history,
+                                               const MotionPredictionOptions& options);
+
+/// The velocity and body-frame angular velocity of the last `window` seconds of `history` by a
+/// least-squares line (for the particles' drift while the object is visible). Nothing when fewer
+/// than three samples lie in the window.
+struct RecentVelocity {
+  Eigen::Vector3d linear = Eigen::Vector3d::Zero();   ///< m/s, world frame
+  Eigen::Vector3d angular = Eigen::Vector3d::Zero();  ///< rad/s, body frame of the last sample
+};
+std::optional<RecentVelocity> recent_velocity(const std::deque<MotionSample>& history,
+                                              double window);
+
+/// The heaviest models, for reports: per axis x, y, z, then rotation, e.g. "cv,cv,cp/cw".
+std::string describe(const MotionPrediction& prediction);
+
+/// Throws std::invalid_argument naming the first option out of range.
+void validate(const MotionPredictionOptions& options);
+
+}  // namespace opf

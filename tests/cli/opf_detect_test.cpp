@@ -1,0 +1,184 @@
+// End-to-end tests of `opf detect`: synthetic image folders, and the first second of OpenCV's
+// sample clip box.mp4 (package opencv-doc, scripts/packages.txt) with the bundled box.yaml.
+
+#include "cli/opf_program.h"
+#include "io/measurement_log.h"
+#include "vision/synthetic_image.h"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace opf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kRealVideo = std::string(OPF_SOURCE_DIR) + "/experiments/real_video/";
+
+/// The path of `name` (or `name`.gz) in the files of package opencv-doc; empty when not there.
+std::string packaged_file(const std::string& name) {
+  FILE* pipe = popen("dpkg -L opencv-doc 2>/dev/null", "r");
+  if (pipe == nullptr) return "";
+  std::string found;
+  char line[4096];
+  while (std::fgets(line, sizeof line, pipe) != nullptr) {
+    std::string path(line);
+    while (!path.empty() && (path.back() == '\n' || path.back() == '\r')) path.pop_back();
+    for (const std::string& tail : {"/" + name, "/" + name + ".gz"})
+      if (found.empty() && path.size() > tail.size() &&
+          path.compare(path.size() - tail.size(), tail.size(), tail) == 0)
+        found = path;
+  }
+  pclose(pipe);
+  return found;
+}
+
+/// Six 320x240 frames: a yellow rectangle 60x30 px at (100 + 10k, 120) turned by 20 degrees,
+/// missing from frame 3.
+void write_frames(const fs::path& dir) {
+  fs::create_directories(dir);
+  for (int k = 0; k < 6; ++k) {
+    cv::Mat frame = vision::test::plain_frame(vision::test::kBackground, {320, 240});
+    if (k != 3)
+      vision::test::draw_rectangle(frame, {100.0 + 10 * k, 120.0}, {60, 30}, 20.0,
+                                   vision::test::kYellow);
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%02d.png", k);
+    ASSERT_TRUE(cv::imwrite((dir / name).string(), frame));
+  }
+}
+
+TEST_F(OpfProgram, DetectFindsTheBoxInTheFirstSecondOfBoxMp4) {
+  const std::string packaged = packaged_file("box.mp4");
+  ASSERT_FALSE(packaged.empty())
+      << "box.mp4 not found in package opencv-doc: apt-get install opencv-doc";
+  std::string video = packaged;
+  if (packaged.ends_with(".gz")) {
+    video = (dir_ / "box.mp4").string();
+    ASSERT_EQ(std::system(("gunzip -c '" + packaged + "' > '" + video + "'").c_str()), 0);
+  }
+  const fs::path log_path = dir_ / "box.csv";
+  ASSERT_EQ(run("detect --video " + video + " --objects " + kRealVideo + "box.yaml --out " +
+                log_path.string() + " --frames 30"),
+            0)
+      << err();
+  EXPECT_EQ(err().find("detect: ["), std::string::npos) << "a progress bar off a terminal";
+  const MeasurementLog log = read_measurement_log(log_path);
+  ASSERT_EQ(log.objects, std::vector<std::string>{"box"});
+  ASSERT_GE(log.frames.size(), 28u);  // the box is in view throughout
+  // t = frame / fps with the clip's 29.97 fps.
+  const double dt = log.frames[1].t - log.frames[0].t;
+  EXPECT_EQ(log.frames[0].t, 0.0);
+  EXPECT_NEAR(1.0 / dt, 29.97, 0.01);
+  for (const Frame& frame : log.frames) {
+    const double k = frame.t / dt;
+    EXPECT_NEAR(k, std::round(k), 1e-6);
+    EXPECT_LT(k, 30.0);
+  }
+  // Frame 0: the box's centre is at about (451, 127) px (checked on an overlay), its long side
+  // tilted by about 0.2 rad; over the first second the hand moves it a few px per frame at most.
+  const auto& first = log.frames[0].detections.at(0).pose;
+  EXPECT_NEAR(first.x() * 1000.0, 451.0, 15.0);
+  EXPECT_NEAR(first.y() * 1000.0, 127.0, 15.0);
+  EXPECT_NEAR(first.yaw(), 0.22, 0.1);
+  for (std::size_t i = 0; i < log.frames.size(); ++i) {
+    const auto& pose = log.frames[i].detections.at(0).pose;
+    EXPECT_GT(pose.x(), 0.40);
+    EXPECT_LT(pose.x(), 0.50);
+    EXPECT_GT(pose.y(), 0.09);
+    EXPECT_LT(pose.y(), 0.16);
+    EXPECT_NEAR(pose.z(), 1.0, 0.05);  // about the size of the first five frames
+    EXPECT_NEAR(pose.pitch(), 0.0, 1e-9);
+    EXPECT_NEAR(pose.roll(), 0.0, 1e-9);
+    if (i == 0) continue;
+    const auto& previous = log.frames[i - 1].detections.at(0).pose;
+    EXPECT_LT(std::hypot(pose.x() - previous.x(), pose.y() - previous.y()), 0.008) << i;
+    EXPECT_LT(std::abs(pose.yaw() - previous.yaw()), 0.05) << i;
+  }
+  EXPECT_NE(out().find("box: found in"), std::string::npos) << out();
+}
+
+TEST_F(OpfProgram, DetectReadsAFolderOfImagesAtTheGivenRate) {
+  write_frames(dir_ / "frames");
+  std::ofstream(dir_ / "spec.yaml") << "objects:\n  box:\n    hsv: {low: [20, 100, 100], "
+                                       "high: [40, 255, 255]}\n    pose: {reference_frames: 1}\n";
+  const fs::path log_path = dir_ / "log.csv";
+  ASSERT_EQ(
+      run("detect --video " + (dir_ / "frames").string() + " --objects " +
+          (dir_ / "spec.yaml").string() + " --out " + log_path.string() + " --rate 20 --first 1"),
+      0)
+      << err();
+  EXPECT_EQ(err(), "");  // no progress bar when stderr is not a terminal
+  const std::string text = read(log_path);
+  EXPECT_EQ(text.substr(0, text.find('\n')), "t,object,x,y,z,qx,qy,qz,qw");
+  const MeasurementLog log = read_measurement_log(log_path);
+  ASSERT_EQ(log.frames.size(), 4u);  // frames 1, 2, 4, 5: none at frame 3
+  const double expected_t[] = {0.05, 0.1, 0.2, 0.25};
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(log.frames[i].t, expected_t[i]);
+    const auto& pose = log.frames[i].detections.at(0).pose;
+    const double u = 100.0 + 10.0 * (expected_t[i] * 20.0);
+    EXPECT_NEAR(pose.x(), u / 1000.0, 0.0005);
+    EXPECT_NEAR(pose.y(), 0.120, 0.0005);
+    EXPECT_NEAR(pose.z(), 1.0, 0.005);
+    EXPECT_NEAR(pose.yaw(), 20.0 * M_PI / 180.0, 0.01);
+  }
+  EXPECT_NE(out().find("found in 4 of 5 frames"), std::string::npos) << out();
+
+  // A folder states no frame rate.
+  EXPECT_EQ(run("detect --video " + (dir_ / "frames").string() + " --objects " +
+                (dir_ / "spec.yaml").string() + " --out " + log_path.string()),
+            2);
+  EXPECT_NE(err().find("'--rate' is required"), std::string::npos) << err();
+}
+
+TEST_F(OpfProgram, DetectErrorsNameTheFile) {
+  write_frames(dir_ / "frames");
+  const std::string spec = kRealVideo + "box.yaml";
+  const std::string log_path = (dir_ / "log.csv").string();
+
+  EXPECT_EQ(run("detect --video " + (dir_ / "none.mp4").string() + " --objects " + spec +
+                " --out " + log_path),
+            1);
+  EXPECT_NE(err().find((dir_ / "none.mp4").string()), std::string::npos) << err();
+
+  std::ofstream(dir_ / "text.mp4") << "not a video\n";
+  EXPECT_EQ(run("detect --video " + (dir_ / "text.mp4").string() + " --objects " + spec +
+                " --out " + log_path),
+            1);
+  EXPECT_NE(err().find((dir_ / "text.mp4").string() + ": cannot be read as a video"),
+            std::string::npos)
+      << err();
+
+  std::ofstream(dir_ / "bad.yaml") << "objects:\n  box:\n    hsv: {low: [20, 100, 100], "
+                                      "high: [40, 255, 255]}\n    min_area: many\n";
+  EXPECT_EQ(run("detect --video " + (dir_ / "frames").string() + " --rate 10 --objects " +
+                (dir_ / "bad.yaml").string() + " --out " + log_path),
+            1);
+  EXPECT_NE(err().find((dir_ / "bad.yaml").string() + ":4: key 'objects.box.min_area'"),
+            std::string::npos)
+      << err();
+  EXPECT_NE(err().find("expected a finite number, got \"many\""), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(log_path));
+
+  EXPECT_EQ(run("detect --video " + (dir_ / "frames").string() + " --objects " + spec), 2);
+  EXPECT_NE(err().find("'--out' is required"), std::string::npos) << err();
+  EXPECT_EQ(run("detect --video " + (dir_ / "frames").string() + " --objects " + spec + " --out " +
+                log_path + " --rate 0"),
+            2);
+  EXPECT_EQ(run("detect --video " + (dir_ / "frames").string() + " --objects " + spec + " --out " +
+                log_path + " --rate 10 --first 6"),
+            1);
+  EXPECT_NE(err().find("none from the first frame asked for (6)"), std::string::npos) << err();
+  EXPECT_EQ(run("detect --help"), 0);
+  EXPECT_NE(out().find("Usage: opf detect"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace opf
