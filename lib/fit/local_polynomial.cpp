@@ -53,48 +53,76 @@ bool fit_local_polynomial(std::span<const double> times, const Eigen::Matrix3Xd&
     return values(axis, begin + i) - 0.5 * tau * tau * known_acceleration(axis);
   };
 
-  // Each axis is reweighted on its own residuals: a large error on one axis (an unmodelled fall)
-  // says nothing against the samples of another.
   Eigen::Matrix3d solution = Eigen::Matrix3d::Zero();  // column per axis
   Eigen::Vector3d residual_variance = Eigen::Vector3d::Zero();
-  std::vector<double> weights(static_cast<std::size_t>(count));
-  std::vector<double> magnitudes(static_cast<std::size_t>(count));
-  std::vector<double> sorted(static_cast<std::size_t>(count));
-  for (int axis = 0; axis < 3; ++axis) {
-    std::fill(weights.begin(), weights.end(), 1.0);
-    Eigen::Vector3d x = Eigen::Vector3d::Zero();
-    for (int iteration = 0;; ++iteration) {
-      // Always 3 x 3: the unused powers get an identity block and a zero right-hand side, so
-      // their coefficients solve to zero.
-      Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-      Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-      for (Eigen::Index i = 0; i < count; ++i) {
-        Eigen::Vector3d phi = basis(i);
-        for (int k = parameters; k < 3; ++k) phi(k) = 0.0;
-        const double w = weights[static_cast<std::size_t>(i)];
-        normal.noalias() += w * phi * phi.transpose();
-        rhs.noalias() += w * target(i, axis) * phi;
-      }
-      for (int k = parameters; k < 3; ++k) normal(k, k) = 1.0;
-      x = normal.ldlt().solve(rhs);
-      for (Eigen::Index i = 0; i < count; ++i)
-        magnitudes[static_cast<std::size_t>(i)] = std::abs(target(i, axis) - basis(i).dot(x));
-      if (iteration >= robust_iterations) break;
-      std::copy(magnitudes.begin(), magnitudes.end(), sorted.begin());
-      const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-      std::nth_element(sorted.begin(), middle, sorted.end());
-      const double scale = 1.4826 * *middle;
-      if (!(scale > 0.0)) break;  // an exact fit: nothing to down-weight
-      for (std::size_t i = 0; i < weights.size(); ++i)
-        weights[i] = magnitudes[i] <= kHuberThreshold * scale
-                         ? 1.0
-                         : kHuberThreshold * scale / magnitudes[i];
+  // The basis with the unused powers zeroed; the normal matrix then gets an identity block for
+  // them and their coefficients solve to zero, so every solve is a fixed 3 x 3.
+  const auto padded = [&](Eigen::Index i) {
+    Eigen::Vector3d phi = basis(i);
+    for (int k = parameters; k < 3; ++k) phi(k) = 0.0;
+    return phi;
+  };
+  const auto pad = [&](Eigen::Matrix3d& normal) {
+    for (int k = parameters; k < 3; ++k) normal(k, k) = 1.0;
+  };
+
+  if (robust_iterations == 0) {
+    // Plain least squares: one normal matrix for the three axes, one pass.
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Matrix3d rhs = Eigen::Matrix3d::Zero();  // column per axis
+    for (Eigen::Index i = 0; i < count; ++i) {
+      const Eigen::Vector3d phi = padded(i);
+      normal.noalias() += phi * phi.transpose();
+      rhs.noalias() += phi * Eigen::RowVector3d(target(i, 0), target(i, 1), target(i, 2));
     }
-    solution.col(axis) = x;
-    double weighted = 0.0;
-    for (std::size_t i = 0; i < weights.size(); ++i)
-      weighted += weights[i] * magnitudes[i] * magnitudes[i];
-    residual_variance(axis) = weighted;
+    pad(normal);
+    solution = normal.ldlt().solve(rhs);
+    for (Eigen::Index i = 0; i < count; ++i) {
+      const Eigen::Vector3d phi = padded(i);
+      for (int axis = 0; axis < 3; ++axis) {
+        const double r = target(i, axis) - phi.dot(solution.col(axis));
+        residual_variance(axis) += r * r;
+      }
+    }
+  } else {
+    // Each axis is reweighted on its own residuals: a large error on one axis (an unmodelled
+    // fall) says nothing against the samples of another.
+    std::vector<double> weights(static_cast<std::size_t>(count));
+    std::vector<double> magnitudes(static_cast<std::size_t>(count));
+    std::vector<double> sorted(static_cast<std::size_t>(count));
+    for (int axis = 0; axis < 3; ++axis) {
+      std::fill(weights.begin(), weights.end(), 1.0);
+      Eigen::Vector3d x = Eigen::Vector3d::Zero();
+      for (int iteration = 0;; ++iteration) {
+        Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+        for (Eigen::Index i = 0; i < count; ++i) {
+          const Eigen::Vector3d phi = padded(i);
+          const double w = weights[static_cast<std::size_t>(i)];
+          normal.noalias() += w * phi * phi.transpose();
+          rhs.noalias() += w * target(i, axis) * phi;
+        }
+        pad(normal);
+        x = normal.ldlt().solve(rhs);
+        for (Eigen::Index i = 0; i < count; ++i)
+          magnitudes[static_cast<std::size_t>(i)] = std::abs(target(i, axis) - basis(i).dot(x));
+        if (iteration >= robust_iterations) break;
+        std::copy(magnitudes.begin(), magnitudes.end(), sorted.begin());
+        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+        std::nth_element(sorted.begin(), middle, sorted.end());
+        const double scale = 1.4826 * *middle;
+        if (!(scale > 0.0)) break;  // an exact fit: nothing to down-weight
+        for (std::size_t i = 0; i < weights.size(); ++i)
+          weights[i] = magnitudes[i] <= kHuberThreshold * scale
+                           ? 1.0
+                           : kHuberThreshold * scale / magnitudes[i];
+      }
+      solution.col(axis) = x;
+      double weighted = 0.0;
+      for (std::size_t i = 0; i < weights.size(); ++i)
+        weighted += weights[i] * magnitudes[i] * magnitudes[i];
+      residual_variance(axis) = weighted;
+    }
   }
 
   fit.t_ref = t_ref;

@@ -28,10 +28,11 @@ int complexity(TranslationModel model) {
 }
 
 constexpr double kValidationSpan = 1.0;
-constexpr double kWanderLag = 0.25;  // s
-// The validation's many fits reweight once (one Huber step already discounts an outlier); the
-// fits kept for the prediction take options.robust_iterations.
-constexpr int kValidationRobustIterations = 1;
+constexpr double kWanderLag = 0.3;  // s: the longest lag of the wander regression
+// The validation's many fits are plain least squares (one pass for the three axes); the fits
+// kept for the prediction take options.robust_iterations. An outlier then costs every candidate
+// alike in the scores, and none of them in the prediction.
+constexpr int kValidationRobustIterations = 0;
 constexpr double kValidationPeriod = 1.0 / 30.0;  // s
 
 struct Candidate {
@@ -83,6 +84,16 @@ struct Validation {
     return count > 0.0 ? axis_squared_error(axis) / count : std::numeric_limits<double>::infinity();
   }
   Eigen::Vector3d axis_squared_error = Eigen::Vector3d::Zero();
+
+  // Room for every (origin, sample) pair, so that recording them does not reallocate.
+  void reserve(std::span<const std::size_t> origins, const std::vector<double>& t, double horizon) {
+    std::size_t pairs = 0;
+    for (const std::size_t o : origins)
+      for (std::size_t i = o + 1; i < t.size() && t[i] - t[o] <= horizon * (1.0 + 1e-9); ++i)
+        ++pairs;
+    horizons.reserve(pairs);
+    errors.reserve(pairs);
+  }
 };
 
 // The share of the way from the anchor to the fit's track after h seconds.
@@ -100,6 +111,7 @@ Validation validate_translation(std::span<const MotionSample> history, const Ser
                                 const Candidate& candidate, double window,
                                 const MotionPredictionOptions& options) {
   Validation v;
+  v.reserve(origins, s.t, horizon);
   const Eigen::Vector3d acceleration =
       candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
   const Eigen::Vector3d last = history.back().measured_position;
@@ -134,6 +146,7 @@ Validation validate_rotation(std::span<const MotionSample> history, const Series
                              std::span<const std::size_t> origins, double horizon, int order,
                              double window, const MotionPredictionOptions& options) {
   Validation v;
+  v.reserve(origins, s.t, horizon);
   for (const std::size_t o : origins) {
     LocalPolynomial fit;
     const double t_o = s.t[o];
@@ -218,7 +231,7 @@ Eigen::Vector3d growth(const Validation& v, int axis, double noise) {
 std::vector<std::size_t> validation_origins(const std::vector<double>& t, double horizon,
                                             double earliest) {
   std::vector<std::size_t> origins;
-  for (double back = 0.5 * horizon; t.back() - back >= earliest; back += 0.5 * horizon) {
+  for (double back = 0.25 * horizon; t.back() - back >= earliest; back += 0.25 * horizon) {
     const double target = t.back() - back;
     const auto it = std::lower_bound(t.begin(), t.end(), target);
     std::size_t index = static_cast<std::size_t>(it - t.begin());
@@ -238,28 +251,48 @@ double velocity_variance_floor(double residual_variance, int samples, double win
 
 // The intensity q^2 of the motion's random acceleration per axis (m^2/s^3): for a velocity that
 // wanders as a Wiener process, the lagged second difference x(t + L) - 2 x(t) + x(t - L) has
-// variance (2/3) q^2 L^3 plus 6 times the measurement noise's variance. Its variance about its
-// mean is used, so a constant acceleration (a throw) counts for nothing; L is about a quarter
-// of a second, where the wander shows above the noise. The predictions' variance then grows at
-// least as q^2 h^3 / 3, as a constant-velocity Kalman filter's with that process noise.
-Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matrix3Xd& values,
-                                 const Eigen::Vector3d& noise) {
+// variance 6 sigma^2 + (2/3) q^2 L^3, sigma the measurement noise. Its variance (about its mean,
+// so a constant acceleration, a throw, counts for nothing) at lags of one frame up to kWanderLag
+// is regressed on L^3 with weights for its relative precision: the slope is the wander, the
+// intercept the noise, estimated together so that neither leaks into the other. The
+// predictions' variance then grows at least as q^2 h^3 / 3, as a constant-velocity Kalman
+// filter's with that process noise.
+Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matrix3Xd& values) {
   const Eigen::Index n = values.cols();
   const double period =
       (t.back() - t.front()) / static_cast<double>(std::max<Eigen::Index>(n - 1, 1));
-  const Eigen::Index lag = std::max<Eigen::Index>(1, std::lround(kWanderLag / period));
-  if (n < 2 * lag + 3) return Eigen::Vector3d::Zero();
-  const Eigen::Index count = n - 2 * lag;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero(), sum_squares = Eigen::Vector3d::Zero();
-  for (Eigen::Index k = lag; k + lag < n; ++k) {
-    const Eigen::Vector3d d = values.col(k + lag) - 2.0 * values.col(k) + values.col(k - lag);
-    sum += d;
-    sum_squares += d.cwiseAbs2();
+  const Eigen::Index lags = std::max<Eigen::Index>(3, std::lround(kWanderLag / period));
+  Eigen::Vector3d q2 = Eigen::Vector3d::Zero();
+  if (n < 2 * lags + 6) return q2;
+  for (int axis = 0; axis < 3; ++axis) {
+    // Weighted least squares of V(L) = c + b L^3 with weights (n - 2L) / V(L)^2.
+    double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    for (Eigen::Index lag = 1; lag <= lags; ++lag) {
+      double sum = 0.0, sum_squares = 0.0;
+      const Eigen::Index count = n - 2 * lag;
+      for (Eigen::Index k = lag; k + lag < n; ++k) {
+        const double d = values(axis, k + lag) - 2.0 * values(axis, k) + values(axis, k - lag);
+        sum += d;
+        sum_squares += d * d;
+      }
+      const double c = static_cast<double>(count);
+      const double variance = (sum_squares - sum * sum / c) / (c - 1.0);
+      if (!(variance > 0.0)) continue;
+      const double span = static_cast<double>(lag) * period;
+      const double x = span * span * span;
+      const double w = c / (variance * variance);
+      sw += w;
+      sx += w * x;
+      sy += w * variance;
+      sxx += w * x * x;
+      sxy += w * x * variance;
+    }
+    const double det = sw * sxx - sx * sx;
+    if (!(det > 0.0)) continue;
+    const double slope = (sw * sxy - sx * sy) / det;
+    q2(axis) = std::max(0.0, slope) / (2.0 / 3.0);
   }
-  const double c = static_cast<double>(count);
-  const Eigen::Vector3d variance = (sum_squares - sum.cwiseAbs2() / c) / (c - 1.0);
-  const double span = static_cast<double>(lag) * period;
-  return ((variance - 6.0 * noise).cwiseMax(0.0)) / (2.0 / 3.0 * span * span * span);
+  return q2;
 }
 
 // Bates-Granger weights: inversely proportional to each candidate's mean squared validation error
@@ -420,6 +453,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   for (std::size_t k = (history.size() - 1) % stride; k < history.size(); k += stride)
     thinned.push_back(history[k]);
   const Series coarse = make_series(thinned);
+  // A candidate that cannot be fitted at some origin (constant acceleration needs four samples)
+  // is left out: all are scored on the same predictions.
   const double earliest =
       std::max(coarse.t.front() + std::min(options.fit_windows.front(), span / 3.0),
                coarse.t.back() - kValidationSpan);
@@ -458,9 +493,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   std::array<std::vector<Scored>, 3> scored;
   const Eigen::Vector3d position_noise = noise_variance(s.position);
   const double rotation_noise = noise_variance(s.rotation).mean();
-  const Eigen::Vector3d position_wander = wander_intensity(s.t, s.position, position_noise);
-  const double rotation_wander =
-      wander_intensity(s.t, s.rotation, Eigen::Vector3d::Constant(rotation_noise)).mean();
+  const Eigen::Vector3d position_wander = wander_intensity(s.t, s.position);
+  const double rotation_wander = wander_intensity(s.t, s.rotation).mean();
   for (const auto& [model, candidate] : translation_candidates) {
     std::vector<Validation> by_window;
     for (const double window : options.fit_windows)

@@ -65,7 +65,7 @@ struct MotionPredictionOptions {
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();  ///< world axis opposite to gravity
   /// Multiplies the predicted standard deviations: validation errors of the chosen model are
   /// optimistic (it won on them), and a hidden object's true motion is not the model's.
-  double uncertainty_scale = 1.5;
+  double uncertainty_scale = 1.75;
   /// s: the prediction starts at the filter's estimate (no jump at onset) and, for a fitted
   /// motion (not a constant model), settles onto the robust fit's own track with this time
   /// constant. The last estimates before an occlusion are

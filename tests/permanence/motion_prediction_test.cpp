@@ -93,13 +93,15 @@ TEST(MotionPrediction, AThrownBallIsBallisticFromAThirdOfASecond) {
   EXPECT_EQ(prediction->translation_models[2], TranslationModel::kBallistic);
   // The velocity from 1 mm noise over <= 0.3 s is known to ~2 cm/s (4 sigma): 1 cm at 0.5 s.
   EXPECT_LT((prediction->position(0.5) - flight(5.5)).norm(), 0.01);
-  // Without gravity as a candidate the best is the constant-acceleration fit.
+  // Without gravity as a candidate (here too short a history for a fitted acceleration at every
+  // validation origin) the prediction is worse than with gravity known.
   MotionPredictionOptions no_gravity;
   no_gravity.ballistic = false;
   const auto fallback =
       predict_motion(history(100.0, 0.3, flight, still, 0.001, 0.005, 2), no_gravity);
   ASSERT_TRUE(fallback);
-  EXPECT_EQ(fallback->translation_models[2], TranslationModel::kConstantAcceleration);
+  EXPECT_GT((fallback->position(0.5) - flight(5.5)).norm(),
+            (prediction->position(0.5) - flight(5.5)).norm());
 }
 
 TEST(MotionPrediction, GravityFollowsTheConfiguredUpAxis) {
