@@ -1,7 +1,7 @@
 // One full filter step per estimator (predict, measurement or OP update, normalise, resample,
 // estimate) over particle counts 100 ... 100 000 per portion, reported as particles per second
 // (both portions: 2N per step) so the cost curve over N is visible; the OPF's step while the
-// object is hidden (carried along its fitted trajectory under the inflated Q~); and the CV
+// object is hidden (moved and spread by the dynamics module's prediction); and the CV
 // Kalman filter, which has no particles.
 
 #include "core/pose_conversion.h"
@@ -72,9 +72,9 @@ BENCHMARK_CAPTURE(BM_EstimatorStep, opf, std::string("opf"))->Apply(particle_cou
 BENCHMARK_CAPTURE(BM_EstimatorStep, pf, std::string("pf"))->Apply(particle_counts);
 BENCHMARK_CAPTURE(BM_EstimatorStep, oapf, std::string("oapf"))->Apply(particle_counts);
 
-// An OPF step while the object is hidden: predict, carry along the fitted trajectory, update
-// with the virtual measurement under the inflated Q~, resample. The fit itself happens once at
-// occlusion onset, before the timed loop (see trajectory_fit_bench.cpp for its cost).
+// An OPF step while the object is hidden: the particles moved by the prediction's change and
+// spread by the growth of its covariance (until Q~ reaches its cap). The model choice happens
+// once at occlusion onset, before the timed loop (see motion_prediction_bench.cpp for its cost).
 void BM_OpfHiddenStep(benchmark::State& state) {
   OpfOptions options;
   options.particles.translation_particles = options.particles.rotation_particles =
