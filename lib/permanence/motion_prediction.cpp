@@ -290,7 +290,11 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
     const double det = sw * sxx - sx * sx;
     if (!(det > 0.0)) continue;
     const double slope = (sw * sxy - sx * sy) / det;
-    q2(axis) = std::max(0.0, slope) / (2.0 / 3.0);
+    // A sample variance of c Gaussian values has variance 2 V^2 / c, twice what the weights
+    // assume: the slope's standard error is sqrt(2 sw / det). Only the wander that stands
+    // above it counts (a still object's jitter must not read as wander).
+    const double standard_error = std::sqrt(2.0 * sw / det);
+    q2(axis) = std::max(0.0, slope - standard_error) / (2.0 / 3.0);
   }
   return q2;
 }
