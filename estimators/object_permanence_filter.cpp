@@ -125,11 +125,13 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     h.carrier_track.clear();
     // The history restarts when the object turns up somewhere its history does not lead: after a
     // long occlusion in which it was carried by an occluder or only predicted (revealed in a new
-    // place), or whenever the measurement was far outside the cloud (sensor reset). An object the
-    // dynamics module carried through the gap keeps its history: its motion is still that one,
-    // and a brief, partly covered glimpse is no better basis for the next fit.
-    if (lost || (hidden_ && hidden_by != Source::kTrajectory &&
-                 t - hidden_since_ > options_.history_reset_gap))
+    // place), or whenever the measurement was far outside the cloud (a translation reset). An
+    // object the dynamics module carried through the gap keeps its history: its motion is still
+    // that one, and a brief, partly covered glimpse is no better basis for the next fit. A reset of
+    // the rotation portion alone (the orientation of a half-covered object read wrong) says nothing
+    // against where the object was going.
+    if (h.filter.translation_was_reset() || (hidden_ && hidden_by != Source::kTrajectory &&
+                                             t - hidden_since_ > options_.history_reset_gap))
       history_.clear();
     hidden_ = false;
     // The history sample holds the estimate itself: its moments are computed once per step.

@@ -150,6 +150,7 @@ void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation
 bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position,
                                                  const Eigen::Quaterniond& orientation) {
   reweight(position, orientation);
+  translation_reset_ = false;
   if (!(options_.reset_gate > 0.0)) return false;
   // The best exponent is -d^2/2 in sigmas for the particle nearest the measurement.
   const double threshold = -0.5 * options_.reset_gate * options_.reset_gate;
@@ -157,7 +158,7 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   if (translation_best_exponent_ < threshold) {
     scatter_around(translation_, position, options_.observation_noise_translation, noise_);
     translation_reweighted_ = translation_underflow_ = false;  // the reset replaced the weights
-    reset = true;
+    translation_reset_ = reset = true;
   }
   if (rotation_best_exponent_ < threshold) {
     scatter_around(rotation_, orientation, options_.observation_noise_rotation, noise_);

@@ -75,6 +75,9 @@ class PoseParticleFilter {
   /// resetting). Returns whether any portion was reset.
   bool update_with_measurement(const Eigen::Vector3d& position,
                                const Eigen::Quaterniond& orientation);
+  /// Whether the last update_with_measurement reset the translation portion (the object was
+  /// somewhere the cloud did not reach), as opposed to only the rotation portion.
+  bool translation_was_reset() const { return translation_reset_; }
 
   /// Normalises each portion and resamples it per the options. A portion whose weights were not
   /// changed since its last resampling is left alone (uniform weights gain nothing from it).
@@ -111,6 +114,7 @@ class PoseParticleFilter {
   bool rotation_reweighted_ = false;
   double translation_best_exponent_ = 0.0;  ///< of the last reweight, for sensor resetting
   double rotation_best_exponent_ = 0.0;
+  bool translation_reset_ = false;      ///< by the last update_with_measurement
   bool translation_underflow_ = false;  ///< since the last normalise_and_resample
   bool rotation_underflow_ = false;
 };
