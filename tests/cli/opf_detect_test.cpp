@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <string>
 
 namespace opf {
@@ -102,6 +104,54 @@ TEST_F(OpfProgram, DetectFindsTheBoxInTheFirstSecondOfBoxMp4) {
     EXPECT_LT(std::abs(pose.yaw() - previous.yaw()), 0.05) << i;
   }
   EXPECT_NE(out().find("box: found in"), std::string::npos) << out();
+}
+
+// The real-video benchmark's pipeline on its first five seconds: detect, blank 0.6 s every 2 s,
+// evaluate. The box moves by hand up to ~0.1 m/s here, so an estimator that holds it where it
+// vanished (the PF) is off by up to 6 cm at the end of a gap; the OPF's dynamics module must do
+// better, and its reported spread must cover its hidden errors (90% of them). (Its median error
+// / spread is low on two short gaps: the cloud at onset, set by the 1 cm observation noise Q,
+// dominates; over the whole clip it is 0.3-0.4, see README.)
+TEST_F(OpfProgram, DetectDropoutEvaluatePipelineOnBoxMp4) {
+  const std::string packaged = packaged_file("box.mp4");
+  ASSERT_FALSE(packaged.empty())
+      << "box.mp4 not found in package opencv-doc: apt-get install opencv-doc";
+  std::string video = packaged;
+  if (packaged.ends_with(".gz")) {
+    video = (dir_ / "box.mp4").string();
+    ASSERT_EQ(std::system(("gunzip -c '" + packaged + "' > '" + video + "'").c_str()), 0);
+  }
+  const std::string full = (dir_ / "box.csv").string();
+  const std::string dropped = (dir_ / "box_0.6.csv").string();
+  ASSERT_EQ(run("detect --video " + video + " --objects " + kRealVideo + "box.yaml --out " + full +
+                " --frames 150"),
+            0)
+      << err();
+  ASSERT_EQ(run("dropout --in " + full + " --out " + dropped + " --length 0.6"), 0) << err();
+  ASSERT_EQ(run("evaluate --in " + dropped + " --truth " + full +
+                " --estimators opf,pf --seeds 1 --particles 2000"),
+            0)
+      << err();
+  // The second table: estimator, hidden [m], hidden [rad], visible [m], visible [rad],
+  // coverage, err/sd.
+  std::map<std::string, std::vector<double>> rows;
+  std::istringstream lines(out());
+  std::string line;
+  bool second_table = false;
+  while (std::getline(lines, line)) {
+    if (line.starts_with("estimator  hidden")) second_table = true;
+    if (!second_table || line.starts_with("estimator")) continue;
+    std::istringstream fields(line);
+    std::string name;
+    std::vector<double> values;
+    double v = 0.0;
+    if (!(fields >> name)) break;
+    while (fields >> v) values.push_back(v);
+    if (values.size() == 6) rows[name] = values;
+  }
+  ASSERT_TRUE(rows.count("opf") && rows.count("pf")) << out();
+  EXPECT_LT(rows["opf"][0], 0.5 * rows["pf"][0]) << out();
+  EXPECT_GE(rows["opf"][4], 0.9) << out();
 }
 
 TEST_F(OpfProgram, DetectReadsAFolderOfImagesAtTheGivenRate) {
