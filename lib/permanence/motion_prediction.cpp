@@ -27,13 +27,15 @@ int complexity(TranslationModel model) {
   return 0;
 }
 
+// s: the validation's origins lie in the last second of history: recent enough to follow a
+// change of motion, many enough that no single origin decides.
 constexpr double kValidationSpan = 1.0;
 constexpr double kWanderLag = 0.3;  // s: the longest lag of the wander regression
 // The validation's many fits are plain least squares (one pass for the three axes); the fits
 // kept for the prediction take options.robust_iterations. An outlier then costs every candidate
 // alike in the scores, and none of them in the prediction.
 constexpr int kValidationRobustIterations = 0;
-constexpr double kValidationPeriod = 1.0 / 30.0;  // s
+constexpr double kValidationPeriod = 1.0 / 30.0;  // s: the validation's thinned sample period
 
 struct Candidate {
   int order = 0;

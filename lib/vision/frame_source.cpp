@@ -53,9 +53,11 @@ FrameSource::FrameSource(const std::filesystem::path& path) : path_(path) {
   }
   // Missing files and unreadable ones get the toolkit's usual messages.
   open_input_file(path, "video").close();
-  if (!video_.open(path.string(), cv::CAP_ANY) || !video_.isOpened())
+  // FFmpeg, OpenCV's file decoder on Debian: letting OpenCV probe every backend would also try
+  // GStreamer pipelines and cameras, which print their own errors and leak on the way.
+  if (!video_.open(path.string(), cv::CAP_FFMPEG) || !video_.isOpened())
     throw InputError(path.string(), 0, "",
-                     "cannot be read as a video: OpenCV has no decoder for it");
+                     "cannot be read as a video: FFmpeg (OpenCV's decoder) cannot decode it");
   const double fps = video_.get(cv::CAP_PROP_FPS);
   if (std::isfinite(fps) && fps > 0.0 && fps < 10000.0) fps_ = fps;
   const double count = video_.get(cv::CAP_PROP_FRAME_COUNT);
