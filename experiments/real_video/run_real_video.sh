@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The estimators on real motion with synthetic dropouts: OpenCV's sample clips (package opencv-doc)
 # through `opf detect` (box.mp4: a yellow box moved by hand, HSV range, box.yaml; vtest.avi: one
-# pedestrian crossing a lawn, background subtraction, vtest.yaml), the detections removed for
+# pedestrian crossing a lawn, background subtraction, vtest.yaml; cup.mp4: a dark tumbler tilted
+# by hand, HSV range of dark unsaturated pixels, cup.yaml), the detections removed for
 # 0.3 s and 0.6 s every 2 s (`opf dropout`, the first window 1 s after the track begins), then
 # `opf evaluate` of the dropped log against the full one.
 #
@@ -66,6 +67,7 @@ check_log() {
 clips=(
   "box|box.mp4|box.yaml|"
   "vtest|vtest.avi|vtest.yaml|--first 450 --frames 271"
+  "cup|cup.mp4|cup.yaml|"
 )
 dropouts=(0.3 0.6)
 summary="$out/summary.txt"
@@ -100,7 +102,7 @@ done
 import pathlib, re, sys
 
 out, seeds, dropouts = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3:]
-clips = ["box", "vtest"]
+clips = ["box", "vtest", "cup"]
 lines = ["# Real-video benchmark", "",
          f"Dropouts every 2 s, the first 1 s after the track begins; {seeds} seeds; "
          "ground truth = the detections themselves (the log before the dropouts).", "",

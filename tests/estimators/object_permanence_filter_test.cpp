@@ -329,8 +329,9 @@ TEST(ObjectPermanenceFilter, ABriefGlimpseKeepsTheHistoryOfACarriedObject) {
   scene.objects.push_back({"wall", [](double) { return Eigen::Vector3d(0.3, 0.2, 0.1); }});
   const SceneRun opf = run(scene, opf_factory(OpfOptions{}));
   EXPECT_EQ(opf.estimates[110].at("ball").mode, EstimateMode::kDynamics);
-  // The first gap's bound (RollingBallComesOutWhereTheLinePredicts), one more second out.
-  EXPECT_LT(error_at(opf, scene, "ball", 122), 0.012);
+  // Kept history: a third of the 6 cm a restart would cost. (The glimpsed samples still enter
+  // the short-window fits that the validation weighs, so it is above the first gap's 8 mm.)
+  EXPECT_LT(error_at(opf, scene, "ball", 122), 0.02);
 }
 
 TEST(ObjectPermanenceFilter, DynamicsModuleOffFallsBackToTheOccluder) {
@@ -423,7 +424,7 @@ TEST(ObjectPermanenceFilter, DefaultPredictorFindsTheBallisticThrowWithoutAnOrde
   options.particles.process_noise_translation = 0.2;
   options.particles.observation_noise_translation = 0.005;
   const SceneRun opf = run(scene, opf_factory(options));
-  // 0.5 s of flight from 0.4 s of 1 mm motion capture (0.3 s after the onset guard). Ballistic
+  // 0.5 s of flight from 0.5 s of 1 mm motion capture. Ballistic
   // flight knows the velocity to ~4 mm/s per axis; the constant-acceleration model, which scores
   // about as well over the validated half second, takes up to half the weight with its
   // acceleration known to 0.15 m/s^2 (4 sigma 0.6): at most 0.5 * 0.3 h^2 off, plus 1.5 cm for

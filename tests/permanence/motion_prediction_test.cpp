@@ -116,9 +116,8 @@ TEST(MotionPrediction, GravityFollowsTheConfiguredUpAxis) {
       predict_motion(history(100.0, 0.3, flight, still, 0.001, 0.005, 9), options);
   ASSERT_TRUE(prediction);
   EXPECT_EQ(prediction->translation_models[1], TranslationModel::kBallistic);
-  // Fitted without the last 0.1 s (the onset guard): 20 samples over 0.2 s know the velocity to
-  // 4 mm/s per axis, 1.5 mm at 0.4 s; 4 sigma over three axes is 1.1 cm, plus the weight the
-  // constant-acceleration model takes.
+  // 30 samples over 0.3 s know the velocity to 2 mm/s per axis, under 1 mm at 0.4 s; the
+  // constant-acceleration model's weight (its acceleration known to ~0.1 m/s^2) adds up to 1 cm.
   EXPECT_LT((prediction->position(0.4) - flight(5.4)).norm(), 0.015);
 }
 
