@@ -1,4 +1,5 @@
 #include "drivers/closed_loop_run.h"
+#include "estimators/estimator_settings_yaml.h"
 
 #include "core/pose_conversion.h"
 
@@ -15,7 +16,8 @@ class SugarDropStart : public ::testing::Test {
     sim::ExperimentConfig config =
         sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
     config.frames = 90;
-    EstimatorSettings settings;
+    // The experiment's own estimator settings, as `opf run` applies them.
+    EstimatorSettings settings = load_estimator_settings(config.estimator_config);
     settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
     results_ = new ExperimentResults(run_closed_loop(config, {"opf"}, settings, 1, 3));
   }
@@ -47,7 +49,7 @@ TEST_F(SugarDropStart, TheHandWaitsThenTracksTheMugAndHidesItItself) {
   int hidden = 0;
   for (int k = 60; k < 90; ++k) hidden += !mug[k]->visible;
   EXPECT_GT(hidden, 20);
-  // And the OPF carried it through along its fitted line: within 2 cm at the end.
+  // And the OPF carried it through along its predicted line: within 2 cm at the end.
   EXPECT_LT((translation_of(mug[89]->estimate.pose.mean) - mug[89]->truth.position).norm(), 0.02);
 }
 
@@ -55,7 +57,7 @@ TEST_F(SugarDropStart, TheSameSeedGivesTheSameRun) {
   sim::ExperimentConfig config =
       sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
   config.frames = 90;
-  EstimatorSettings settings;
+  EstimatorSettings settings = load_estimator_settings(config.estimator_config);
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
   const ExperimentResults again = run_closed_loop(config, {"opf"}, settings, 1, 3);
   ASSERT_EQ(again.records.size(), results_->records.size());
