@@ -22,7 +22,10 @@ namespace fs = std::filesystem;
 class VisionVideoDetection : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / "opf_video_detection_test";
+    // One directory per test: ctest runs the tests of this suite in parallel.
+    dir_ = fs::temp_directory_path() /
+           ("opf_video_detection_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     for (int k = 0; k < 6; ++k) {
