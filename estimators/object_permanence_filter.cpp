@@ -175,9 +175,7 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
   if (options_.modules.dynamics && options_.dynamics.predictor == DynamicsPredictor::kSelected &&
       start_dynamics(h))
     return;
-  std::vector<TrajectorySample> window;
-  for (const MotionSample& sample : history_)
-    window.push_back({sample.t, sample.estimated_position, sample.estimated_orientation});
+  const std::vector<TrajectorySample> window = estimate_history();
   const int needed =
       std::max(options_.trajectory.translation_order, options_.trajectory.rotation_order) + 1;
   if (options_.modules.dynamics && options_.dynamics.predictor == DynamicsPredictor::kPaper &&
@@ -230,12 +228,18 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
   }
 }
 
+std::vector<TrajectorySample> ObjectPermanenceFilter::estimate_history() const {
+  std::vector<TrajectorySample> window;
+  window.reserve(history_.size());
+  for (const MotionSample& sample : history_)
+    window.push_back({sample.t, sample.estimated_position, sample.estimated_orientation});
+  return window;
+}
+
 bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
   // Moving or static is decided as with the paper's predictor (the motion test over the
   // history), so a static object still goes to the occluder module.
-  std::vector<TrajectorySample> window;
-  for (const MotionSample& sample : history_)
-    window.push_back({sample.t, sample.estimated_position, sample.estimated_orientation});
+  const std::vector<TrajectorySample> window = estimate_history();
   if (window.size() < 2) return false;
   if (options_.motion.test == MotionTest::kMaxPairwise) {
     if (classify_motion(window, options_.motion) != Motion::kMoving) return false;

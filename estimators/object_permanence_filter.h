@@ -70,6 +70,8 @@ class ObjectPermanenceFilter final : public Estimator {
 
   void start_occlusion(double last_seen, const EnsembleView& ensemble);
   bool start_dynamics(Hypothesis& hypothesis);
+  /// The history's estimates as samples for the motion test and the paper predictor's fit.
+  std::vector<TrajectorySample> estimate_history() const;
   void follow_prediction(Hypothesis& hypothesis, double t_previous, double t);
   void drift_with_recent_velocity(Hypothesis& hypothesis, double dt);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,

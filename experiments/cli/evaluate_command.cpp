@@ -110,7 +110,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   };
   std::vector<Row> rows;
   for (const std::string& name : names) {
-    std::vector<double> translation, paper, geodesic, unobserved;
+    std::vector<double> translation, paper, geodesic;
     Row row{name, {}, {}, {}, {}, {}, {}};
     for (std::size_t k = 0; k < seeds; ++k) {
       const RunErrors r =
@@ -118,7 +118,6 @@ int evaluate_command(const std::vector<std::string>& raw) {
       translation.push_back(r.translation);
       paper.push_back(r.rotation_paper);
       geodesic.push_back(r.rotation_geodesic);
-      unobserved.push_back(r.translation_unobserved);
       row.hidden_translation.push_back(r.translation_unobserved);
       row.hidden_rotation.push_back(r.rotation_unobserved);
       row.visible_translation.push_back(r.translation_visible);
@@ -128,7 +127,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
     }
     std::printf("%-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
                 cell(mean_std(translation)).c_str(), cell(mean_std(paper)).c_str(),
-                cell(mean_std(geodesic)).c_str(), cell(mean_std(unobserved)).c_str());
+                cell(mean_std(geodesic)).c_str(), cell(mean_std(row.hidden_translation)).c_str());
     std::fflush(stdout);
     rows.push_back(std::move(row));
   }

@@ -16,9 +16,10 @@ void require_size(const Eigen::VectorXd& sigma, std::size_t count) {
     throw std::invalid_argument("predict_random_walk: one spread per particle needed");
 }
 
-// Translation rows: x[r n + i] += s_i n_ri, chunk by chunk. `sigma` per particle or null.
-void add_noise(TranslationParticles& particles, double sigma, const double* per_particle,
-               GaussianSampler& noise) {
+// Translation rows: x[r n + i] += s n_ri, chunk by chunk, with s = row_sigma(r), or the
+// particle's own spread per_particle[i] when that is given.
+void add_noise(TranslationParticles& particles, const Eigen::Vector3d& row_sigma,
+               const double* per_particle, GaussianSampler& noise) {
   const std::size_t n = particles.size();
   alignas(64) std::array<float, kChunk> block;
   for (std::size_t r = 0; r < 3; ++r) {
@@ -30,23 +31,8 @@ void add_noise(TranslationParticles& particles, double sigma, const double* per_
         kernels::add_scaled_noise_per_particle(row + begin, block.data(), per_particle + begin,
                                                count);
       else
-        kernels::add_scaled_noise(row + begin, block.data(), sigma, count);
-    }
-  }
-}
-
-// The same with one spread per row (world axis).
-void add_axis_noise(TranslationParticles& particles, const Eigen::Vector3d& sigma,
-                    GaussianSampler& noise) {
-  const std::size_t n = particles.size();
-  alignas(64) std::array<float, kChunk> block;
-  for (std::size_t r = 0; r < 3; ++r) {
-    double* row = particles.states.data() + r * n;
-    for (std::size_t begin = 0; begin < n; begin += kChunk) {
-      const std::size_t count = std::min(kChunk, n - begin);
-      noise.fill({block.data(), count});
-      kernels::add_scaled_noise(row + begin, block.data(), sigma(static_cast<Eigen::Index>(r)),
-                                count);
+        kernels::add_scaled_noise(row + begin, block.data(),
+                                  row_sigma(static_cast<Eigen::Index>(r)), count);
     }
   }
 }
@@ -66,7 +52,7 @@ void perturb(RotationParticles& particles, double sigma, const double* per_parti
 }  // namespace
 
 void predict_random_walk(TranslationParticles& particles, double sigma, GaussianSampler& noise) {
-  add_noise(particles, sigma, nullptr, noise);
+  add_noise(particles, Eigen::Vector3d::Constant(sigma), nullptr, noise);
 }
 
 void predict_random_walk(RotationParticles& particles, double sigma, GaussianSampler& noise) {
@@ -76,7 +62,7 @@ void predict_random_walk(RotationParticles& particles, double sigma, GaussianSam
 void predict_random_walk(TranslationParticles& particles, const Eigen::VectorXd& sigma,
                          GaussianSampler& noise) {
   require_size(sigma, particles.size());
-  add_noise(particles, 0.0, sigma.data(), noise);
+  add_noise(particles, Eigen::Vector3d::Zero(), sigma.data(), noise);
 }
 
 void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& sigma,
@@ -87,7 +73,7 @@ void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& si
 
 void predict_random_walk_per_axis(TranslationParticles& particles, const Eigen::Vector3d& sigma,
                                   GaussianSampler& noise) {
-  add_axis_noise(particles, sigma, noise);
+  add_noise(particles, sigma, nullptr, noise);
 }
 
 void scatter_around(TranslationParticles& particles, const Eigen::Vector3d& centre, double sigma,

@@ -41,6 +41,15 @@ std::string packaged_file(const std::string& name) {
   return found;
 }
 
+/// box.mp4 from package opencv-doc, decompressed into `dir` when it is shipped gzipped; empty
+/// when the package does not have it (or it cannot be decompressed).
+std::string box_mp4(const fs::path& dir) {
+  const std::string packaged = packaged_file("box.mp4");
+  if (packaged.empty() || !packaged.ends_with(".gz")) return packaged;
+  const std::string video = (dir / "box.mp4").string();
+  return std::system(("gunzip -c '" + packaged + "' > '" + video + "'").c_str()) == 0 ? video : "";
+}
+
 /// Six 320x240 frames: a yellow rectangle 60x30 px at (100 + 10k, 120) turned by 20 degrees,
 /// missing from frame 3.
 void write_frames(const fs::path& dir) {
@@ -57,14 +66,9 @@ void write_frames(const fs::path& dir) {
 }
 
 TEST_F(OpfProgram, DetectFindsTheBoxInTheFirstSecondOfBoxMp4) {
-  const std::string packaged = packaged_file("box.mp4");
-  ASSERT_FALSE(packaged.empty())
+  const std::string video = box_mp4(dir_);
+  ASSERT_FALSE(video.empty())
       << "box.mp4 not found in package opencv-doc: apt-get install opencv-doc";
-  std::string video = packaged;
-  if (packaged.ends_with(".gz")) {
-    video = (dir_ / "box.mp4").string();
-    ASSERT_EQ(std::system(("gunzip -c '" + packaged + "' > '" + video + "'").c_str()), 0);
-  }
   const fs::path log_path = dir_ / "box.csv";
   ASSERT_EQ(run("detect --video " + video + " --objects " + kRealVideo + "box.yaml --out " +
                 log_path.string() + " --frames 30"),
@@ -113,14 +117,9 @@ TEST_F(OpfProgram, DetectFindsTheBoxInTheFirstSecondOfBoxMp4) {
 // / spread is low on two short gaps: the cloud at onset, set by the 1 cm observation noise Q,
 // dominates; over the whole clip it is 0.3-0.4, see README.)
 TEST_F(OpfProgram, DetectDropoutEvaluatePipelineOnBoxMp4) {
-  const std::string packaged = packaged_file("box.mp4");
-  ASSERT_FALSE(packaged.empty())
+  const std::string video = box_mp4(dir_);
+  ASSERT_FALSE(video.empty())
       << "box.mp4 not found in package opencv-doc: apt-get install opencv-doc";
-  std::string video = packaged;
-  if (packaged.ends_with(".gz")) {
-    video = (dir_ / "box.mp4").string();
-    ASSERT_EQ(std::system(("gunzip -c '" + packaged + "' > '" + video + "'").c_str()), 0);
-  }
   const std::string full = (dir_ / "box.csv").string();
   const std::string dropped = (dir_ / "box_0.6.csv").string();
   ASSERT_EQ(run("detect --video " + video + " --objects " + kRealVideo + "box.yaml --out " + full +

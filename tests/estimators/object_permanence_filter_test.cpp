@@ -386,7 +386,7 @@ TEST(ObjectPermanenceFilter, RotatingObjectIsExtrapolatedAboutItsAxis) {
 }
 
 // --- Scene 4: a ballistic throw at 100 Hz with the motion capture off for 0.5 s
-TEST(ObjectPermanenceFilter, PaperPredictorFollowsABallisticThrowWithASecondOrderFit) {
+Scene ballistic_throw_scene() {
   const Eigen::Vector3d p0(0.0, 0.0, 1.0), v0(2.0, 0.5, 3.0), g(0, 0, -9.81);
   Scene scene;
   scene.rate = 100.0;
@@ -395,6 +395,11 @@ TEST(ObjectPermanenceFilter, PaperPredictorFollowsABallisticThrowWithASecondOrde
   scene.objects.push_back({"baseball", [=](double t) { return p0 + v0 * t + 0.5 * g * t * t; },
                            [](double) { return Eigen::Quaterniond::Identity(); },
                            [](int k) { return k < 50 || k >= 100; }});
+  return scene;
+}
+
+TEST(ObjectPermanenceFilter, PaperPredictorFollowsABallisticThrowWithASecondOrderFit) {
+  const Scene scene = ballistic_throw_scene();
   OpfOptions options;
   // A fast object: 3 cm per frame. A wide random walk keeps the prior on it; 5 mm observation
   // noise keeps enough particles near each measurement.
@@ -412,14 +417,7 @@ TEST(ObjectPermanenceFilter, PaperPredictorFollowsABallisticThrowWithASecondOrde
 }
 
 TEST(ObjectPermanenceFilter, DefaultPredictorFindsTheBallisticThrowWithoutAnOrderSetting) {
-  const Eigen::Vector3d p0(0.0, 0.0, 1.0), v0(2.0, 0.5, 3.0), g(0, 0, -9.81);
-  Scene scene;
-  scene.rate = 100.0;
-  scene.frames = 110;
-  scene.noise_translation = 0.001;
-  scene.objects.push_back({"baseball", [=](double t) { return p0 + v0 * t + 0.5 * g * t * t; },
-                           [](double) { return Eigen::Quaterniond::Identity(); },
-                           [](int k) { return k < 50 || k >= 100; }});
+  const Scene scene = ballistic_throw_scene();
   OpfOptions options;
   options.particles.process_noise_translation = 0.2;
   options.particles.observation_noise_translation = 0.005;
