@@ -196,6 +196,15 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
     options.occluder.camera_position = Eigen::Vector3d(camera[0], camera[1], camera[2]);
   occluder.get("keep_offset", options.occluder.keep_offset);
   occluder.get("keep_depth", options.occluder.keep_depth);
+  occluder.get("gate", options.occluder.gate);
+  occluder.get("reach", options.occluder.reach);
+  occluder.require("reach", options.occluder.reach >= 0.0 && std::isfinite(options.occluder.reach),
+                   "metres >= 0");
+  occluder.get("gate_sigmas", options.occluder.gate_sigmas);
+  occluder.require(
+      "gate_sigmas",
+      options.occluder.gate_sigmas >= 0.0 && std::isfinite(options.occluder.gate_sigmas),
+      "a number >= 0");
 
   YamlReader& uncertainty = yaml.child("uncertainty");
   uncertainty.get("kappa", options.uncertainty.kappa);

@@ -37,6 +37,9 @@ void validate(const OpfOptions& options) {
     throw std::invalid_argument("OPF motion thresholds must be >= 0");
   if (!(options.occluder.epsilon_occ >= 0.0))
     throw std::invalid_argument("OPF option occluder.epsilon_occ must be >= 0");
+  if (!(options.occluder.reach >= 0.0) || !std::isfinite(options.occluder.reach) ||
+      !(options.occluder.gate_sigmas >= 0.0) || !std::isfinite(options.occluder.gate_sigmas))
+    throw std::invalid_argument("OPF options occluder.reach and occluder.gate_sigmas must be >= 0");
   if (!(options.feedback.epsilon_safe > 0.0))
     throw std::invalid_argument("OPF option feedback.epsilon_safe must be > 0");
   if (options.trajectory.translation_order < 0 || options.trajectory.translation_order > 5 ||
@@ -328,9 +331,9 @@ ObjectPermanenceFilter::virtual_measurement(Hypothesis& h, double t, const Ensem
     if (options_.occluder.keep_offset) {
       z.position += onset_offset;
     } else if (options_.occluder.keep_depth) {
-      // Only the offset's component along the line of sight to the hidden object.
-      const Eigen::MatrixXd across = occlusion_plane_projection(z.position, options_.occluder);
-      z.position += onset_offset - across.transpose() * (across * onset_offset);
+      // Only the offset's vertical component: the object keeps its own height.
+      const Eigen::Vector3d up = options_.dynamics.selection.up.normalized();
+      z.position += up * up.dot(onset_offset);
     }
     z.orientation = (carried * h.orientation_at_onset).normalized();
     const mrpt::poses::CPose3D& carrier =

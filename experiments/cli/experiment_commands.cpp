@@ -65,9 +65,13 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
                          " frames"};
       config.frames = static_cast<int>(*frames);
     }
-    const EstimatorSettings settings = settings_from(
+    EstimatorSettings settings = settings_from(
         args, config.estimator_config.empty() ? EstimatorSettings{}
                                               : load_estimator_settings(config.estimator_config));
+    // The occluder module's line of sight starts at the experiment's camera, unless the settings
+    // place one themselves.
+    if (!settings.opf.occluder.camera_position)
+      settings.opf.occluder.camera_position = config.camera.position;
     if (config.closed_loop) {
       all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
                                                  threads, first_seed));

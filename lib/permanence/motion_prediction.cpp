@@ -306,9 +306,11 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
 // every candidate's validation errors carry alike (they are against measurements): without the
 // subtraction, noise-dominated scores would weigh a good model and a noise-fitting one evenly.
 // The excess is floored at a tenth of the noise. An exact candidate (zero error) takes it all.
-template <class Scored>
+// A candidate marked `all_or_nothing` (free flight: an object flies or it does not) gets no weight
+// unless it is the best: a few percent of gravity would drop a resting object 0.4 m in 1.5 s.
+template <class Scored, class AllOrNothing>
 std::vector<double> inverse_error_weights(const std::vector<Scored>& candidates, int axis,
-                                          double noise) {
+                                          double noise, AllOrNothing all_or_nothing) {
   std::vector<double> excess(candidates.size());
   double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < candidates.size(); ++i) {
@@ -322,6 +324,7 @@ std::vector<double> inverse_error_weights(const std::vector<Scored>& candidates,
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     // Relative to the smallest, so an exact fit (excess 0) is a clean 1 and the rest 0.
     weights[i] = smallest > 0.0 ? smallest / excess[i] : (excess[i] == 0.0 ? 1.0 : 0.0);
+    if (all_or_nothing(candidates[i]) && excess[i] > smallest) weights[i] = 0.0;
     total += weights[i];
   }
   for (double& w : weights) w /= total;
@@ -525,7 +528,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     auto& candidates = scored[static_cast<std::size_t>(axis)];
     if (candidates.empty()) return std::nullopt;
     const std::vector<double> weights =
-        inverse_error_weights(candidates, axis, position_noise(axis));
+        inverse_error_weights(candidates, axis, position_noise(axis),
+                              [](const Scored& m) { return m.candidate.ballistic; });
     auto& fits = prediction.translation[static_cast<std::size_t>(axis)];
     Validation combined = candidates.front().validation;
     for (auto& e : combined.errors) e.setZero();
@@ -599,7 +603,7 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   }
   if (rotation_scored.empty()) return std::nullopt;
   const std::vector<double> rotation_weights =
-      inverse_error_weights(rotation_scored, -1, rotation_noise);
+      inverse_error_weights(rotation_scored, -1, rotation_noise, [](const auto&) { return false; });
   Validation combined = rotation_scored.front().validation;
   for (auto& e : combined.errors) e.setZero();
   const double noise = rotation_noise;

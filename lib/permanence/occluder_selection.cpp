@@ -2,7 +2,10 @@
 
 #include "permanence/bhattacharyya.h"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
+
+#include <algorithm>
 
 #include <cmath>
 #include <limits>
@@ -10,14 +13,22 @@
 
 namespace opf {
 
-Eigen::MatrixXd occlusion_plane_projection(const Eigen::Vector3d& hidden_mean,
-                                           const OccluderOptions& options) {
-  if (options.plane == OccluderPlane::k3D) return Eigen::Matrix3d::Identity();
+std::optional<Eigen::Vector3d> line_of_sight(const Eigen::Vector3d& hidden_mean,
+                                             const OccluderOptions& options) {
+  if (options.plane == OccluderPlane::k3D) return std::nullopt;
   Eigen::Vector3d ray(0, 0, -1);
   if (options.plane == OccluderPlane::kLineOfSight && options.camera_position) {
     const Eigen::Vector3d to_object = hidden_mean - *options.camera_position;
     if (to_object.norm() > 1e-9) ray = to_object.normalized();
   }
+  return ray;
+}
+
+Eigen::MatrixXd occlusion_plane_projection(const Eigen::Vector3d& hidden_mean,
+                                           const OccluderOptions& options) {
+  const std::optional<Eigen::Vector3d> sight = line_of_sight(hidden_mean, options);
+  if (!sight) return Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d ray = *sight;
   // An orthonormal basis of the plane perpendicular to the ray; for the top-down ray it is x, y.
   Eigen::Vector3d u = ray.unitOrthogonal();
   if (std::abs(ray.z()) > 0.999) u = Eigen::Vector3d::UnitX();
@@ -35,17 +46,43 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
                                 const OccluderOptions& options) {
   OccluderChoice choice;
   choice.second_distance = std::numeric_limits<double>::infinity();
-  if (candidates.empty()) return choice;
+  if (candidates.empty() || !hidden_mean.allFinite() || !hidden_covariance.allFinite())
+    return choice;
   const Eigen::MatrixXd p = occlusion_plane_projection(hidden_mean, options);
   const Eigen::VectorXd hidden_mu = p * hidden_mean;
   const Eigen::MatrixXd hidden_sigma = p * hidden_covariance * p.transpose();
 
-  std::size_t best = 0, runner_up = 0;
+  const std::optional<Eigen::Vector3d> ray = line_of_sight(hidden_mean, options);
+
+  std::size_t best = 0, runner_up = 0, plausible = 0;
   double best_d = std::numeric_limits<double>::infinity();
   double runner_up_d = std::numeric_limits<double>::infinity();
   for (std::size_t j = 0; j < candidates.size(); ++j) {
-    const double d = bhattacharyya_distance(hidden_mu, hidden_sigma, p * candidates[j].mean,
-                                            p * candidates[j].covariance * p.transpose());
+    const OccluderCandidate& c = candidates[j];
+    if (!c.mean.allFinite() || !c.covariance.allFinite()) continue;
+    const Eigen::MatrixXd sigma = p * c.covariance * p.transpose();
+    if (options.gate) {
+      const Eigen::Vector3d offset = c.mean - hidden_mean;
+      const double spread =
+          std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+                                      hidden_sigma + sigma, Eigen::EigenvaluesOnly)
+                                      .eigenvalues()
+                                      .maxCoeff()));
+      const bool across = (p * offset).norm() <= options.reach + options.gate_sigmas * spread;
+      const bool in_front = !ray || offset.dot(*ray) <= options.reach;
+      if (!across || !in_front) {
+        ++choice.implausible;
+        continue;
+      }
+    }
+    double d = std::numeric_limits<double>::infinity();
+    try {
+      d = bhattacharyya_distance(hidden_mu, hidden_sigma, p * c.mean, sigma);
+    } catch (const std::invalid_argument&) {
+      continue;  // a degenerate cloud (zero or non-finite spread): not a usable occluder
+    }
+    if (!std::isfinite(d)) continue;
+    ++plausible;
     if (d < best_d) {
       runner_up = best;
       runner_up_d = best_d;
@@ -56,11 +93,11 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
       runner_up_d = d;
     }
   }
+  if (plausible == 0) return choice;
   choice.nearest = best;
   choice.nearest_distance = best_d;
   choice.second_distance = runner_up_d;
-  if (candidates.size() > 1 && runner_up_d - best_d <= options.epsilon_occ)
-    choice.second = runner_up;
+  if (plausible > 1 && runner_up_d - best_d <= options.epsilon_occ) choice.second = runner_up;
   return choice;
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 namespace opf {
@@ -77,10 +78,56 @@ TEST(OccluderSelection, ObliqueLineOfSightProjectsAlongTheRay) {
 
 TEST(OccluderSelection, NoCandidateNoOccluderOneCandidateIsIt) {
   EXPECT_FALSE(choose_occluders({0, 0, 0}, kCloud, {}, OccluderOptions{}).nearest);
-  const std::vector<OccluderCandidate> one = {at("only", 5.0, 5.0, 0.0)};
+  const std::vector<OccluderCandidate> one = {at("only", 0.1, 0.05, 0.1)};
   const auto choice = choose_occluders({0, 0, 0}, kCloud, one, OccluderOptions{});
   EXPECT_EQ(choice.nearest, 0u);
   EXPECT_FALSE(choice.ambiguous());
+}
+
+// The gate: 1 cm clouds, so the reach across the line of sight is 0.15 + 3 sqrt(2e-4) = 0.192 m.
+TEST(OccluderSelection, TheGateTurnsAwayACandidateTooFarToHideTheObject) {
+  const std::vector<OccluderCandidate> hand = {at("hand", 0.28, 0.0, 0.1)};
+  const auto gated = choose_occluders({0, 0, 0}, kCloud, hand, OccluderOptions{});
+  EXPECT_FALSE(gated.nearest);
+  EXPECT_EQ(gated.implausible, 1u);
+  // The paper's rule: the nearest candidate, however far.
+  OccluderOptions paper;
+  paper.gate = false;
+  EXPECT_EQ(choose_occluders({0, 0, 0}, kCloud, hand, paper).nearest, 0u);
+  // Just inside and just outside the reach.
+  EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, {{at("in", 0.19, 0.0, 0.1)}}, {}).nearest);
+  EXPECT_FALSE(choose_occluders({0, 0, 0}, kCloud, {{at("out", 0.195, 0.0, 0.1)}}, {}).nearest);
+  // A wide cloud widens the gate: 5 cm per axis adds 3 * sqrt(2.5e-3 + 1e-4) = 0.153 m.
+  const Eigen::Matrix3d wide = Eigen::Matrix3d::Identity() * 2.5e-3;
+  EXPECT_TRUE(choose_occluders({0, 0, 0}, wide, hand, {}).nearest);
+}
+
+TEST(OccluderSelection, TheGateLeavesOutACandidateBehindTheObjectAndKeepsThePlausibleOne) {
+  // Top-down: the table-level mug 5 cm beside the ball can hide it only if it is not below it.
+  const std::vector<OccluderCandidate> candidates = {at("below", 0.0, 0.05, -0.2),
+                                                     at("above", 0.0, -0.08, 0.2)};
+  const auto choice = choose_occluders({0, 0, 0}, kCloud, candidates, OccluderOptions{});
+  ASSERT_TRUE(choice.nearest);
+  EXPECT_EQ(candidates[*choice.nearest].object, "above");
+  EXPECT_EQ(choice.implausible, 1u);
+  EXPECT_FALSE(choice.ambiguous());
+}
+
+TEST(OccluderSelection, DegenerateOrNonFiniteCandidatesArePassedOverWithoutThrowing) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<OccluderCandidate> candidates = {
+      {"nan_mean", Eigen::Vector3d(nan, 0, 0), kCloud},
+      {"inf_cov", Eigen::Vector3d(0.01, 0, 0.1),
+       Eigen::Matrix3d::Identity() * std::numeric_limits<double>::infinity()},
+      {"negative_cov", Eigen::Vector3d(0.02, 0, 0.1), -Eigen::Matrix3d::Identity()},
+      at("good", 0.05, 0.0, 0.1)};
+  OccluderChoice choice;
+  ASSERT_NO_THROW(choice = choose_occluders({0, 0, 0}, kCloud, candidates, OccluderOptions{}));
+  ASSERT_TRUE(choice.nearest);
+  EXPECT_EQ(candidates[*choice.nearest].object, "good");
+  EXPECT_FALSE(choice.ambiguous());
+  // A hidden object with a broken estimate has no occluder (and no exception either).
+  EXPECT_FALSE(choose_occluders({nan, 0, 0}, kCloud, candidates, OccluderOptions{}).nearest);
 }
 
 }  // namespace
