@@ -28,11 +28,9 @@ struct OccluderOptions {
   /// Follow the occluder horizontally and keep the hidden object's own height: its vertical
   /// offset from the occluder at onset (vertical: the dynamics module's `up`). An object covered
   /// or carried from above lies under its occluder, not at its height: the mug under the hand
-  /// hovering over it stays on the table (sugar_drop 0.020 m against 0.031 m with the paper's
-  /// rule; general_op 0.0068 against 0.0113 m). Along the camera's oblique ray instead, as a
-  /// depth, it does worse on every bundled scene (sugar_drop 0.030 m, general_op 0.0092 m,
-  /// cups_game 0.059 against 0.040 m): the carried ball's offset from its cup is vertical, not
-  /// along the ray. Implied by keep_offset. false: the paper's rule (the occluder's position is
+  /// hovering over it stays on the table (docs/occluder.md: sugar_drop 0.020 m against 0.033 m
+  /// with the paper's rule). Along the camera's oblique ray instead it does worse on every
+  /// bundled scene: a carried ball's offset from its cup is vertical, not along the ray. Implied by keep_offset. false: the paper's rule (the occluder's position is
   /// the hidden object's).
   bool keep_depth = true;
   /// The plausibility gate: a candidate can hide the object only if it is near it across the
