@@ -158,6 +158,7 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
 
   yaml.get("velocity_drift", options.velocity_drift);
   yaml.get_positive("velocity_window", options.velocity_window);
+  yaml.get_positive("hold_after", options.hold_after);
   read_dynamics(yaml.child("dynamics"), options.dynamics);
 
   YamlReader& motion = yaml.child("motion_thresholds");

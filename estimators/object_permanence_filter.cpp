@@ -47,6 +47,8 @@ void validate(const OpfOptions& options) {
     throw std::invalid_argument("OPF trajectory polynomial orders must be in [0, 5]");
   if (!(options.velocity_window > 0.0) || !std::isfinite(options.velocity_window))
     throw std::invalid_argument("OPF option velocity_window must be a positive number of s");
+  if (!(options.hold_after > 0.0) || std::isnan(options.hold_after))
+    throw std::invalid_argument("OPF option hold_after must be a positive number of s");
   validate(options.dynamics.selection);
 }
 
@@ -272,13 +274,17 @@ void ObjectPermanenceFilter::follow_prediction(Hypothesis& h, double t_previous,
   const MotionPrediction& p = *h.prediction;
   const double h0 = t_previous - p.t_last;
   const double h1 = t - p.t_last;
-  h.filter.shift(p.position(h1) - p.position(h0),
-                 (p.orientation(h1) * p.orientation(h0).conjugate()).normalized());
   // The spread stops growing where Q~ reaches the uncertainty module's cap, as Q~ itself does.
   const double q = h.filter.observation_trace(1.0);
   const double cap = (options_.uncertainty.max_scale - 1.0) * q;
   const double trace = p.translation_variance(h1).sum() + 3.0 * p.rotation_variance(h1);
   const bool capped = trace >= cap;
+  // Bounded: after hold_after s, or once capped, the object is held where the prediction left it.
+  if (!capped && h0 < options_.hold_after) {
+    const double until = std::min(h1, options_.hold_after);
+    h.filter.shift(p.position(until) - p.position(h0),
+                   (p.orientation(until) * p.orientation(h0).conjugate()).normalized());
+  }
   if (!capped) {
     const Eigen::Vector3d translation_growth =
         (p.translation_variance(h1) - p.translation_variance(h0)).cwiseMax(0.0);

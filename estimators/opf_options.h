@@ -59,6 +59,11 @@ struct OpfOptions {
   /// is followed without lag. false: the paper's pure random walk.
   bool velocity_drift = true;
   double velocity_window = 0.3;  ///< s
+  /// s hidden after which the dynamics module's prediction stops moving the object and holds it,
+  /// its uncertainty still growing (a bounded hidden state: no extrapolation runs off for ever;
+  /// the bundled scenes extrapolate correctly for up to 3 s, under the sugar-dropping hand). The
+  /// prediction also holds once its spread reaches the uncertainty module's cap.
+  double hold_after = 4.0;
   DynamicsOptions dynamics;
   MotionThresholds motion;
   TrajectoryFitOptions trajectory;

@@ -67,6 +67,10 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.opf.occluder.camera_position.has_value(), d.opf.occluder.camera_position.has_value());
   EXPECT_EQ(s.opf.occluder.keep_offset, d.opf.occluder.keep_offset);
   EXPECT_EQ(s.opf.occluder.keep_depth, d.opf.occluder.keep_depth);
+  EXPECT_EQ(s.opf.occluder.gate, d.opf.occluder.gate);
+  EXPECT_EQ(s.opf.occluder.reach, d.opf.occluder.reach);
+  EXPECT_EQ(s.opf.occluder.gate_sigmas, d.opf.occluder.gate_sigmas);
+  EXPECT_EQ(s.opf.hold_after, d.opf.hold_after);
   EXPECT_EQ(s.opf.uncertainty.kappa, d.opf.uncertainty.kappa);
   EXPECT_EQ(s.opf.uncertainty.reference_speed, d.opf.uncertainty.reference_speed);
   EXPECT_EQ(s.opf.uncertainty.reference_period, d.opf.uncertainty.reference_period);
@@ -145,8 +149,10 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
       "  motion_thresholds: {translation: 0.02, rotation: 0.25}\n"
       "  trajectory: {translation_order: 2, rotation_order: 0, loss: cauchy,\n"
       "               translation_loss_scale: 0.03, rotation_loss_scale: 0.1, max_iterations: 20}\n"
+      "  hold_after: 2.5\n"
       "  occluder: {epsilon_occ: 0.5, plane: xy, camera_position: [0.55, 0, 0.8], keep_offset: "
-      "true}\n"
+      "true,\n"
+      "             keep_depth: false, gate: false, reach: 0.3, gate_sigmas: 2}\n"
       "  uncertainty: {kappa: 1.1, reference_speed: 0.2, reference_period: 0.01,\n"
       "                speed_window: 0.5, max_scale: 100}\n"
       "  feedback: {epsilon_safe: 0.5}\n",
@@ -169,6 +175,11 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
   ASSERT_TRUE(o.occluder.camera_position.has_value());
   EXPECT_EQ(*o.occluder.camera_position, Eigen::Vector3d(0.55, 0, 0.8));
   EXPECT_TRUE(o.occluder.keep_offset);
+  EXPECT_FALSE(o.occluder.keep_depth);
+  EXPECT_FALSE(o.occluder.gate);
+  EXPECT_EQ(o.occluder.reach, 0.3);
+  EXPECT_EQ(o.occluder.gate_sigmas, 2.0);
+  EXPECT_EQ(o.hold_after, 2.5);
   EXPECT_EQ(o.uncertainty.kappa, 1.1);
   EXPECT_EQ(o.uncertainty.reference_speed, 0.2);
   EXPECT_EQ(o.uncertainty.reference_period, 0.01);
@@ -270,6 +281,9 @@ TEST(EstimatorSettingsYaml, OutOfRangeValuesAreRejected) {
            Case{"opf:\n  occluder: {plane: yz}\n", "opf.occluder.plane", 2},
            Case{"opf:\n  occluder: {camera_position: [1, 2]}\n", "opf.occluder.camera_position", 2},
            Case{"opf:\n  occluder: {epsilon_occ: -0.1}\n", "opf.occluder.epsilon_occ", 2},
+           Case{"opf:\n  occluder: {reach: -0.1}\n", "opf.occluder.reach", 2},
+           Case{"opf:\n  occluder:\n    gate_sigmas: -1\n", "opf.occluder.gate_sigmas", 3},
+           Case{"opf:\n  hold_after: 0\n", "opf.hold_after", 2},
        }) {
     const InputError e = error_of(c.yaml);
     EXPECT_EQ(e.field(), c.field) << c.yaml;

@@ -372,6 +372,32 @@ TEST(ObjectPermanenceFilter, RollingBallComesOutWhereTheLinePredicts) {
   EXPECT_GT(error_at(pf, scene, "ball", 89), 0.18);
 }
 
+// Bounded hidden state: the ball hidden from frame 60 (t = 2 s) is extrapolated for hold_after =
+// 0.5 s, to y = -0.3 + 0.2 * 2.467 = 0.193 (0.5 s past the last measurement at 1.967 s), and
+// then held there, its spread still growing. The held mean moves only by the spread's noise:
+// 5000 particles diffused by a few cm move their mean well under 1 mm per frame.
+TEST(ObjectPermanenceFilter, APredictedObjectIsHeldAfterHoldAfter) {
+  const Scene scene = rolling_ball_scene();
+  OpfOptions options;
+  options.hold_after = 0.5;
+  const SceneRun opf = run(scene, opf_factory(options));
+  const auto y_at = [&](int k) {
+    return translation_of(opf.estimates[k].at("ball").pose.mean).y();
+  };
+  const double held_from = 59 + 0.5 * 30;  // frame 74
+  EXPECT_NEAR(y_at(74), -0.3 + 0.2 * held_from / 30.0, 0.006);
+  for (int k = 75; k < 90; ++k) {
+    ASSERT_EQ(opf.estimates[k].at("ball").mode, EstimateMode::kDynamics) << k;
+    EXPECT_NEAR(y_at(k), y_at(74), 0.003) << k;
+    EXPECT_GT(opf.estimates[k].at("ball").observation_trace,
+              opf.estimates[k - 1].at("ball").observation_trace)
+        << k;
+  }
+  // With the default (4 s) the same gap is extrapolated to the end: 15 frames further, 0.1 m.
+  const SceneRun free = run(scene, opf_factory(OpfOptions{}));
+  EXPECT_GT(translation_of(free.estimates[89].at("ball").pose.mean).y() - y_at(89), 0.09);
+}
+
 // Hidden twice with a three-frame glimpse between: the dynamics module carried the ball through
 // the first gap, so its history of 50 estimates still describes its motion and the second gap
 // is extrapolated from it. A fit restarted on the three glimpsed samples (2 mm noise, 0.07 s
