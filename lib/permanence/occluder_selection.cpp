@@ -6,7 +6,6 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
-
 #include <cmath>
 #include <limits>
 #include <vector>

@@ -30,8 +30,8 @@ struct OccluderOptions {
   /// or carried from above lies under its occluder, not at its height: the mug under the hand
   /// hovering over it stays on the table (docs/occluder.md: sugar_drop 0.020 m against 0.033 m
   /// with the paper's rule). Along the camera's oblique ray instead it does worse on every
-  /// bundled scene: a carried ball's offset from its cup is vertical, not along the ray. Implied by keep_offset. false: the paper's rule (the occluder's position is
-  /// the hidden object's).
+  /// bundled scene: a carried ball's offset from its cup is vertical, not along the ray. Implied
+  /// by keep_offset. false: the paper's rule (the occluder's position is the hidden object's).
   bool keep_depth = true;
   /// The plausibility gate: a candidate can hide the object only if it is near it across the
   /// line of sight (within `reach` plus `gate_sigmas` standard deviations of the two estimates'
