@@ -123,6 +123,10 @@ void read_dynamics(YamlReader& yaml, DynamicsOptions& options) {
     }
   }
   yaml.get_positive("validation_horizon", selection.validation_horizon);
+  yaml.get("validation_memory", selection.validation_memory);
+  yaml.require("validation_memory",
+               selection.validation_memory >= 0.0 && std::isfinite(selection.validation_memory),
+               "seconds >= 0 (0: every validation origin alike)");
   yaml.get("ballistic", selection.ballistic);
   yaml.get("constant_acceleration", selection.constant_acceleration);
   yaml.get("gravity", selection.gravity);

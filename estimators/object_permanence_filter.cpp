@@ -64,6 +64,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
                            CovarianceInflation(options_.uncertainty));
   hypotheses_[0].filter.initialise(translation_of(first), orientation_of(first));
   history_.clear();
+  confirmed_motion_.reset();
   t_ = t;
   hidden_ = false;
   initialised_ = true;
@@ -118,6 +119,10 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     Hypothesis& h = hypotheses_[0];
     const Source hidden_by = h.source;
     const bool lost = h.filter.update_with_measurement(position, orientation);
+    if (h.filter.translation_was_reset())
+      confirmed_motion_.reset();
+    else if (h.prediction)
+      confirmed_motion_ = std::move(h.prediction);
     const ResampleReport report = h.filter.normalise_and_resample();
     h.recovery = {.sensor_reset = lost, .weights_underflow = report.weights_underflow()};
     h.inflation.reset();
@@ -242,6 +247,20 @@ std::vector<TrajectorySample> ObjectPermanenceFilter::estimate_history() const {
 }
 
 bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
+  // Seen again only briefly since the dynamics module last carried it, where that prediction
+  // said: the motion goes on. (Its history before that gap has aged out of the window, and a
+  // glimpse of a few frames would read as static, handing a moving object to its occluder.)
+  const bool brief =
+      history_.size() < 4 || history_.back().t - history_.front().t < options_.velocity_window;
+  if (brief && confirmed_motion_ && !history_.empty()) {
+    const MotionSample& last = history_.back();
+    h.prediction =
+        continued(*confirmed_motion_, last.t, last.estimated_position, last.estimated_orientation);
+    h.prediction_trace = 0.0;
+    h.source = Source::kTrajectory;
+    return true;
+  }
+  confirmed_motion_.reset();
   // Moving or static is decided as with the paper's predictor (the motion test over the
   // history), so a static object still goes to the occluder module.
   const std::vector<TrajectorySample> window = estimate_history();

@@ -89,6 +89,9 @@ class ObjectPermanenceFilter final : public Estimator {
   std::uint64_t spawned_ = 0;
   std::vector<Hypothesis> hypotheses_;  ///< [0] is the object's main estimate
   std::deque<MotionSample> history_;    ///< measured frames: measurement and estimate
+  /// The dynamics module's last prediction, kept when the object was seen again where it said
+  /// (no translation reset): a glimpse too brief to fit anything new continues it.
+  std::optional<MotionPrediction> confirmed_motion_;
   double t_ = 0.0;
   double hidden_since_ = 0.0;
   bool hidden_ = false;

@@ -98,6 +98,12 @@ struct Validation {
   }
 };
 
+// The weight of a validation origin `age` seconds before the last sample: recent origins tell
+// more about the motion the object is in now than older ones (a discounted score).
+double discount(double age, double memory) {
+  return memory > 0.0 ? std::exp(-age / memory) : 1.0;
+}
+
 // The share of the way from the anchor to the fit's track after h seconds.
 double settled(double h, double settle_time) {
   if (!(h > 0.0)) return 0.0;
@@ -133,9 +139,10 @@ Validation validate_translation(std::span<const MotionSample> history, const Ser
           anchor + fit.value(s.t[i]) - fit.value(t_o) +
           (candidate.order >= 1 ? settled(s.t[i] - t_o, options.settle_time) : 0.0) * offset;
       const Eigen::Vector3d error = predicted - s.position.col(static_cast<Eigen::Index>(i));
-      v.squared_error += error.squaredNorm();
-      v.axis_squared_error += error.cwiseAbs2();
-      v.count += 1.0;
+      const double w = discount(s.t.back() - t_o, options.validation_memory);
+      v.squared_error += w * error.squaredNorm();
+      v.axis_squared_error += w * error.cwiseAbs2();
+      v.count += w;
       v.horizons.push_back(s.t[i] - t_o);
       v.errors.push_back(error);
     }
@@ -167,8 +174,9 @@ Validation validate_rotation(std::span<const MotionSample> history, const Series
           so3::exp(fit.value(s.t[i]) - at_origin);
       const Eigen::Vector3d error =
           so3::difference(history[i].measured_orientation.normalized(), predicted);
-      v.squared_error += error.squaredNorm();
-      v.count += 1.0;
+      const double w = discount(s.t.back() - t_o, options.validation_memory);
+      v.squared_error += w * error.squaredNorm();
+      v.count += w;
       v.horizons.push_back(s.t[i] - t_o);
       v.errors.push_back(error);
     }
@@ -372,6 +380,18 @@ std::string_view to_string(RotationModel model) {
   return model == RotationModel::kConstantOrientation ? "co" : "cw";
 }
 
+MotionPrediction continued(const MotionPrediction& prediction, double t_last,
+                           const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) {
+  MotionPrediction p = prediction;
+  p.t_last = t_last;
+  p.anchor_position = position;
+  p.anchor_orientation = orientation.normalized();
+  for (auto& axis : p.translation)
+    for (WeightedFit& m : axis) m.settles = false;
+  for (WeightedFit& m : p.rotation) m.settles = false;
+  return p;
+}
+
 std::string describe(const MotionPrediction& prediction) {
   std::string text;
   for (const TranslationModel model : prediction.translation_models)
@@ -399,6 +419,8 @@ void validate(const MotionPredictionOptions& options) {
   if (!(options.settle_time >= 0.0) || !(options.onset_guard >= 0.0) ||
       !std::isfinite(options.settle_time) || !std::isfinite(options.onset_guard))
     throw std::invalid_argument("dynamics options settle_time and onset_guard must be >= 0");
+  if (!(options.validation_memory >= 0.0) || !std::isfinite(options.validation_memory))
+    throw std::invalid_argument("dynamics option validation_memory must be >= 0 s");
   if (options.robust_iterations < 0 || options.robust_iterations > 20)
     throw std::invalid_argument("dynamics option robust_iterations must be in [0, 20]");
 }

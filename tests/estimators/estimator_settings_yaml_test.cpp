@@ -188,6 +188,49 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
   EXPECT_EQ(o.feedback.epsilon_safe, 0.5);
 }
 
+TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
+  const EstimatorSettings s = parse_estimator_settings(
+      "opf:\n"
+      "  velocity_drift: false\n"
+      "  velocity_window: 0.5\n"
+      "  dynamics:\n"
+      "    predictor: paper\n"
+      "    history_window: 3.0\n"
+      "    fit_windows: [0.1, 0.3]\n"
+      "    validation_horizon: 0.4\n"
+      "    validation_memory: 0\n"
+      "    ballistic: false\n"
+      "    constant_acceleration: false\n"
+      "    gravity: 9.8\n"
+      "    up: [0, 1, 0]\n"
+      "    uncertainty_scale: 2.0\n"
+      "    settle_time: 0.1\n"
+      "    onset_guard: 0.05\n"
+      "    robust_iterations: 0\n",
+      "settings.yaml");
+  const OpfOptions& o = s.opf;
+  EXPECT_FALSE(o.velocity_drift);
+  EXPECT_EQ(o.velocity_window, 0.5);
+  EXPECT_EQ(o.dynamics.predictor, DynamicsPredictor::kPaper);
+  const MotionPredictionOptions& m = o.dynamics.selection;
+  EXPECT_EQ(m.history_window, 3.0);
+  EXPECT_EQ(m.fit_windows, (std::vector<double>{0.1, 0.3}));
+  EXPECT_EQ(m.validation_horizon, 0.4);
+  EXPECT_EQ(m.validation_memory, 0.0);
+  EXPECT_FALSE(m.ballistic);
+  EXPECT_FALSE(m.constant_acceleration);
+  EXPECT_EQ(m.gravity, 9.8);
+  EXPECT_EQ(m.up, Eigen::Vector3d(0, 1, 0));
+  EXPECT_EQ(m.uncertainty_scale, 2.0);
+  EXPECT_EQ(m.settle_time, 0.1);
+  EXPECT_EQ(m.onset_guard, 0.05);
+  EXPECT_EQ(m.robust_iterations, 0);
+  const EstimatorSettings d;
+  EXPECT_EQ(d.opf.dynamics.selection.validation_memory, 0.5);
+  EXPECT_EQ(error_of("opf:\n  dynamics:\n    validation_memory: -1\n").field(),
+            "opf.dynamics.validation_memory");
+}
+
 TEST(EstimatorSettingsYaml, ParticleOptionsAreSharedNotPerEstimator) {
   // One `pf:` section configures the particle filter of pf, opf and oapf alike; a per-estimator
   // `particles:` key would let paired comparisons drift apart silently, so it is unknown.
