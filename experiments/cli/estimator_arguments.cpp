@@ -1,15 +1,26 @@
 #include "estimator_arguments.h"
 
+#include "cli/presets.h"
 #include "estimators/estimator_settings_yaml.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
 #include <thread>
+#include <vector>
 
 namespace opf::cli {
 
 std::vector<OptionSpec> estimator_option_specs() {
   return {
+      {"preset", "NAME",
+       "default (the toolkit's best settings) or paper (the paper's literal rules, "
+       "experiments/configs/paper.yaml); --config is applied on top"},
       {"config", "FILE.yaml", "estimator options (see experiments/configs/estimators.yaml)"},
+      {"camera", "X,Y,Z",
+       "the camera's position in the world frame (m): the occluder module's line of sight runs "
+       "from it (default: straight down; experiments pass their own)"},
       {"particles", "N", "particles per portion (translation and rotation); default 5000"},
       {"seed", "S", "seed of every random draw; the same seed gives identical output (default 1)"},
       {"threads", "N",
@@ -20,7 +31,28 @@ std::vector<OptionSpec> estimator_option_specs() {
 
 EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base) {
   EstimatorSettings settings = base;
+  if (const auto preset = args.get("preset")) {
+    if (*preset == "paper")
+      settings = parse_estimator_settings(kPaperPresetYaml, "preset paper", settings);
+    else if (*preset != "default")
+      throw UsageError{"option '--preset': expected default or paper, got \"" + *preset + "\""};
+  }
   if (const auto path = args.get("config")) settings = load_estimator_settings(*path, settings);
+  if (const auto camera = args.get("camera")) {
+    const std::vector<std::string> parts = split_list(*camera);
+    Eigen::Vector3d position;
+    bool ok = parts.size() == 3;
+    for (std::size_t i = 0; ok && i < 3; ++i) {
+      char* end = nullptr;
+      position(static_cast<Eigen::Index>(i)) = std::strtod(parts[i].c_str(), &end);
+      ok = end != parts[i].c_str() && *end == '\0' &&
+           std::isfinite(position(static_cast<Eigen::Index>(i)));
+    }
+    if (!ok)
+      throw UsageError{"option '--camera': expected three numbers X,Y,Z in metres, got \"" +
+                       *camera + "\""};
+    settings.opf.occluder.camera_position = position;
+  }
   if (const auto particles = args.get_count("particles")) {
     if (*particles == 0) throw UsageError{"option '--particles' must be at least 1"};
     settings.pf.translation_particles = settings.pf.rotation_particles = *particles;

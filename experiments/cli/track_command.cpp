@@ -48,6 +48,12 @@ int track_command(const std::vector<std::string>& raw) {
   const EstimatorSettings settings = settings_from(args);
 
   const MeasurementLog log = read_measurement_log(in);
+  const OccluderOptions& occluder = settings.opf.occluder;
+  if (estimator == "opf" && log.objects.size() > 1 && settings.opf.modules.occluder &&
+      occluder.plane == OccluderPlane::kLineOfSight && !occluder.camera_position)
+    std::cerr << "opf track: warning: no camera position (--camera X,Y,Z, or "
+                 "opf.occluder.camera_position): the occluder module takes the line of sight as "
+                 "straight down (-z)\n";
   Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args), threads_from(args));
   std::size_t rows = 0;
   write_file_atomically(out, [&](std::ostream& os) {

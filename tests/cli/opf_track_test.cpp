@@ -130,6 +130,40 @@ TEST_F(OpfProgram, SameSeedGivesByteIdenticalOutputDifferentSeedDoesNot) {
   }
 }
 
+// --preset paper is experiments/configs/paper.yaml, embedded in the program: the same output as
+// passing the file, and not the defaults'.
+TEST_F(OpfProgram, ThePaperPresetIsThePaperSettingsFile) {
+  const std::string track =
+      "track --in " + kData + "example_log.csv --particles 500 --seed 2 --out ";
+  ASSERT_EQ(run(track + (dir_ / "preset.csv").string() + " --preset paper"), 0) << err();
+  ASSERT_EQ(run(track + (dir_ / "file.csv").string() + " --config " + std::string(OPF_SOURCE_DIR) +
+                "/experiments/configs/paper.yaml"),
+            0)
+      << err();
+  ASSERT_EQ(run(track + (dir_ / "default.csv").string() + " --preset default"), 0) << err();
+  const std::string preset = read(dir_ / "preset.csv");
+  EXPECT_FALSE(preset.empty());
+  EXPECT_EQ(preset, read(dir_ / "file.csv"));
+  EXPECT_NE(preset, read(dir_ / "default.csv"));
+  EXPECT_EQ(run(track + (dir_ / "bad.csv").string() + " --preset literal"), 2);
+  EXPECT_NE(err().find("expected default or paper, got \"literal\""), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(dir_ / "bad.csv"));
+}
+
+TEST_F(OpfProgram, TrackTakesTheCameraAndWarnsWithoutOne) {
+  const std::string track =
+      "track --in " + kData + "example_log.csv --particles 500 --seed 2 --out ";
+  // Two objects, the OPF, the line of sight, no camera: a warning that says what is assumed.
+  ASSERT_EQ(run(track + (dir_ / "down.csv").string()), 0) << err();
+  EXPECT_NE(err().find("warning: no camera position"), std::string::npos) << err();
+  ASSERT_EQ(run(track + (dir_ / "above.csv").string() + " --camera 0.4,0,0.8"), 0) << err();
+  EXPECT_EQ(err().find("warning"), std::string::npos) << err();
+  for (const char* bad : {"1,2", "1,2,x", "1,2,3,4", "1,2,inf"}) {
+    EXPECT_EQ(run(track + (dir_ / "bad.csv").string() + " --camera " + bad), 2) << bad;
+    EXPECT_NE(err().find("expected three numbers X,Y,Z"), std::string::npos) << err();
+  }
+}
+
 TEST_F(OpfProgram, EverySubcommandHasHelp) {
   // Each command's help names its own options: the estimator-running ones take --seed.
   for (const auto& [command, option] :
