@@ -168,6 +168,53 @@ TEST(ObjectPermanenceFilter, KeepDepthFollowsTheMugHorizontallyAndKeepsTheBallsH
   EXPECT_LT(std::abs(translation_of(opf.estimates[149].at("ball").pose.mean).z()), 0.004);
 }
 
+// A ball under a mug (3 cm below its centre) is carried along a quarter circle of radius 0.3 m
+// in 3 s while the mug turns 90 degrees with its path; the ball turns with it. The OPF keeps the
+// ball's own height and follows the mug horizontally, and turns the ball's orientation by the
+// mug's turn since onset.
+TEST(ObjectPermanenceFilter, ABallCarriedByATurningMugFollowsItsPositionAndTurn) {
+  const Eigen::Vector3d centre(0.4, 0.0, 0.0);
+  const auto heading = [](double t) { return 0.5 * M_PI * std::clamp((t - 1.0) / 3.0, 0.0, 1.0); };
+  const auto mug = [&](double t) {
+    const double a = heading(t);
+    return Eigen::Vector3d(centre.x() + 0.3 * std::sin(a), centre.y() + 0.3 * (1.0 - std::cos(a)),
+                           0.03);
+  };
+  const auto turn = [&](double t) {
+    return Eigen::Quaterniond(Eigen::AngleAxisd(heading(t), Eigen::Vector3d::UnitZ()));
+  };
+  Scene scene;
+  scene.frames = 150;  // 5 s: still for 1 s, carried for 3 s, then at rest
+  scene.objects.push_back({"ball",
+                           [&](double t) {
+                             const Eigen::Vector3d m = mug(t);
+                             return Eigen::Vector3d(m.x(), m.y(), 0.0);
+                           },
+                           turn, [](int k) { return k < 25 || k >= 140; }});
+  scene.objects.push_back({"mug", mug, turn});
+  const SceneRun opf = run(scene, opf_factory(OpfOptions{}));
+  double worst = 0.0, worst_rotation = 0.0;
+  for (int k = 25; k < 140; ++k) {
+    ASSERT_EQ(opf.estimates[k].at("ball").mode, EstimateMode::kOccluder) << k;
+    worst = std::max(worst, error_at(opf, scene, "ball", k));
+    worst_rotation = std::max(
+        worst_rotation,
+        so3::angle_between(orientation_of(opf.estimates[k].at("ball").pose.mean), turn(opf.t[k])));
+  }
+  // The particles are shifted by the mug's estimate a frame old (5.2 mm behind at 0.157 m/s) and
+  // pulled towards its detection only partly under Q~; with the noise, under 12 mm (8.2 here),
+  // the horizontal offset at onset being dropped with the height kept. The turn
+  // is read from two raw mug detections (0.01 rad per axis each) applied to the ball's estimate
+  // at onset: ~0.03 rad, 0.06 rad over the worst of 115 frames (0.037 here).
+  EXPECT_LT(worst, 0.012);
+  EXPECT_LT(worst_rotation, 0.06);
+  // The paper's rule carries the ball at the mug's centre, 3 cm above it.
+  OpfOptions paper;
+  paper.occluder.keep_depth = false;
+  const SceneRun literal = run(scene, opf_factory(paper));
+  EXPECT_GT(error_at(literal, scene, "ball", 130), 0.025);
+}
+
 TEST(ObjectPermanenceFilter, OccluderModuleOffLeavesTheBallBehindLikeThePf) {
   const Scene scene = carried_ball_scene();
   OpfOptions options;
