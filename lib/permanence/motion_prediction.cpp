@@ -667,29 +667,51 @@ std::optional<RecentVelocity> recent_velocity(const std::deque<MotionSample>& hi
   if (history.size() < 3) return std::nullopt;
   const MotionSample& last = history.back();
   const Eigen::Quaterniond last_inverse = last.measured_orientation.normalized().conjugate();
-  // Least-squares slopes about the window's mean time, in one pass over the samples in it.
+  // Six channels per sample: the position and the rotation vector relative to the last sample.
+  using Channels = Eigen::Matrix<double, 6, 1>;
+  const auto channels = [&](const MotionSample& s) {
+    Channels c;
+    c << s.measured_position - last.measured_position,
+        so3::log(last_inverse * s.measured_orientation.normalized());
+    return c;
+  };
+  // Least-squares slopes about the window's mean time.
   double st = 0.0, stt = 0.0;
-  Eigen::Vector3d sp = Eigen::Vector3d::Zero(), stp = Eigen::Vector3d::Zero();
-  Eigen::Vector3d sr = Eigen::Vector3d::Zero(), str = Eigen::Vector3d::Zero();
+  Channels sc = Channels::Zero(), stc = Channels::Zero();
   std::size_t n = 0;
   for (auto it = history.rbegin(); it != history.rend() && last.t - it->t <= window; ++it, ++n) {
     const double tau = it->t - last.t;
-    const Eigen::Vector3d p = it->measured_position - last.measured_position;
-    const Eigen::Vector3d r = so3::log(last_inverse * it->measured_orientation.normalized());
+    const Channels c = channels(*it);
     st += tau;
     stt += tau * tau;
-    sp += p;
-    stp += tau * p;
-    sr += r;
-    str += tau * r;
+    sc += c;
+    stc += tau * c;
   }
   if (n < 3) return std::nullopt;
   const double count = static_cast<double>(n);
   const double denominator = stt - st * st / count;
   if (!(denominator > 0.0)) return std::nullopt;
+  const Channels slope = (stc - st * sc / count) / denominator;
+  const Channels intercept = (sc - slope * st) / count;
+  // A slope buried in the measurement noise would only carry that noise into the particles: each
+  // channel's slope is shrunk by v^2 / (v^2 + se^2), its squared standard error from the
+  // residuals about the line (a Wiener gain), so a clear motion drifts in full and jitter not.
+  Channels residual_squares = Channels::Zero();
+  std::size_t k = 0;
+  for (auto it = history.rbegin(); k < n; ++it, ++k) {
+    const double tau = it->t - last.t;
+    residual_squares += (channels(*it) - intercept - slope * tau).cwiseAbs2();
+  }
+  const Channels slope_variance = residual_squares / ((count - 2.0) * denominator);
+  const Channels slope_squared = slope.cwiseAbs2();
+  Channels gain = Channels::Ones();
+  for (int i = 0; i < 6; ++i)
+    if (slope_squared[i] + slope_variance[i] > 0.0)
+      gain[i] = slope_squared[i] / (slope_squared[i] + slope_variance[i]);
+  const Channels shrunk = slope.cwiseProduct(gain);
   RecentVelocity v;
-  v.linear = (stp - st * sp / count) / denominator;
-  v.angular = (str - st * sr / count) / denominator;
+  v.linear = shrunk.head<3>();
+  v.angular = shrunk.tail<3>();
   return v;
 }
 

@@ -200,6 +200,48 @@ TEST(MotionPrediction, RecentVelocityIsTheSlopeOfTheLastWindow) {
   EXPECT_LT((velocity->angular - 2.7 * axis).norm(), 1e-6);
 }
 
+// The drift's velocity is shrunk by v^2 / (v^2 + se^2). A still object measured at 10 Hz with
+// 14 mm of noise (depth from apparent size): the least-squares slope of 4 samples is noise, its
+// squared standard error estimated from 2 residual degrees of freedom; the shrunk slope's mean
+// magnitude is 0.61 of the raw slope's (Monte Carlo of this estimator, 40 000 draws). A clear
+// motion, 0.5 m/s with 2 mm noise at 30 Hz, keeps its speed (se/v = 1.3%: gain 0.9998).
+TEST(MotionPrediction, RecentVelocityShrinksASlopeBuriedInNoise) {
+  double raw_sum = 0.0, drift_sum = 0.0;
+  for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+    const auto samples = history(10.0, 0.3, [](double) { return Eigen::Vector3d(0.3, 0.2, 1.0); },
+                                 still, 0.014, 0.0, seed);
+    const std::deque<MotionSample> recent(samples.begin(), samples.end());
+    const auto velocity = recent_velocity(recent, 0.3);
+    ASSERT_TRUE(velocity);
+    // The raw least-squares slope of the same samples, per axis.
+    double tm = 0.0;
+    for (const auto& s : samples) tm += s.t / 4.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      double pm = 0.0, stt = 0.0, stp = 0.0;
+      for (const auto& s : samples) pm += s.measured_position[axis] / 4.0;
+      for (const auto& s : samples) {
+        stt += (s.t - tm) * (s.t - tm);
+        stp += (s.t - tm) * (s.measured_position[axis] - pm);
+      }
+      raw_sum += std::abs(stp / stt);
+      drift_sum += std::abs(velocity->linear[axis]);
+    }
+  }
+  EXPECT_GT(drift_sum / raw_sum, 0.52);
+  EXPECT_LT(drift_sum / raw_sum, 0.70);
+
+  double speed_sum = 0.0;
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const auto samples = history(
+        30.0, 0.3, [](double t) { return Eigen::Vector3d(0.5 * t, 0.0, 0.0); }, still, 0.002, 0.0,
+        seed);
+    const auto velocity = recent_velocity({samples.begin(), samples.end()}, 0.3);
+    ASSERT_TRUE(velocity);
+    speed_sum += velocity->linear.x();
+  }
+  EXPECT_NEAR(speed_sum / 50.0, 0.5, 0.005);
+}
+
 TEST(MotionPrediction, OptionsOutOfRangeAreRefused) {
   MotionPredictionOptions options;
   options.fit_windows = {};
