@@ -201,6 +201,12 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
     options.occluder.camera_position = Eigen::Vector3d(camera[0], camera[1], camera[2]);
   occluder.get("keep_offset", options.occluder.keep_offset);
   occluder.get("keep_depth", options.occluder.keep_depth);
+  occluder.get("carry_from_departure", options.occluder.carry_from_departure);
+  occluder.get("departure_margin", options.occluder.departure_margin);
+  occluder.require(
+      "departure_margin",
+      options.occluder.departure_margin >= 0.0 && std::isfinite(options.occluder.departure_margin),
+      "metres >= 0");
   occluder.get("gate", options.occluder.gate);
   occluder.get("reach", options.occluder.reach);
   occluder.require("reach", options.occluder.reach >= 0.0 && std::isfinite(options.occluder.reach),

@@ -40,6 +40,9 @@ void validate(const OpfOptions& options) {
   if (!(options.occluder.reach >= 0.0) || !std::isfinite(options.occluder.reach) ||
       !(options.occluder.gate_sigmas >= 0.0) || !std::isfinite(options.occluder.gate_sigmas))
     throw std::invalid_argument("OPF options occluder.reach and occluder.gate_sigmas must be >= 0");
+  if (!(options.occluder.departure_margin >= 0.0) ||
+      !std::isfinite(options.occluder.departure_margin))
+    throw std::invalid_argument("OPF option occluder.departure_margin must be >= 0 m");
   if (!(options.feedback.epsilon_safe > 0.0))
     throw std::invalid_argument("OPF option feedback.epsilon_safe must be > 0");
   if (options.trajectory.translation_order < 0 || options.trajectory.translation_order > 5 ||
@@ -162,8 +165,14 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     }
     h.filter.predict(dt);
     const auto virtual_z = virtual_measurement(h, t, ensemble);
-    if (virtual_z && options_.carry_particles)
-      h.filter.shift(virtual_z->carrier_translation, virtual_z->carrier_rotation);
+    if (virtual_z && options_.carry_particles) {
+      // Carried at an offset, the object turns about its carrier; otherwise it moves with it.
+      if (h.source == Source::kOccluder && h.at_offset)
+        h.filter.carry(virtual_z->carrier_from, virtual_z->carrier_to, virtual_z->carrier_rotation);
+      else
+        h.filter.shift(virtual_z->carrier_to - virtual_z->carrier_from,
+                       virtual_z->carrier_rotation);
+    }
     // Without the uncertainty module Q~ stays Q; with it Q~ grows every hidden step, also when no
     // module supplies a virtual measurement, so the feedback module still sees the time hidden.
     if (options_.modules.uncertainty) h.inflation.step(virtual_z ? virtual_z->speed : 0.0, dt);
@@ -314,21 +323,52 @@ void ObjectPermanenceFilter::follow_prediction(Hypothesis& h, double t_previous,
   h.recovery = {.trace_capped = capped && options_.modules.uncertainty};
 }
 
+namespace {
+
+// The occluder's pose as the carry reads it: its position from its measurement this frame when
+// it has one (its estimate is a frame old and lags a moving occluder), its orientation from its
+// filtered estimate when it has one (a single detection's rotation noise would bias the whole
+// carry).
+struct CarrierPose {
+  Eigen::Vector3d position;
+  Eigen::Quaterniond orientation;
+};
+
+CarrierPose carrier_pose(const Detection* detection, const Estimate* estimate) {
+  const mrpt::poses::CPose3D& for_position = detection ? detection->pose : estimate->pose.mean;
+  const mrpt::poses::CPose3D& for_orientation = estimate ? estimate->pose.mean : detection->pose;
+  return {translation_of(for_position), orientation_of(for_orientation).normalized()};
+}
+
+double horizontal_distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                           const Eigen::Vector3d& up) {
+  const Eigen::Vector3d d = a - b;
+  return (d - up * up.dot(d)).norm();
+}
+
+}  // namespace
+
 void ObjectPermanenceFilter::follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
                                              const Estimate& occluder_estimate,
                                              const EnsembleView& ensemble) const {
   hypothesis.source = Source::kOccluder;
   hypothesis.occluder = occluder;
-  // The offset is taken against what the virtual measurements will be: the occluder's
-  // measurement this frame when it has one (its estimate is a frame old and lags a moving
-  // occluder), else its estimate.
-  const Detection* detection = ensemble.frame.find(occluder);
-  const mrpt::poses::CPose3D& reference = detection ? detection->pose : occluder_estimate.pose.mean;
-  hypothesis.occluder_position_at_onset = translation_of(reference);
-  hypothesis.occluder_orientation_at_onset = orientation_of(reference);
-  hypothesis.last_carrier_position = translation_of(occluder_estimate.pose.mean);
-  hypothesis.last_carrier_orientation = orientation_of(occluder_estimate.pose.mean);
+  const CarrierPose reference = carrier_pose(ensemble.frame.find(occluder), &occluder_estimate);
+  hypothesis.occluder_position_at_onset = reference.position;
+  hypothesis.occluder_orientation_at_onset = reference.orientation;
+  hypothesis.last_carrier_position = reference.position;
+  hypothesis.last_carrier_orientation = reference.orientation;
   hypothesis.carrier_track.clear();
+  // A cover at the object's level (a cup slid over a ball) moves it only by pushing it: it waits
+  // for the occluder's departure. One above it (a hand, a lifted tray) is followed from onset.
+  const Eigen::Vector3d up = options_.dynamics.selection.up.normalized();
+  const bool level = std::abs(up.dot(reference.position - hypothesis.position_at_onset)) <=
+                     options_.occluder.reach;
+  const bool wait = options_.occluder.carry_from_departure && level;
+  hypothesis.carrying = !wait;
+  hypothesis.at_offset = options_.occluder.keep_offset || wait;
+  hypothesis.closest_distance =
+      horizontal_distance(reference.position, hypothesis.position_at_onset, up);
 }
 
 std::optional<ObjectPermanenceFilter::VirtualMeasurement>
@@ -336,53 +376,77 @@ ObjectPermanenceFilter::virtual_measurement(Hypothesis& h, double t, const Ensem
   VirtualMeasurement z;
   Eigen::Vector3d carrier_position;
   Eigen::Quaterniond carrier_orientation;
+  Eigen::Vector3d speed_position;
   if (h.source == Source::kTrajectory) {
     z.position = carrier_position = h.trajectory->position(t);
     z.orientation = carrier_orientation = h.trajectory->orientation(t);
   } else if (h.source == Source::kOccluder) {
     // The occluder's measurement this frame (the paper's y_k^j), or its estimate when it is
-    // hidden itself (a chain of occlusions). The carrier is its filtered estimate, so a still
-    // occluder reads as still rather than jittering with its measurement noise.
+    // hidden itself (a chain of occlusions).
     const Estimate* occluder_estimate = find_estimate(ensemble, h.occluder);
     const Detection* occluder_detection = ensemble.frame.find(h.occluder);
     if (!occluder_estimate && !occluder_detection) return std::nullopt;
-    const mrpt::poses::CPose3D& occluder_pose =
-        occluder_detection ? occluder_detection->pose : occluder_estimate->pose.mean;
+    const CarrierPose occluder = carrier_pose(occluder_detection, occluder_estimate);
+    const Eigen::Vector3d up = options_.dynamics.selection.up.normalized();
+    if (!h.carrying) {
+      // Still closing in over the object: it stays where it was covered, and the carry will
+      // start from the occluder's closest approach. Read from its measurements: its filtered
+      // estimate lags a cup closing in and overshoots where it stops short.
+      const double d = horizontal_distance(occluder.position, h.position_at_onset, up);
+      if (d <= h.closest_distance) {
+        h.closest_distance = d;
+        h.occluder_position_at_onset = occluder.position;
+        h.occluder_orientation_at_onset = occluder.orientation;
+        h.last_carrier_position = occluder.position;
+        h.last_carrier_orientation = occluder.orientation;
+      }
+      // Departed: further from the object than at the closest approach, and moved off that
+      // place by the margin (tangentially too: a cup that stopped beside the ball and drags it
+      // sideways barely changes its distance).
+      const bool receding = d > h.closest_distance;
+      const bool moved = horizontal_distance(occluder.position, h.occluder_position_at_onset, up) >
+                         options_.occluder.departure_margin;
+      if (!receding || !moved) return std::nullopt;
+      h.carrying = true;
+    }
     const Eigen::Quaterniond carried =
-        orientation_of(occluder_pose) * h.occluder_orientation_at_onset.conjugate();
-    z.position = translation_of(occluder_pose);
+        occluder.orientation * h.occluder_orientation_at_onset.conjugate();
+    z.position = occluder.position;
     const Eigen::Vector3d onset_offset =
         carried * (h.position_at_onset - h.occluder_position_at_onset);
-    if (options_.occluder.keep_offset) {
+    if (h.at_offset) {
       z.position += onset_offset;
     } else if (options_.occluder.keep_depth) {
       // Only the offset's vertical component: the object keeps its own height.
-      const Eigen::Vector3d up = options_.dynamics.selection.up.normalized();
       z.position += up * up.dot(onset_offset);
     }
     z.orientation = (carried * h.orientation_at_onset).normalized();
-    const mrpt::poses::CPose3D& carrier =
-        occluder_estimate ? occluder_estimate->pose.mean : occluder_detection->pose;
-    carrier_position = translation_of(carrier);
-    carrier_orientation = orientation_of(carrier);
+    carrier_position = occluder.position;
+    carrier_orientation = occluder.orientation;
+    // Its speed for the uncertainty module from the filtered estimate: a still occluder reads
+    // as still rather than jittering with its measurement noise.
+    speed_position =
+        occluder_estimate ? translation_of(occluder_estimate->pose.mean) : occluder.position;
   } else {
     return std::nullopt;
   }
   if (h.last_carrier_position) {
-    z.carrier_translation = carrier_position - *h.last_carrier_position;
-    z.carrier_rotation = carrier_orientation * h.last_carrier_orientation.conjugate();
+    z.carrier_from = *h.last_carrier_position;
+    z.carrier_to = carrier_position;
+    z.carrier_rotation =
+        (carrier_orientation * h.last_carrier_orientation.conjugate()).normalized();
   }
   if (h.source == Source::kTrajectory) {
     z.speed = h.trajectory->velocity(t).norm();
   } else {
-    h.carrier_track.emplace_back(t, carrier_position);
+    h.carrier_track.emplace_back(t, speed_position);
     while (h.carrier_track.size() > 2 &&
            t - h.carrier_track[1].first >= options_.uncertainty.speed_window)
       h.carrier_track.pop_front();
     // Divided by at least the window: right after onset the baseline is a frame or two, and a
     // still occluder's jitter over one frame would read as speed.
     const auto& [t0, p0] = h.carrier_track.front();
-    z.speed = (carrier_position - p0).norm() /
+    z.speed = (speed_position - p0).norm() /
               std::max(t - t0, std::max(options_.uncertainty.speed_window, 1e-9));
   }
   h.last_carrier_position = carrier_position;

@@ -44,12 +44,19 @@ class ObjectPermanenceFilter final : public Estimator {
     // trace of the prediction's covariance at this step (added to Q for Q~).
     double prediction_trace = 0.0;
     std::string occluder;
-    // The occluder's pose and this object's pose at occlusion onset: the hidden object is carried
-    // rigidly with the occluder's rotation (and, with keep_offset, at its initial offset).
+    // The occluder's pose when the carry starts (at onset, or at its closest approach with
+    // carry_from_departure) and this object's pose at onset: the hidden object is carried
+    // rigidly with the occluder's rotation since then (and, with keep_offset, at that offset).
     Eigen::Vector3d occluder_position_at_onset = Eigen::Vector3d::Zero();
     Eigen::Quaterniond occluder_orientation_at_onset = Eigen::Quaterniond::Identity();
     Eigen::Vector3d position_at_onset = Eigen::Vector3d::Zero();
     Eigen::Quaterniond orientation_at_onset = Eigen::Quaterniond::Identity();
+    // carry_from_departure: false while the occluder closes in; its closest horizontal distance.
+    bool carrying = true;
+    double closest_distance = 0.0;
+    // Carried at its whole offset from the occluder (keep_offset, or a cover at its level that
+    // waited for its departure), turned with it.
+    bool at_offset = false;
     // The carrier's pose at the previous step (the trajectory's, or the occluder's estimate).
     std::optional<Eigen::Vector3d> last_carrier_position;
     Eigen::Quaterniond last_carrier_orientation = Eigen::Quaterniond::Identity();
@@ -63,8 +70,10 @@ class ObjectPermanenceFilter final : public Estimator {
     Eigen::Vector3d position;
     Eigen::Quaterniond orientation;
     double speed = 0.0;  ///< m/s of the carrier, for the uncertainty module
-    // The motion the carrier made since the previous step (world frame), for carry_particles.
-    Eigen::Vector3d carrier_translation = Eigen::Vector3d::Zero();
+    // The motion the carrier made since the previous step (world frame), for carry_particles:
+    // from `carrier_from` to `carrier_to`, turning by `carrier_rotation` about it.
+    Eigen::Vector3d carrier_from = Eigen::Vector3d::Zero();
+    Eigen::Vector3d carrier_to = Eigen::Vector3d::Zero();
     Eigen::Quaterniond carrier_rotation = Eigen::Quaterniond::Identity();
   };
 

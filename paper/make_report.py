@@ -145,7 +145,7 @@ SWEEPS = [("kappa", "opf.uncertainty.kappa", r"$\kappa$"),
           ("epsilon_occ", "opf.occluder.epsilon_occ", r"$\epsilon_{occ}$"),
           ("trajectory_order", "opf.trajectory.translation_order", "fit order"),
           ("occluder_plane", "opf.occluder.plane", "occluder plane"),
-          ("occluder_offset", "opf.occluder.keep_offset", "keep offset"),
+          ("occluder_offset", "variant", "carry rule"),
           ("resampler", "pf.resampling.scheme", "resampler")]
 
 

@@ -9,6 +9,10 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$repo/scripts/setup.sh"
 "$repo/build/bin/opf" reproduce --out "$repo/results" "$@"
 echo
+# The tie (two equally likely occluders, one hypothesis each): hypothesis rows and a top view.
+"$repo/build/bin/opf" run "$repo/experiments/twin_mugs.yaml" --estimators opf,pf,cvkf \
+  --out "$repo/results/twin_mugs" "$@"
+echo
 OPF="$repo/build/bin/opf" bash "$repo/experiments/real_video/run_real_video.sh" \
   "$repo/results/real_video"
 cat "$repo/results/real_video/table.md"

@@ -30,7 +30,8 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
   if (!config.closed_loop)
     throw std::invalid_argument("run_closed_loop: not a closed-loop experiment");
   const sim::ClosedLoopSettings& loop = *config.closed_loop;
-  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}, first_seed};
+  ExperimentResults results{config.name, estimators, seeds,      {},
+                            {},          {},         first_seed, config.objects_of_interest};
   // One renderer for all runs: MRPT allows one off-screen renderer per process at a time.
   sim::CameraSensor sensor(camera_of(config));
   const double dt = 1.0 / config.rate;
@@ -111,6 +112,10 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
             drop.landed = drop.miss_distance < target.size.x() - payload.size.x() / 2.0;
           }
         }
+        // Further hypotheses are recorded, not scored (the main hypothesis drives the robot).
+        for (const Estimate& extra : tracker.hypotheses())
+          results.records.push_back(
+              {k, name, s, truth.poses[scene.index_of(extra.object)], extra, false});
         robot += robot_velocity * dt;
       }
       results.runs[name].push_back(errors.result());

@@ -28,7 +28,8 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
                                 std::size_t threads, std::size_t first_seed) {
   if (observation.truth.size() != observation.camera.size())
     throw std::invalid_argument("run_open_loop: truth and camera frames differ in number");
-  ExperimentResults results{config.name, estimators, seeds, {}, {}, {}, first_seed};
+  ExperimentResults results{config.name, estimators, seeds,      {},
+                            {},          {},         first_seed, config.objects_of_interest};
 
   for (std::size_t s = first_seed; s < first_seed + seeds; ++s) {
     // The seed's measurement stream, shared by every estimator (paired comparison).
@@ -45,17 +46,23 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
       ErrorAccumulator errors;
       for (std::size_t k = 0; k < frames.size(); ++k) {
         const sim::SceneSnapshot& truth = observation.truth[k];
-        for (const Estimate& estimate : tracker.step(frames[k])) {
-          std::size_t body = truth.bodies.size();
+        const auto truth_of = [&](const std::string& object) -> const sim::BodyPose& {
           for (std::size_t i = 0; i < truth.bodies.size(); ++i)
-            if (truth.bodies[i].name == estimate.object) body = i;
-          if (body == truth.bodies.size())
-            throw std::logic_error("run_open_loop: estimate of an unknown body " + estimate.object);
-          const sim::BodyPose& pose = truth.poses[body];
+            if (truth.bodies[i].name == object) return truth.poses[i];
+          throw std::logic_error("run_open_loop: estimate of an unknown body " + object);
+        };
+        for (const Estimate& estimate : tracker.step(frames[k])) {
+          const sim::BodyPose& pose = truth_of(estimate.object);
           if (config.is_of_interest(estimate.object))
             errors.add(estimate, make_pose(pose.position, pose.orientation));
           results.records.push_back({static_cast<int>(k), name, s, pose, estimate,
                                      frames[k].find(estimate.object) != nullptr});
+        }
+        // Further hypotheses (two equally likely occluders) are recorded, not scored: the
+        // error is the main hypothesis's, as the tracker reports it.
+        for (const Estimate& extra : tracker.hypotheses()) {
+          results.records.push_back(
+              {static_cast<int>(k), name, s, truth_of(extra.object), extra, false});
         }
       }
       results.runs[name].push_back(errors.result());

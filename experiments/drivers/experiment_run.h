@@ -58,6 +58,7 @@ struct ExperimentResults {
   /// Closed-loop experiments only: per estimator, one outcome per seed.
   std::map<std::string, std::vector<DropOutcome>> drops;
   std::size_t first_seed = 0;  ///< the seed index of runs[...][0] (see run_open_loop)
+  std::vector<std::string> objects_of_interest;  ///< the bodies `runs` are scored over
 };
 
 /// Called before each (estimator, seed) run: a line for the progress display.

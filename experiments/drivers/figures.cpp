@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <stdexcept>
@@ -82,6 +83,50 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
           std::pair{&trace, "trace"}}) {
       written.push_back(dir / (config.name + "_" + object + "_" + name + ".png"));
       write_line_chart(written.back(), *chart);
+    }
+  }
+
+  // Where an estimator followed more than one hypothesis (two equally likely occluders): a top
+  // view of each hypothesis's track beside the truth's, from the first seed.
+  for (const std::string& object : config.objects_of_interest) {
+    for (const std::string& estimator : results.estimators) {
+      std::map<int, ChartSeries> tracks;
+      ChartSeries truth{"truth", {}, {}, 0, 0, 0};
+      for (const FrameRecord& record : results.records) {
+        if (record.seed_index != results.first_seed || record.estimator != estimator ||
+            record.estimate.object != object)
+          continue;
+        const int h = record.estimate.hypothesis;
+        if (!tracks.count(h)) {
+          // The main hypothesis in the estimator's colour, the others in grey shades.
+          const auto [r, g, b] = colour_of(estimator);
+          const auto shade = static_cast<std::uint8_t>(std::min(200, 60 + 50 * h));
+          tracks[h] = h == 0
+                          ? ChartSeries{"main", {}, {}, r, g, b}
+                          : ChartSeries{"hyp. " + std::to_string(h), {}, {}, shade, shade, shade};
+        }
+        const Eigen::Vector3d p = translation_of(record.estimate.pose.mean);
+        tracks[h].x.push_back(p.x());
+        tracks[h].y.push_back(p.y());
+        if (h == 0) {
+          truth.x.push_back(record.truth.position.x());
+          truth.y.push_back(record.truth.position.y());
+        }
+      }
+      if (tracks.size() < 2) continue;
+      LineChart top{config.name + ": " + object + ", " + estimator +
+                        " hypotheses, top view (seed " + std::to_string(results.first_seed + 1) +
+                        ")",
+                    "x [m]",
+                    "y [m]",
+                    {},
+                    false,
+                    900,
+                    560};
+      top.series.push_back(std::move(truth));
+      for (auto& [h, series] : tracks) top.series.push_back(std::move(series));
+      written.push_back(dir / (config.name + "_" + object + "_" + estimator + "_hypotheses.png"));
+      write_line_chart(written.back(), top);
     }
   }
 

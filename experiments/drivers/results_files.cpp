@@ -5,9 +5,11 @@
 #include "io/atomic_file.h"
 #include "io/csv.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <string>
+#include <tuple>
 
 namespace opf::experiments {
 namespace {
@@ -131,6 +133,46 @@ std::map<std::string, std::size_t> dynamics_model_counts(const std::vector<Frame
   return counts;
 }
 
+HypothesisStats hypothesis_stats(const ExperimentResults& results, const std::string& estimator) {
+  // Per (seed, frame, object): the main record's visibility and the smallest error of any
+  // hypothesis (the main's first: the tracker reports it before the extra ones).
+  struct Frame {
+    bool hidden = false;
+    std::size_t hypotheses = 0;
+    double main = 0.0;
+    double nearest = 0.0;
+  };
+  std::map<std::tuple<std::size_t, int, std::string>, Frame> frames;
+  for (const FrameRecord& r : results.records) {
+    if (r.estimator != estimator ||
+        std::find(results.objects_of_interest.begin(), results.objects_of_interest.end(),
+                  r.estimate.object) == results.objects_of_interest.end())
+      continue;
+    const double error =
+        translation_error(r.estimate.pose.mean, make_pose(r.truth.position, r.truth.orientation));
+    Frame& f = frames[{r.seed_index, r.frame, r.estimate.object}];
+    if (r.estimate.hypothesis == 0) {
+      f.hidden = !r.visible;
+      f.main = error;
+    }
+    f.nearest = f.hypotheses == 0 ? error : std::min(f.nearest, error);
+    ++f.hypotheses;
+  }
+  HypothesisStats stats;
+  for (const auto& [key, f] : frames) {
+    if (!f.hidden) continue;
+    ++stats.hidden_frames;
+    stats.with_more += f.hypotheses > 1;
+    stats.nearest_hidden_translation += f.nearest;
+    stats.main_hidden_translation += f.main;
+  }
+  if (stats.hidden_frames > 0) {
+    stats.nearest_hidden_translation /= static_cast<double>(stats.hidden_frames);
+    stats.main_hidden_translation /= static_cast<double>(stats.hidden_frames);
+  }
+  return stats;
+}
+
 void write_summary_json(const std::filesystem::path& path,
                         const std::vector<ExperimentResults>& experiments) {
   write_file_atomically(path, [&](std::ostream& out) {
@@ -159,7 +201,12 @@ void write_summary_json(const std::filesystem::path& path,
         const auto models = dynamics_model_counts(x.records, x.estimators[i]);
         for (auto it = models.begin(); it != models.end(); ++it)
           out << (it == models.begin() ? "" : ", ") << '"' << it->first << "\": " << it->second;
-        out << "}" << (closed_loop ? ",\n" : "\n");
+        out << "},\n";
+        const HypothesisStats h = hypothesis_stats(x, x.estimators[i]);
+        out << "        \"hypotheses\": {\"hidden_frames\": " << h.hidden_frames
+            << ", \"with_more\": " << h.with_more
+            << ", \"nearest_hidden_translation\": " << number(h.nearest_hidden_translation) << "}"
+            << (closed_loop ? ",\n" : "\n");
         if (closed_loop) {
           std::size_t released = 0, landed = 0;
           for (const DropOutcome& d : drops->second) {
@@ -207,6 +254,16 @@ void print_results_table(std::ostream& out, const std::vector<ExperimentResults>
       std::snprintf(line, sizeof line,
                     "  %-10s cube released in %zu of %zu runs, landed in the mug in %zu\n",
                     name.c_str(), released, drops->second.size(), landed);
+      out << line;
+    }
+    for (const std::string& name : x.estimators) {
+      const HypothesisStats h = hypothesis_stats(x, name);
+      if (h.with_more == 0) continue;
+      std::snprintf(line, sizeof line,
+                    "  %-10s two hypotheses in %zu of %zu hidden frames; hidden error of the one "
+                    "nearest the truth %.5f m (the main one's %.5f m)\n",
+                    name.c_str(), h.with_more, h.hidden_frames, h.nearest_hidden_translation,
+                    h.main_hidden_translation);
       out << line;
     }
     const auto paper = paper_table().find(x.experiment);

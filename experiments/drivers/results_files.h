@@ -27,11 +27,25 @@ void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& 
 /// experiments.<name>.<estimator>.{translation_error, rotation_error_paper,
 /// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus seeds,
 /// dynamics_models (per motion model, the occlusions the dynamics module carried with it, over
-/// the seeds and tracked bodies), and for closed-loop experiments payload_released and
+/// the seeds and tracked bodies), hypotheses (hidden_frames, with_more,
+/// nearest_hidden_translation: see hypothesis_stats), and for closed-loop experiments
+/// payload_released and
 /// payload_landed (counts over the seeds).
 /// Per motion model (Estimate::motion_model), the occlusions `estimator` carried with it.
 std::map<std::string, std::size_t> dynamics_model_counts(const std::vector<FrameRecord>& records,
                                                          const std::string& estimator);
+
+/// The hidden frames of the objects of interest where `estimator` followed more than one
+/// hypothesis (two equally likely occluders), and the translation error of the hypothesis
+/// nearest the truth in every hidden frame against the main hypothesis's (means over the hidden
+/// frames of every seed; 0 without hidden frames).
+struct HypothesisStats {
+  std::size_t hidden_frames = 0;
+  std::size_t with_more = 0;
+  double nearest_hidden_translation = 0.0;
+  double main_hidden_translation = 0.0;
+};
+HypothesisStats hypothesis_stats(const ExperimentResults& results, const std::string& estimator);
 
 void write_summary_json(const std::filesystem::path& path,
                         const std::vector<ExperimentResults>& experiments);

@@ -112,6 +112,13 @@ void PoseParticleFilter::shift(const Eigen::Vector3d& translation,
   rotate_all(rotation_, rotation);
 }
 
+void PoseParticleFilter::carry(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                               const Eigen::Quaterniond& rotation) {
+  const Eigen::Matrix3d r = rotation.normalized().toRotationMatrix();
+  translation_.states = (r * (translation_.states.colwise() - from)).colwise() + to;
+  rotate_all(rotation_, rotation);
+}
+
 void PoseParticleFilter::diffuse(const Eigen::Vector3d& translation_sigma, double rotation_sigma) {
   if (!(translation_sigma.minCoeff() >= 0.0) || !(rotation_sigma >= 0.0))
     throw std::invalid_argument("PoseParticleFilter::diffuse: spreads must be >= 0");

@@ -59,6 +59,12 @@ class PoseParticleFilter {
   /// when the object is carried by a known motion.
   void shift(const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
 
+  /// Moves every particle with a carrier that went from `from` to `to` turning by the world-frame
+  /// `rotation`: positions p <- to + rotation (p - from), orientations q <- rotation * q. A body
+  /// carried at an offset turns about its carrier, not about itself.
+  void carry(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+             const Eigen::Quaterniond& rotation);
+
   /// Adds zero-mean Gaussian noise: per world axis `translation_sigma` (m) to the translation
   /// particles, `rotation_sigma` (rad, per body axis) to the rotation particles. Weights are kept.
   void diffuse(const Eigen::Vector3d& translation_sigma, double rotation_sigma);

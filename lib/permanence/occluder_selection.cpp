@@ -96,7 +96,13 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
   choice.nearest = best;
   choice.nearest_distance = best_d;
   choice.second_distance = runner_up_d;
-  if (plausible > 1 && runner_up_d - best_d <= options.epsilon_occ) choice.second = runner_up;
+  choice.nearest_offset = (p * (candidates[best].mean - hidden_mean)).norm();
+  if (plausible < 2) return choice;
+  choice.second_offset = (p * (candidates[runner_up].mean - hidden_mean)).norm();
+  // The tie in metres, as the paper sets epsilon_occ "based on the size of the tested object": a
+  // gap of D_B would be a unitless number that the estimates' jitter alone always exceeds.
+  if (std::abs(choice.second_offset - choice.nearest_offset) <= options.epsilon_occ)
+    choice.second = runner_up;
   return choice;
 }
 

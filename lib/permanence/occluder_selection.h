@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,7 +18,9 @@ namespace opf {
 enum class OccluderPlane { kLineOfSight, kXY, k3D };
 
 struct OccluderOptions {
-  double epsilon_occ = 0.01;  ///< paper Sec. III-B.2: D_B gap below which two occluders tie
+  /// m (paper Sec. III-B.2, "based on the size of the tested object"): two candidates tie when
+  /// their distances from the hidden object across the line of sight differ by at most this.
+  double epsilon_occ = 0.01;
   OccluderPlane plane = OccluderPlane::kLineOfSight;
   /// Camera position in the world frame for kLineOfSight; none means a top-down camera (the
   /// line of sight is -z, the plane is x-y), as in the paper's scenes.
@@ -33,6 +36,18 @@ struct OccluderOptions {
   /// bundled scene: a carried ball's offset from its cup is vertical, not along the ray. Implied
   /// by keep_offset. false: the paper's rule (the occluder's position is the hidden object's).
   bool keep_depth = true;
+  /// Carry from the occluder's departure: a cup slid over a ball covers it before it carries it.
+  /// An occluder at the object's level (within `reach` vertically) closes in: the hidden object
+  /// is held where it was covered until the occluder has moved `departure_margin` (horizontally)
+  /// from the place of its closest approach, and is then carried at its whole offset of that
+  /// closest approach, turned with the occluder. An occluder above it (a hand, a lifted tray) is
+  /// followed from onset by the keep_offset / keep_depth rule. false: carried from onset (the
+  /// paper's rule).
+  bool carry_from_departure = true;
+  /// m: above the jitter of a resting occluder's detection about its estimate (2 mm noise, and
+  /// the estimate overshooting a few mm where a cup stops short), which would start the carry
+  /// before a cup that paused beside the ball slides over it.
+  double departure_margin = 0.01;
   /// The plausibility gate: a candidate can hide the object only if it is near it across the
   /// line of sight (within `reach` plus `gate_sigmas` standard deviations of the two estimates'
   /// combined spread) and not behind it (no more than `reach` further along the ray). Without
@@ -60,12 +75,16 @@ struct OccluderChoice {
   std::optional<std::size_t> second;   ///< set only when the choice is ambiguous
   double nearest_distance = 0.0;
   double second_distance = 0.0;  ///< of the runner-up, ambiguous or not (infinity if none)
+  /// m between the centres across the line of sight (in 3-D for k3D): the tie's measure.
+  double nearest_offset = 0.0;
+  double second_offset = std::numeric_limits<double>::infinity();
   bool ambiguous() const { return second.has_value(); }
 };
 
 /// Ranks the plausible candidates (options.gate) by D_B to the hidden object's cloud in the
 /// configured plane. None: no occluder. One: it is the occluder. Otherwise the nearest is the
-/// occluder when the runner-up is more than epsilon_occ further; else both are returned. A
+/// occluder when the two centres' distances from the hidden object's across the line of sight
+/// differ by more than epsilon_occ (m); else both are returned. A
 /// candidate whose estimate is not finite, or whose covariance is degenerate, is passed over.
 OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
                                 const Eigen::Matrix3d& hidden_covariance,

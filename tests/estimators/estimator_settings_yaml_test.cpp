@@ -67,6 +67,8 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.opf.occluder.camera_position.has_value(), d.opf.occluder.camera_position.has_value());
   EXPECT_EQ(s.opf.occluder.keep_offset, d.opf.occluder.keep_offset);
   EXPECT_EQ(s.opf.occluder.keep_depth, d.opf.occluder.keep_depth);
+  EXPECT_EQ(s.opf.occluder.carry_from_departure, d.opf.occluder.carry_from_departure);
+  EXPECT_EQ(s.opf.occluder.departure_margin, d.opf.occluder.departure_margin);
   EXPECT_EQ(s.opf.occluder.gate, d.opf.occluder.gate);
   EXPECT_EQ(s.opf.occluder.reach, d.opf.occluder.reach);
   EXPECT_EQ(s.opf.occluder.gate_sigmas, d.opf.occluder.gate_sigmas);
@@ -152,7 +154,8 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
       "  hold_after: 2.5\n"
       "  occluder: {epsilon_occ: 0.5, plane: xy, camera_position: [0.55, 0, 0.8], keep_offset: "
       "true,\n"
-      "             keep_depth: false, gate: false, reach: 0.3, gate_sigmas: 2}\n"
+      "             keep_depth: false, carry_from_departure: false, departure_margin: 0.02,\n"
+      "             gate: false, reach: 0.3, gate_sigmas: 2}\n"
       "  uncertainty: {kappa: 1.1, reference_speed: 0.2, reference_period: 0.01,\n"
       "                speed_window: 0.5, max_scale: 100}\n"
       "  feedback: {epsilon_safe: 0.5}\n",
@@ -176,6 +179,8 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
   EXPECT_EQ(*o.occluder.camera_position, Eigen::Vector3d(0.55, 0, 0.8));
   EXPECT_TRUE(o.occluder.keep_offset);
   EXPECT_FALSE(o.occluder.keep_depth);
+  EXPECT_FALSE(o.occluder.carry_from_departure);
+  EXPECT_EQ(o.occluder.departure_margin, 0.02);
   EXPECT_FALSE(o.occluder.gate);
   EXPECT_EQ(o.occluder.reach, 0.3);
   EXPECT_EQ(o.occluder.gate_sigmas, 2.0);
@@ -325,6 +330,8 @@ TEST(EstimatorSettingsYaml, OutOfRangeValuesAreRejected) {
            Case{"opf:\n  occluder: {camera_position: [1, 2]}\n", "opf.occluder.camera_position", 2},
            Case{"opf:\n  occluder: {epsilon_occ: -0.1}\n", "opf.occluder.epsilon_occ", 2},
            Case{"opf:\n  occluder: {reach: -0.1}\n", "opf.occluder.reach", 2},
+           Case{"opf:\n  occluder: {departure_margin: -0.01}\n", "opf.occluder.departure_margin",
+                2},
            Case{"opf:\n  occluder:\n    gate_sigmas: -1\n", "opf.occluder.gate_sigmas", 3},
            Case{"opf:\n  hold_after: 0\n", "opf.hold_after", 2},
        }) {

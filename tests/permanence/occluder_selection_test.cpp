@@ -36,15 +36,23 @@ TEST(OccluderSelection, TwoEquallyCloseCandidatesAreAmbiguous) {
 }
 
 TEST(OccluderSelection, EpsilonOccDecidesBetweenOneAndTwo) {
-  // D_B gap between the two: both clouds are 1 cm, the means 4.0 and 4.2 cm away in x-y:
-  // D_B = d^2 / (8 * 1e-4) -> 2.0 and 2.205, a gap of 0.205.
+  // epsilon_occ is in metres: the means are 4.0 and 4.2 cm away across the line of sight (top
+  // down: in x-y), a gap of 2 mm. Their D_B differ by 0.205 (1 cm clouds: d^2 / (8 * 1e-4)),
+  // which says nothing of how close the call is in the scene.
   const std::vector<OccluderCandidate> candidates = {at("a", 0.04, 0.0, 0.0),
                                                      at("b", -0.042, 0.0, 0.0)};
   OccluderOptions options;
-  options.epsilon_occ = 0.2;
-  EXPECT_FALSE(choose_occluders({0, 0, 0}, kCloud, candidates, options).ambiguous());
-  options.epsilon_occ = 0.21;
-  EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, candidates, options).ambiguous());
+  options.epsilon_occ = 0.0019;
+  auto choice = choose_occluders({0, 0, 0}, kCloud, candidates, options);
+  EXPECT_FALSE(choice.ambiguous());
+  EXPECT_NEAR(choice.nearest_offset, 0.040, 1e-12);
+  EXPECT_NEAR(choice.second_offset, 0.042, 1e-12);
+  options.epsilon_occ = 0.0021;
+  choice = choose_occluders({0, 0, 0}, kCloud, candidates, options);
+  EXPECT_TRUE(choice.ambiguous());
+  EXPECT_EQ(candidates[*choice.nearest].object, "a");
+  // The default, the paper's 0.01 read as metres: a 2 mm difference is a tie.
+  EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, candidates, OccluderOptions{}).ambiguous());
 }
 
 TEST(OccluderSelection, LineOfSightIgnoresDepthAlongTheRay) {

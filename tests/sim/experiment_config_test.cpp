@@ -79,7 +79,7 @@ TEST(ExperimentConfig, EveryBundledExperimentLoads) {
     for (const auto& object : c.objects_of_interest) EXPECT_NO_THROW(scene.index_of(object));
     ++count;
   }
-  EXPECT_EQ(count, 5);  // general_op, sugar_drop, baseball, cups_game, rolling_ball
+  EXPECT_EQ(count, 6);  // general_op, sugar_drop, baseball, cups_game, rolling_ball, twin_mugs
 }
 
 InputError error_of(const std::string& yaml) {
