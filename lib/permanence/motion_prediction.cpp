@@ -78,6 +78,7 @@ struct Validation {
   double count = 0.0;
   std::vector<double> horizons;
   std::vector<Eigen::Vector3d> errors;
+  std::vector<double> weights;  ///< each error's recency weight (validation_memory)
 
   double mean_squared() const {
     return count > 0.0 ? squared_error / count : std::numeric_limits<double>::infinity();
@@ -95,6 +96,7 @@ struct Validation {
         ++pairs;
     horizons.reserve(pairs);
     errors.reserve(pairs);
+    weights.reserve(pairs);
   }
 };
 
@@ -145,6 +147,7 @@ Validation validate_translation(std::span<const MotionSample> history, const Ser
       v.count += w;
       v.horizons.push_back(s.t[i] - t_o);
       v.errors.push_back(error);
+      v.weights.push_back(w);
     }
   }
   v.valid = true;
@@ -179,6 +182,7 @@ Validation validate_rotation(std::span<const MotionSample> history, const Series
       v.count += w;
       v.horizons.push_back(s.t[i] - t_o);
       v.errors.push_back(error);
+      v.weights.push_back(w);
     }
   }
   v.valid = true;
@@ -190,7 +194,9 @@ Validation validate_rotation(std::span<const MotionSample> history, const Series
 // wanders (white random acceleration, the constant-velocity Kalman filter's model), h^4 for a
 // wrong acceleration. `noise` is the measurement noise's variance, which the validation errors
 // carry (they are against measurements) but a prediction of the object does not. Three unknowns:
-// every subset of active terms is solved and the best non-negative one kept.
+// every subset of active terms is solved and the best non-negative one kept. Each error counts
+// with its recency weight, as in the models' scores: a motion that changed (a ball that started
+// rolling) is judged by how it moves now.
 Eigen::Vector3d growth(const Validation& v, int axis, double noise) {
   Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
   Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
@@ -201,9 +207,10 @@ Eigen::Vector3d growth(const Validation& v, int axis, double noise) {
     const double e2 =
         (axis < 0 ? v.errors[i].squaredNorm() / 3.0 : v.errors[i](axis) * v.errors[i](axis)) -
         noise;
-    normal += basis * basis.transpose();
-    rhs += e2 * basis;
-    target_squares += e2 * e2;
+    const double w = v.weights[i];
+    normal += w * basis * basis.transpose();
+    rhs += w * e2 * basis;
+    target_squares += w * e2 * e2;
   }
   Eigen::Vector3d best = Eigen::Vector3d::Zero();
   double best_residual = target_squares;  // all terms off
@@ -259,12 +266,18 @@ double velocity_variance_floor(double residual_variance, int samples, double win
   return 12.0 * residual_variance / (static_cast<double>(samples) * window * window);
 }
 
+double median(std::vector<double>& values) {
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
 // The intensity q^2 of the motion's random acceleration per axis (m^2/s^3): for a velocity that
 // wanders as a Wiener process, the lagged second difference x(t + L) - 2 x(t) + x(t - L) has
-// variance 6 sigma^2 + (2/3) q^2 L^3, sigma the measurement noise. Its variance (about its mean,
-// so a constant acceleration, a throw, counts for nothing) at lags of one frame up to kWanderLag
-// is regressed on L^3 with weights for its relative precision: the slope is the wander, the
-// intercept the noise, estimated together so that neither leaks into the other. The
+// variance 6 sigma^2 + (2/3) q^2 L^3, sigma the measurement noise. Its variance (robust, about its
+// median, so a constant acceleration, a throw, counts for nothing) at lags of one frame up to
+// kWanderLag is regressed on L^3 with weights for its relative precision: the slope is the wander,
+// the intercept the noise, estimated together so that neither leaks into the other. The
 // predictions' variance then grows at least as q^2 h^3 / 3, as a constant-velocity Kalman
 // filter's with that process noise.
 Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matrix3Xd& values) {
@@ -277,16 +290,21 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
   for (int axis = 0; axis < 3; ++axis) {
     // Weighted least squares of V(L) = c + b L^3 with weights (n - 2L) / V(L)^2.
     double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    std::vector<double> d, deviation;
     for (Eigen::Index lag = 1; lag <= lags; ++lag) {
-      double sum = 0.0, sum_squares = 0.0;
       const Eigen::Index count = n - 2 * lag;
-      for (Eigen::Index k = lag; k + lag < n; ++k) {
-        const double d = values(axis, k + lag) - 2.0 * values(axis, k) + values(axis, k - lag);
-        sum += d;
-        sum_squares += d * d;
-      }
+      d.clear();
+      for (Eigen::Index k = lag; k + lag < n; ++k)
+        d.push_back(values(axis, k + lag) - 2.0 * values(axis, k) + values(axis, k - lag));
       const double c = static_cast<double>(count);
-      const double variance = (sum_squares - sum * sum / c) / (c - 1.0);
+      // A robust variance (1.4826 MAD, squared) about the median: a single manoeuvre (a ball
+      // that starts rolling) gives a few large differences and must not read as a wander that
+      // goes on; a wander that goes on moves them all.
+      const double centre = median(d);
+      deviation.clear();
+      for (const double x : d) deviation.push_back(std::abs(x - centre));
+      const double scale = 1.4826 * median(deviation);
+      const double variance = scale * scale;
       if (!(variance > 0.0)) continue;
       const double span = static_cast<double>(lag) * period;
       const double x = span * span * span;
@@ -594,6 +612,7 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
           history.back().measured_position(axis) + predicted - all[k].measured_position(axis);
       combined.horizons.push_back(all[k].t - s.t.back());
       combined.errors.push_back(error);
+      combined.weights.push_back(1.0);  // predicted from the newest origin
     }
     Eigen::Vector3d g = growth(combined, axis, noise);
     g(0) = std::max(g(0), floor);
