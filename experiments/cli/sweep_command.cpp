@@ -17,7 +17,12 @@ namespace {
 
 std::vector<OptionSpec> specs() {
   return {
-      {"out", "DIR", "where the runs and the table go (default: results/sweeps/<sweep name>)"},
+      {"out", "DIR",
+       "where the runs and the table go (default: results/sweeps/<sweep name>, or "
+       "results/sweeps/<sweep name>-paper with --preset paper)"},
+      {"preset", "NAME",
+       "default or paper: the settings every run starts from, the sweep's own on top (as "
+       "`opf run --preset`)"},
       {"jobs", "N", "runs at once, each on one thread (default: the machine's cores)"},
       {"list", "", "print the runs (and which are done) without running anything"},
       {"plan", "", "print the runs as JSON (for experiments/Snakefile) without running anything"},
@@ -50,13 +55,20 @@ int sweep_command(const std::vector<std::string>& raw) {
     return 0;
   }
   if (positional.size() != 1) throw UsageError{"expected one sweep file"};
+  const std::string preset = args.get("preset").value_or("default");
+  if (preset != "default" && preset != "paper")
+    throw UsageError{"option '--preset': expected default or paper, got \"" + preset + "\""};
   const experiments::SweepSpec spec = experiments::load_sweep(positional[0]);
-  const std::filesystem::path out =
-      args.get("out").value_or((std::filesystem::path("results") / "sweeps" / spec.name).string());
+  // A preset's runs go to their own directory: resuming must not mix them with the defaults'.
+  const std::string default_name = preset == "default" ? spec.name : spec.name + "-" + preset;
+  const std::filesystem::path out = args.get("out").value_or(
+      (std::filesystem::path("results") / "sweeps" / default_name).string());
   const std::size_t jobs =
       args.get_count("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
   if (jobs == 0) throw UsageError{"option '--jobs' must be at least 1"};
-  const std::vector<experiments::SweepRun> runs = experiments::expand_sweep(spec);
+  std::vector<experiments::SweepRun> runs = experiments::expand_sweep(spec);
+  if (preset != "default")
+    for (auto& run : runs) run.preset = preset;
 
   if (args.has("plan")) {
     experiments::write_sweep_plan(std::cout, spec, runs, out);

@@ -36,6 +36,10 @@ std::vector<std::string> SweepRun::arguments(const std::filesystem::path& out) c
     args.push_back("--frames");
     args.push_back(std::to_string(*frames));
   }
+  if (!preset.empty()) {
+    args.push_back("--preset");
+    args.push_back(preset);
+  }
   return args;
 }
 
@@ -60,7 +64,8 @@ std::vector<SweepRun> expand_sweep(const SweepSpec& spec) {
           const std::string yaml = settings_yaml(spec, settings);
           for (std::size_t k = 0; k < spec.seeds; ++k)
             runs.push_back({experiment_file, experiment, estimator, variant.name, point, k,
-                            base / ("seed_" + std::to_string(k)), yaml, particles, spec.frames});
+                            base / ("seed_" + std::to_string(k)), yaml, particles, spec.frames,
+                            ""});
         }
   return runs;
 }

@@ -26,6 +26,8 @@ struct SweepRun {
   std::string settings_yaml;  ///< written to settings.yaml and passed as --config
   std::optional<std::size_t> particles;
   std::optional<std::size_t> frames;
+  /// A settings preset under settings.yaml (`opf run --preset`); empty: the defaults.
+  std::string preset;
 
   /// The file whose presence marks the run done: <directory>/<experiment>_runs.csv.
   std::filesystem::path result_file() const;

@@ -151,6 +151,23 @@ TEST_F(OpfSweep, ListsTheRunsWithoutRunningThem) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+// --preset paper: every run starts from the paper's settings (the sweep's keys on top), and its
+// runs are kept apart from the defaults'.
+TEST_F(OpfSweep, APresetIsPassedToEveryRun) {
+  const fs::path sweep = write_sweep(tiny_sweep());
+  ASSERT_EQ(
+      run("sweep " + sweep.string() + " --plan --preset paper --out " + (dir_ / "out").string()), 0)
+      << err();
+  EXPECT_NE(out().find(R"("--preset", "paper")"), std::string::npos) << out();
+  ASSERT_EQ(run("sweep " + sweep.string() + " --plan"), 0) << err();
+  EXPECT_EQ(out().find("--preset"), std::string::npos) << out();
+  // Its default output directory is the sweep's name with the preset's.
+  ASSERT_EQ(run("sweep " + sweep.string() + " --plan --preset paper"), 0) << err();
+  EXPECT_NE(out().find("results/sweeps/tiny-paper"), std::string::npos) << out();
+  EXPECT_EQ(run("sweep " + sweep.string() + " --list --preset literal"), 2);
+  EXPECT_NE(err().find("expected default or paper, got \"literal\""), std::string::npos) << err();
+}
+
 TEST_F(OpfSweep, RejectsABadSweepFileBeforeRunningAnything) {
   const fs::path sweep = write_sweep(tiny_sweep("sedes: 3\n"));
   EXPECT_EQ(run("sweep " + sweep.string() + " --out " + (dir_ / "out").string()), 1);
