@@ -77,14 +77,16 @@ RobustLoss parse_loss(YamlReader& yaml, RobustLoss loss) {
 }
 
 OccluderPlane parse_plane(YamlReader& yaml, OccluderPlane plane) {
-  std::string name = plane == OccluderPlane::kLineOfSight ? "line_of_sight"
-                     : plane == OccluderPlane::kXY        ? "xy"
-                                                          : "3d";
+  std::string name = plane == OccluderPlane::kAuto          ? "auto"
+                     : plane == OccluderPlane::kLineOfSight ? "line_of_sight"
+                     : plane == OccluderPlane::kXY          ? "xy"
+                                                            : "3d";
   yaml.get("plane", name);
+  if (name == "auto") return OccluderPlane::kAuto;
   if (name == "line_of_sight") return OccluderPlane::kLineOfSight;
   if (name == "xy") return OccluderPlane::kXY;
   if (name == "3d") return OccluderPlane::k3D;
-  yaml.fail("plane", "expected line_of_sight, xy or 3d, got \"" + name + "\"");
+  yaml.fail("plane", "expected auto, line_of_sight, xy or 3d, got \"" + name + "\"");
 }
 
 void read_order(YamlReader& yaml, std::string_view key, int& order) {
@@ -202,6 +204,7 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   occluder.get("keep_offset", options.occluder.keep_offset);
   occluder.get("keep_depth", options.occluder.keep_depth);
   occluder.get("carry_from_departure", options.occluder.carry_from_departure);
+  occluder.get("orientation_from_estimate", options.occluder.orientation_from_estimate);
   occluder.get("departure_margin", options.occluder.departure_margin);
   occluder.require(
       "departure_margin",

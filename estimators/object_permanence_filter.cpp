@@ -40,6 +40,10 @@ void validate(const OpfOptions& options) {
   if (!(options.occluder.reach >= 0.0) || !std::isfinite(options.occluder.reach) ||
       !(options.occluder.gate_sigmas >= 0.0) || !std::isfinite(options.occluder.gate_sigmas))
     throw std::invalid_argument("OPF options occluder.reach and occluder.gate_sigmas must be >= 0");
+  if (options.occluder.plane == OccluderPlane::kLineOfSight && !options.occluder.camera_position)
+    throw std::invalid_argument(
+        "OPF option occluder.plane is line_of_sight but no camera position is given "
+        "(opf.occluder.camera_position, or --camera X,Y,Z); plane auto takes a top-down camera");
   if (!(options.occluder.departure_margin >= 0.0) ||
       !std::isfinite(options.occluder.departure_margin))
     throw std::invalid_argument("OPF option occluder.departure_margin must be >= 0 m");
@@ -327,16 +331,19 @@ namespace {
 
 // The occluder's pose as the carry reads it: its position from its measurement this frame when
 // it has one (its estimate is a frame old and lags a moving occluder), its orientation from its
-// filtered estimate when it has one (a single detection's rotation noise would bias the whole
-// carry).
+// filtered estimate when it has one and `orientation_from_estimate` (a single detection's
+// rotation noise would bias the whole carry).
 struct CarrierPose {
   Eigen::Vector3d position;
   Eigen::Quaterniond orientation;
 };
 
-CarrierPose carrier_pose(const Detection* detection, const Estimate* estimate) {
+CarrierPose carrier_pose(const Detection* detection, const Estimate* estimate,
+                         bool orientation_from_estimate) {
   const mrpt::poses::CPose3D& for_position = detection ? detection->pose : estimate->pose.mean;
-  const mrpt::poses::CPose3D& for_orientation = estimate ? estimate->pose.mean : detection->pose;
+  const mrpt::poses::CPose3D& for_orientation =
+      (estimate && (orientation_from_estimate || !detection)) ? estimate->pose.mean
+                                                              : detection->pose;
   return {translation_of(for_position), orientation_of(for_orientation).normalized()};
 }
 
@@ -353,7 +360,8 @@ void ObjectPermanenceFilter::follow_occluder(Hypothesis& hypothesis, const std::
                                              const EnsembleView& ensemble) const {
   hypothesis.source = Source::kOccluder;
   hypothesis.occluder = occluder;
-  const CarrierPose reference = carrier_pose(ensemble.frame.find(occluder), &occluder_estimate);
+  const CarrierPose reference = carrier_pose(ensemble.frame.find(occluder), &occluder_estimate,
+                                             options_.occluder.orientation_from_estimate);
   hypothesis.occluder_position_at_onset = reference.position;
   hypothesis.occluder_orientation_at_onset = reference.orientation;
   hypothesis.last_carrier_position = reference.position;
@@ -386,7 +394,8 @@ ObjectPermanenceFilter::virtual_measurement(Hypothesis& h, double t, const Ensem
     const Estimate* occluder_estimate = find_estimate(ensemble, h.occluder);
     const Detection* occluder_detection = ensemble.frame.find(h.occluder);
     if (!occluder_estimate && !occluder_detection) return std::nullopt;
-    const CarrierPose occluder = carrier_pose(occluder_detection, occluder_estimate);
+    const CarrierPose occluder = carrier_pose(occluder_detection, occluder_estimate,
+                                              options_.occluder.orientation_from_estimate);
     const Eigen::Vector3d up = options_.dynamics.selection.up.normalized();
     if (!h.carrying) {
       // Still closing in over the object: it stays where it was covered, and the carry will

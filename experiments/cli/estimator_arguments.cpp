@@ -60,6 +60,15 @@ EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& 
   return settings;
 }
 
+void require_camera_for_line_of_sight(const EstimatorSettings& settings) {
+  if (settings.opf.occluder.plane == OccluderPlane::kLineOfSight &&
+      !settings.opf.occluder.camera_position)
+    throw UsageError{
+        "opf.occluder.plane is line_of_sight but no camera position is given: pass --camera "
+        "X,Y,Z (or set opf.occluder.camera_position), or use plane auto (a top-down camera "
+        "without one)"};
+}
+
 std::size_t threads_from(const Arguments& args) {
   if (const auto threads = args.get_count("threads")) {
     if (*threads == 0) throw UsageError{"option '--threads' must be at least 1"};

@@ -12,6 +12,10 @@ namespace opf::cli {
 
 std::vector<OptionSpec> estimator_option_specs();
 
+/// For a log (track, evaluate), where no experiment supplies its camera: `line_of_sight` without
+/// a camera position is a usage error, not a silent top-down camera.
+void require_camera_for_line_of_sight(const EstimatorSettings& settings);
+
 /// `base` (the defaults unless given), then the YAML file of --config, then --particles (both
 /// portions).
 EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base = {});

@@ -92,6 +92,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   const std::size_t seeds = args.get_count("seeds").value_or(5);
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   const EstimatorSettings settings = settings_from(args);
+  require_camera_for_line_of_sight(settings);
   const std::uint64_t base_seed = seed_from(args);
   const std::size_t threads = threads_from(args);
 

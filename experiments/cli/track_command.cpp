@@ -46,11 +46,12 @@ int track_command(const std::vector<std::string>& raw) {
   const std::string out = args.require("out");
   const std::string estimator = args.get("estimator").value_or("opf");
   const EstimatorSettings settings = settings_from(args);
+  require_camera_for_line_of_sight(settings);
 
   const MeasurementLog log = read_measurement_log(in);
   const OccluderOptions& occluder = settings.opf.occluder;
   if (estimator == "opf" && log.objects.size() > 1 && settings.opf.modules.occluder &&
-      occluder.plane == OccluderPlane::kLineOfSight && !occluder.camera_position)
+      occluder.plane == OccluderPlane::kAuto && !occluder.camera_position)
     std::cerr << "opf track: warning: no camera position (--camera X,Y,Z, or "
                  "opf.occluder.camera_position): the occluder module takes the line of sight as "
                  "straight down (-z)\n";

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 namespace opf {
@@ -15,8 +16,11 @@ namespace opf {
 std::optional<Eigen::Vector3d> line_of_sight(const Eigen::Vector3d& hidden_mean,
                                              const OccluderOptions& options) {
   if (options.plane == OccluderPlane::k3D) return std::nullopt;
+  if (options.plane == OccluderPlane::kLineOfSight && !options.camera_position)
+    throw std::invalid_argument(
+        "occluder plane line_of_sight needs the camera's position (or plane auto)");
   Eigen::Vector3d ray(0, 0, -1);
-  if (options.plane == OccluderPlane::kLineOfSight && options.camera_position) {
+  if (options.plane != OccluderPlane::kXY && options.camera_position) {
     const Eigen::Vector3d to_object = hidden_mean - *options.camera_position;
     if (to_object.norm() > 1e-9) ray = to_object.normalized();
   }

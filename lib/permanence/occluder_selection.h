@@ -12,18 +12,21 @@
 
 namespace opf {
 
-/// Where the distances are measured. Occlusion happens along the camera's line of sight, so by
-/// default the clouds are projected onto the plane perpendicular to the ray from the camera to
-/// the hidden object (depth along the ray says nothing about who covers whom).
-enum class OccluderPlane { kLineOfSight, kXY, k3D };
+/// Where the distances are measured. Occlusion happens along the camera's line of sight, so the
+/// clouds are projected onto the plane perpendicular to the ray from the camera to the hidden
+/// object (depth along the ray says nothing about who covers whom). kLineOfSight requires the
+/// camera's position; kAuto (the default) takes it when given and a top-down camera otherwise
+/// (the ray is -z: the paper's scenes), which `opf track` warns about for a log of several
+/// objects.
+enum class OccluderPlane { kAuto, kLineOfSight, kXY, k3D };
 
 struct OccluderOptions {
   /// m (paper Sec. III-B.2, "based on the size of the tested object"): two candidates tie when
   /// their distances from the hidden object across the line of sight differ by at most this.
   double epsilon_occ = 0.01;
-  OccluderPlane plane = OccluderPlane::kLineOfSight;
-  /// Camera position in the world frame for kLineOfSight; none means a top-down camera (the
-  /// line of sight is -z, the plane is x-y), as in the paper's scenes.
+  OccluderPlane plane = OccluderPlane::kAuto;
+  /// Camera position in the world frame for kLineOfSight and kAuto; none (kAuto only) means a
+  /// top-down camera (the line of sight is -z, the plane is x-y), as in the paper's scenes.
   std::optional<Eigen::Vector3d> camera_position;
   /// Follow the occluder at the hidden object's offset from it at occlusion onset (the ball sits
   /// beside the mug's centre) instead of at the occluder's own position (the paper).
@@ -44,6 +47,9 @@ struct OccluderOptions {
   /// followed from onset by the keep_offset / keep_depth rule. false: carried from onset (the
   /// paper's rule).
   bool carry_from_departure = true;
+  /// The carried orientation from the occluder's filtered estimate (a single detection's rotation
+  /// noise would bias the whole carry). false: from its raw detections (the paper's y_k^j).
+  bool orientation_from_estimate = true;
   /// m: above the jitter of a resting occluder's detection about its estimate (2 mm noise, and
   /// the estimate overshooting a few mm where a cup stops short), which would start the carry
   /// before a cup that paused beside the ball slides over it.

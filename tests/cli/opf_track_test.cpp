@@ -153,11 +153,26 @@ TEST_F(OpfProgram, ThePaperPresetIsThePaperSettingsFile) {
 TEST_F(OpfProgram, TrackTakesTheCameraAndWarnsWithoutOne) {
   const std::string track =
       "track --in " + kData + "example_log.csv --particles 500 --seed 2 --out ";
-  // Two objects, the OPF, the line of sight, no camera: a warning that says what is assumed.
+  // Two objects, the OPF, plane auto (the default), no camera: a warning that says what is
+  // assumed.
   ASSERT_EQ(run(track + (dir_ / "down.csv").string()), 0) << err();
   EXPECT_NE(err().find("warning: no camera position"), std::string::npos) << err();
   ASSERT_EQ(run(track + (dir_ / "above.csv").string() + " --camera 0.4,0,0.8"), 0) << err();
   EXPECT_EQ(err().find("warning"), std::string::npos) << err();
+  // plane line_of_sight asks for the camera: without one it is a usage error, not a silent
+  // top-down camera; with --camera it is the same run as auto with that camera.
+  const fs::path settings = dir_ / "sight.yaml";
+  std::ofstream(settings) << "opf:\n  occluder:\n    plane: line_of_sight\n";
+  EXPECT_EQ(run(track + (dir_ / "sight.csv").string() + " --config " + settings.string()), 2);
+  EXPECT_NE(err().find("opf.occluder.plane is line_of_sight but no camera position is given"),
+            std::string::npos)
+      << err();
+  EXPECT_FALSE(fs::exists(dir_ / "sight.csv"));
+  ASSERT_EQ(run(track + (dir_ / "sight.csv").string() + " --config " + settings.string() +
+                " --camera 0.4,0,0.8"),
+            0)
+      << err();
+  EXPECT_EQ(read(dir_ / "sight.csv"), read(dir_ / "above.csv"));
   for (const char* bad : {"1,2", "1,2,x", "1,2,3,4", "1,2,inf"}) {
     EXPECT_EQ(run(track + (dir_ / "bad.csv").string() + " --camera " + bad), 2) << bad;
     EXPECT_NE(err().find("expected three numbers X,Y,Z"), std::string::npos) << err();

@@ -69,6 +69,7 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.opf.occluder.keep_depth, d.opf.occluder.keep_depth);
   EXPECT_EQ(s.opf.occluder.carry_from_departure, d.opf.occluder.carry_from_departure);
   EXPECT_EQ(s.opf.occluder.departure_margin, d.opf.occluder.departure_margin);
+  EXPECT_EQ(s.opf.occluder.orientation_from_estimate, d.opf.occluder.orientation_from_estimate);
   EXPECT_EQ(s.opf.occluder.gate, d.opf.occluder.gate);
   EXPECT_EQ(s.opf.occluder.reach, d.opf.occluder.reach);
   EXPECT_EQ(s.opf.occluder.gate_sigmas, d.opf.occluder.gate_sigmas);
@@ -155,6 +156,7 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
       "  occluder: {epsilon_occ: 0.5, plane: xy, camera_position: [0.55, 0, 0.8], keep_offset: "
       "true,\n"
       "             keep_depth: false, carry_from_departure: false, departure_margin: 0.02,\n"
+      "             orientation_from_estimate: false,\n"
       "             gate: false, reach: 0.3, gate_sigmas: 2}\n"
       "  uncertainty: {kappa: 1.1, reference_speed: 0.2, reference_period: 0.01,\n"
       "                speed_window: 0.5, max_scale: 100}\n"
@@ -181,6 +183,7 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
   EXPECT_FALSE(o.occluder.keep_depth);
   EXPECT_FALSE(o.occluder.carry_from_departure);
   EXPECT_EQ(o.occluder.departure_margin, 0.02);
+  EXPECT_FALSE(o.occluder.orientation_from_estimate);
   EXPECT_FALSE(o.occluder.gate);
   EXPECT_EQ(o.occluder.reach, 0.3);
   EXPECT_EQ(o.occluder.gate_sigmas, 2.0);

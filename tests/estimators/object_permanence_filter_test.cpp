@@ -766,6 +766,11 @@ TEST(ObjectPermanenceFilter, AllModulesOffIsTheStandardPf) {
 
 TEST(ObjectPermanenceFilter, RejectsBadOptions) {
   OpfOptions options;
+  options.occluder.plane = OccluderPlane::kLineOfSight;  // without the camera's position
+  EXPECT_THROW(ObjectPermanenceFilter(options, "x", 1), std::invalid_argument);
+  options.occluder.camera_position = Eigen::Vector3d(0.4, 0.0, 0.8);
+  EXPECT_NO_THROW(ObjectPermanenceFilter(options, "x", 1));
+  options = {};
   options.history_length = 1;
   EXPECT_THROW(ObjectPermanenceFilter(options, "x", 1), std::invalid_argument);
   options = {};

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include <limits>
 #include <vector>
 
@@ -53,6 +55,20 @@ TEST(OccluderSelection, EpsilonOccDecidesBetweenOneAndTwo) {
   EXPECT_EQ(candidates[*choice.nearest].object, "a");
   // The default, the paper's 0.01 read as metres: a 2 mm difference is a tie.
   EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, candidates, OccluderOptions{}).ambiguous());
+}
+
+TEST(OccluderSelection, LineOfSightNeedsTheCamera) {
+  const std::vector<OccluderCandidate> candidates = {at("tray", 0.4, 0.0, 0.2)};
+  OccluderOptions options;
+  options.plane = OccluderPlane::kLineOfSight;
+  EXPECT_THROW(choose_occluders({0.4, 0.0, 0.0}, kCloud, candidates, options),
+               std::invalid_argument);
+  // auto without a camera: a top-down camera, the x-y plane.
+  options.plane = OccluderPlane::kAuto;
+  const Eigen::MatrixXd p = occlusion_plane_projection({0.4, 0.0, 0.0}, options);
+  ASSERT_EQ(p.rows(), 2);
+  EXPECT_NEAR(std::abs(p.row(0).dot(Eigen::RowVector3d::UnitZ())), 0.0, 1e-12);
+  EXPECT_NEAR(std::abs(p.row(1).dot(Eigen::RowVector3d::UnitZ())), 0.0, 1e-12);
 }
 
 TEST(OccluderSelection, LineOfSightIgnoresDepthAlongTheRay) {
