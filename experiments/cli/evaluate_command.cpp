@@ -9,11 +9,14 @@
 #include "io/measurement_log.h"
 #include "particles/random.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <utility>
 
 namespace opf::cli {
@@ -85,10 +88,26 @@ int evaluate_command(const std::vector<std::string>& raw) {
     return 0;
   }
   const std::string data = std::string(OPF_SOURCE_DIR) + "/experiments/data/";
-  const std::string in = args.get("in").value_or(data + "example_log.csv");
+  const std::string example = data + "example_log.csv";
+  const std::string in = args.get("in").value_or(example);
+  // The bundled truth belongs to the bundled log only: compared with another log it would score
+  // the estimators against the wrong motion.
+  std::error_code ignored;
+  if (!args.has("truth") && !std::filesystem::equivalent(in, example, ignored))
+    throw UsageError{"option '--truth' is required with --in " + in +
+                     " (the bundled example_truth.csv belongs to the bundled example log only)"};
   const std::string truth_path = args.get("truth").value_or(data + "example_truth.csv");
   const auto names =
       args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
+  // Every name is checked before the first run, not when its turn comes.
+  const std::vector<std::string> known = estimator_names();
+  for (const std::string& name : names)
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw UsageError{"option '--estimators': unknown estimator '" + name + "' (known: " + list +
+                       ")"};
+    }
   const std::size_t seeds = args.get_count("seeds").value_or(5);
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   const EstimatorSettings settings = settings_from(args);

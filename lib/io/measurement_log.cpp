@@ -78,6 +78,11 @@ MeasurementLog parse_measurement_log(std::istream& in, const std::string& source
   }
 
   MeasurementLog log;
+  if (std::none_of(frames.begin(), frames.end(),
+                   [](const auto& entry) { return !entry.second.detections.empty(); }))
+    throw InputError(source_name, 0, "",
+                     "no detections: the log has no row with a pose (a header only, or every "
+                     "object unobserved), so there is nothing to track or compare");
   log.frames.reserve(frames.size());
   for (auto& [t, frame] : frames) {
     for (const auto& detection : frame.detections)

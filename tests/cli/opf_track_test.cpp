@@ -227,6 +227,36 @@ TEST_F(OpfProgram, RenderWritesTheFrameAndItsDetections) {
   EXPECT_NE(err().find("--frame must be below"), std::string::npos) << err();
 }
 
+// Refusals before any run: another log without --truth (the bundled truth is the bundled log's),
+// an unknown estimator anywhere in the list, and a log with no detections.
+TEST_F(OpfProgram, EvaluateRefusesMeaninglessRunsBeforeRunning) {
+  const std::string log = kData + "example_log.csv";
+  const fs::path copy = dir_ / "my_log.csv";
+  fs::copy_file(log, copy);
+  EXPECT_EQ(run("evaluate --in " + copy.string() + " --seeds 1"), 2);
+  EXPECT_NE(err().find("option '--truth' is required with --in " + copy.string()),
+            std::string::npos)
+      << err();
+  EXPECT_EQ(out(), "");
+  EXPECT_EQ(run("evaluate --seeds 1 --estimators opf,bogus"), 2);
+  EXPECT_NE(err().find("unknown estimator 'bogus' (known: "), std::string::npos) << err();
+  EXPECT_EQ(out(), "");  // not even opf ran first
+  std::ofstream(dir_ / "header.csv") << "t,object,x,y,z,qx,qy,qz,qw\n";
+  EXPECT_NE(run("evaluate --in " + (dir_ / "header.csv").string() + " --truth " +
+                (dir_ / "header.csv").string()),
+            0);
+  EXPECT_NE(err().find((dir_ / "header.csv").string() + ": no detections"), std::string::npos)
+      << err();
+  EXPECT_NE(
+      run("track --in " + (dir_ / "header.csv").string() + " --out " + (dir_ / "est.csv").string()),
+      0);
+  EXPECT_NE(err().find("no detections"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(dir_ / "est.csv"));
+  // The bundled log itself needs no --truth (the quick look of the help text).
+  EXPECT_EQ(run("evaluate --in " + log + " --seeds 1 --particles 200 --estimators cvkf"), 0)
+      << err();
+}
+
 TEST_F(OpfProgram, EvaluatePrintsOneRowPerEstimator) {
   ASSERT_EQ(run("evaluate --seeds 2 --particles 500"), 0) << err();
   const std::string table = out();

@@ -113,6 +113,16 @@ TEST(MeasurementLog, EmptyPoseRowMarksObjectUnobservedButKeepsTheFrame) {
   EXPECT_EQ(log.objects, (std::vector<std::string>{"ball"}));
 }
 
+// Nothing to track is refused, naming the file: a header only, or rows that are all unobserved.
+TEST(MeasurementLog, ALogWithoutDetectionsIsRefused) {
+  for (const std::string& text :
+       {std::string(kHeader), std::string(kHeader) + "0,ball,,,,,,,\n1,ball,,,,,,,\n"}) {
+    const InputError e = parse_error(text);
+    EXPECT_EQ(e.file(), "log.csv");
+    EXPECT_TRUE(contains(e.message(), "no detections")) << e.what();
+  }
+}
+
 TEST(MeasurementLog, ListsObjectsByFirstDetectionInTime) {
   const MeasurementLog log = parse(std::string(kHeader) +
                                    "1,late,0,0,0,0,0,0,1\n"
