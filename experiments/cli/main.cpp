@@ -1,6 +1,7 @@
 // The `opf` command-line program: `opf <command> [options]`, `opf <command> --help`.
 
 #include "arguments.h"
+#include "cli/version.h"
 #include "core/heap_policy.h"
 #include "detect_command.h"
 #include "dropout_command.h"
@@ -42,6 +43,10 @@ int main(int argc, char** argv) {
   if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
     std::cout << kHelp;
     return all.empty() ? 2 : 0;
+  }
+  if (all[0] == "--version" || all[0] == "version") {
+    std::cout << "opf " << OPF_VERSION << " (commit " << OPF_COMMIT << ")\n";
+    return 0;
   }
   const std::string& command = all[0];
   const std::vector<std::string> rest(all.begin() + 1, all.end());

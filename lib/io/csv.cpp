@@ -144,9 +144,14 @@ Reader::Reader(std::istream& in, std::string source,
   if (!missing.empty()) {
     // A log without a header has numbers where the names should be: say so.
     const bool none_found = missing.size() == required.size();
+    // A header of one field holding ';' or a tab was written with another delimiter: say which.
+    std::string hint = none_found ? "; is the header line missing?" : "";
+    if (header_.size() == 1 && header_[0].find(';') != std::string::npos)
+      hint = "; the header is separated by ';': columns must be separated by commas";
+    else if (header_.size() == 1 && header_[0].find('\t') != std::string::npos)
+      hint = "; the header is separated by tabs: columns must be separated by commas";
     fail("missing required column" + std::string(missing.size() > 1 ? "s " : " ") +
-         join_quoted(missing) + " (the header has " + join_quoted(header_) + ")" +
-         (none_found ? "; is the header line missing?" : ""));
+         join_quoted(missing) + " (the header has " + join_quoted(header_) + ")" + hint);
   }
 }
 

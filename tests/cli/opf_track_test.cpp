@@ -179,6 +179,17 @@ TEST_F(OpfProgram, TrackTakesTheCameraAndWarnsWithoutOne) {
   }
 }
 
+// The version and the commit built: "opf 0.1.0 (commit 1a2b3c4d5e6f)", or "unknown" outside git.
+TEST_F(OpfProgram, VersionNamesTheVersionAndTheCommit) {
+  for (const char* flag : {"--version", "version"}) {
+    ASSERT_EQ(run(flag), 0) << err();
+    const std::string text = out();
+    EXPECT_EQ(text.rfind("opf 0.1.0 (commit ", 0), 0u) << text;
+    EXPECT_GT(text.size(), std::string("opf 0.1.0 (commit )\n").size()) << text;
+    EXPECT_EQ(text.substr(text.size() - 2), ")\n") << text;
+  }
+}
+
 TEST_F(OpfProgram, EverySubcommandHasHelp) {
   // Each command's help names its own options: the estimator-running ones take --seed.
   for (const auto& [command, option] :

@@ -123,6 +123,19 @@ TEST(MeasurementLog, ALogWithoutDetectionsIsRefused) {
   }
 }
 
+// A log written with another delimiter is named as such, not as a missing header.
+TEST(MeasurementLog, AnotherDelimiterIsNamed) {
+  InputError e = parse_error("t;object;x;y;z;qx;qy;qz;qw\n0;ball;0;0;0;0;0;0;1\n");
+  EXPECT_EQ(e.line(), 1u);
+  EXPECT_TRUE(contains(e.message(), "the header is separated by ';'")) << e.what();
+  EXPECT_FALSE(contains(e.message(), "header line missing")) << e.what();
+  e = parse_error("t\tobject\tx\ty\tz\tqx\tqy\tqz\tqw\n");
+  EXPECT_TRUE(contains(e.message(), "the header is separated by tabs")) << e.what();
+  // A header-less log still gets the other hint.
+  e = parse_error("0,ball,0,0,0,0,0,0,1\n");
+  EXPECT_TRUE(contains(e.message(), "is the header line missing?")) << e.what();
+}
+
 TEST(MeasurementLog, ListsObjectsByFirstDetectionInTime) {
   const MeasurementLog log = parse(std::string(kHeader) +
                                    "1,late,0,0,0,0,0,0,1\n"
