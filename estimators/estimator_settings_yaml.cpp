@@ -1,5 +1,6 @@
 #include "estimators/estimator_settings_yaml.h"
 
+#include "io/csv.h"
 #include "io/input_error.h"
 #include "io/input_file.h"
 #include "io/yaml_reader.h"
@@ -108,6 +109,7 @@ void read_dynamics(YamlReader& yaml, DynamicsOptions& options) {
   MotionPredictionOptions& selection = options.selection;
   yaml.get_positive("history_window", selection.history_window);
   std::vector<std::string> windows;
+  for (const double w : selection.fit_windows) windows.push_back(csv::format_double(w));
   yaml.get("fit_windows", windows);
   if (!windows.empty()) {
     selection.fit_windows.clear();
@@ -133,7 +135,7 @@ void read_dynamics(YamlReader& yaml, DynamicsOptions& options) {
   yaml.get("constant_acceleration", selection.constant_acceleration);
   yaml.get("gravity", selection.gravity);
   yaml.require("gravity", selection.gravity >= 0.0, "m/s^2 >= 0");
-  std::vector<double> up;
+  std::vector<double> up = {selection.up.x(), selection.up.y(), selection.up.z()};
   yaml.get("up", up, 3);
   if (!up.empty()) {
     selection.up = Eigen::Vector3d(up[0], up[1], up[2]);
@@ -198,6 +200,8 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   occluder.require("epsilon_occ", options.occluder.epsilon_occ >= 0.0, "a number >= 0");
   options.occluder.plane = parse_plane(occluder, options.occluder.plane);
   std::vector<double> camera;
+  if (const auto& position = options.occluder.camera_position)
+    camera = {position->x(), position->y(), position->z()};
   occluder.get("camera_position", camera, 3);
   if (!camera.empty())
     options.occluder.camera_position = Eigen::Vector3d(camera[0], camera[1], camera[2]);
@@ -233,6 +237,14 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   yaml.child("feedback").get_positive("epsilon_safe", options.feedback.epsilon_safe);
 }
 
+void read_settings(YamlReader& yaml, EstimatorSettings& settings) {
+  read_pf(yaml.child("pf"), settings.pf);
+  read_cvkf(yaml.child("cvkf"), settings.cvkf);
+  read_opf(yaml.child("opf"), settings.opf);
+  read_oapf(yaml.child("oapf"), settings.oapf);
+  yaml.finish();
+}
+
 }  // namespace
 
 EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
@@ -240,12 +252,21 @@ EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
                                            const EstimatorSettings& base) {
   EstimatorSettings settings = base;
   YamlReader yaml = YamlReader::parse(yaml_text, source_name);
-  read_pf(yaml.child("pf"), settings.pf);
-  read_cvkf(yaml.child("cvkf"), settings.cvkf);
-  read_opf(yaml.child("opf"), settings.opf);
-  read_oapf(yaml.child("oapf"), settings.oapf);
-  yaml.finish();
+  read_settings(yaml, settings);
   return settings;
+}
+
+std::string dump_estimator_settings(const EstimatorSettings& settings) {
+  // The reader is the schema: reading nothing over `settings` while recording visits every key
+  // with its value, so the dump cannot miss an option the reader knows.
+  YAML::Node root(YAML::NodeType::Map);
+  YamlReader yaml = YamlReader::parse("", "the effective settings");
+  yaml.record_into(root);
+  EstimatorSettings copy = settings;
+  read_settings(yaml, copy);
+  YAML::Emitter out;
+  out << root;
+  return std::string(out.c_str()) + "\n";
 }
 
 EstimatorSettings load_estimator_settings(const std::filesystem::path& path,

@@ -45,4 +45,9 @@ EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
                                            const std::string& source_name,
                                            const EstimatorSettings& base = {});
 
+/// Every setting with its value, as YAML in the settings file's shape (so that
+/// parse_estimator_settings of it gives `settings` back): `opf config --dump` and the provenance of
+/// result files.
+std::string dump_estimator_settings(const EstimatorSettings& settings);
+
 }  // namespace opf

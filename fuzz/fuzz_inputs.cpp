@@ -5,6 +5,7 @@
 #include "io/measurement_log.h"
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -16,19 +17,33 @@ namespace {
   throw std::logic_error("fuzz: " + what);
 }
 
+// What the reader accepts keeps its promises: frames in increasing time, finite poses.
+void check_frame(const Frame& frame, std::optional<double>& last_t) {
+  if (last_t && !(*last_t < frame.t)) fail("frames out of order");
+  if (!std::isfinite(frame.t)) fail("a non-finite frame time");
+  last_t = frame.t;
+  for (const Detection& d : frame.detections)
+    for (const double v : d.pose.asVectorVal())
+      if (!std::isfinite(v)) fail("a non-finite pose was accepted");
+}
+
 }  // namespace
 
 void measurement_log(const std::uint8_t* data, std::size_t size) {
-  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  std::istringstream whole(text);
   try {
-    const MeasurementLog log = parse_measurement_log(in, "fuzz.csv");
-    // What the reader accepts keeps its promises: frames in increasing time, finite poses.
-    for (std::size_t k = 1; k < log.frames.size(); ++k)
-      if (!(log.frames[k - 1].t < log.frames[k].t)) fail("frames out of order");
-    for (const Frame& frame : log.frames)
-      for (const Detection& d : frame.detections)
-        for (const double v : d.pose.asVectorVal())
-          if (!std::isfinite(v)) fail("a non-finite pose was accepted");
+    const MeasurementLog log = parse_measurement_log(whole, "fuzz.csv");
+    std::optional<double> last_t;
+    for (const Frame& frame : log.frames) check_frame(frame, last_t);
+  } catch (const InputError&) {
+  }
+  // The same bytes as a stream (rows must then be in time order).
+  std::istringstream streamed(text);
+  try {
+    MeasurementStream stream(streamed, "fuzz.csv");
+    std::optional<double> last_t;
+    while (const std::optional<Frame> frame = stream.next()) check_frame(*frame, last_t);
   } catch (const InputError&) {
   }
 }

@@ -8,6 +8,9 @@
 #include "estimator_arguments.h"
 #include "estimators/estimator_settings_yaml.h"
 #include "estimators/registry.h"
+#include "provenance.h"
+
+#include <unistd.h>
 
 #include <filesystem>
 #include <iostream>
@@ -32,12 +35,13 @@ std::vector<OptionSpec> specs(bool reproduce) {
     s.push_back({"frames", "N", "track the first N frames only (default: all the file's)"});
     s.push_back({"no-figures", "", "write the CSVs and summary.json, not the figures"});
   }
+  s.push_back({"quiet", "", "no progress line (it is drawn only on a terminal anyway)"});
   for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
   return s;
 }
 
 int run_experiments(const std::vector<std::string>& paths, const Arguments& args,
-                    const std::filesystem::path& out) {
+                    const std::string& command, const std::filesystem::path& out) {
   const auto names =
       args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
   for (const auto& name : names) make_estimator_factory(name, EstimatorSettings{});  // fail early
@@ -52,10 +56,13 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   const bool with_figures = !args.has("no-figures");
 
   std::vector<experiments::ExperimentResults> all;
+  std::vector<std::pair<std::string, EstimatorSettings>> effective;  // per experiment
   std::vector<std::filesystem::path> figures;
   std::filesystem::create_directories(out);
-  const auto progress = [](const std::string& line) {
-    std::cerr << "\r\033[K" << line << std::flush;
+  // A progress line redrawn in place: on a terminal only, so that no escape codes reach a file.
+  const bool show_progress = !args.has("quiet") && isatty(STDERR_FILENO) != 0;
+  const auto progress = [show_progress](const std::string& line) {
+    if (show_progress) std::cerr << "\r\033[K" << line << std::flush;
   };
   for (const std::string& path : paths) {
     sim::ExperimentConfig config = sim::load_experiment(path);
@@ -72,6 +79,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     // place one themselves.
     if (!settings.opf.occluder.camera_position)
       settings.opf.occluder.camera_position = config.camera.position;
+    effective.emplace_back(config.name, settings);
     if (config.closed_loop) {
       all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
                                                  threads, first_seed));
@@ -87,11 +95,12 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
       for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
         figures.push_back(std::move(figure));
   }
-  std::cerr << "\r\033[K";
+  if (show_progress) std::cerr << "\r\033[K";
   // The runs CSV last: its presence tells a sweep that this run finished.
   for (const auto& results : all)
     experiments::write_records_csv(out / (results.experiment + "_frames.csv"), results);
-  experiments::write_summary_json(out / "summary.json", all);
+  experiments::write_summary_json(out / "summary.json", all,
+                                  provenance_json(command, effective, 2));
   for (const auto& results : all)
     experiments::write_runs_csv(out / (results.experiment + "_runs.csv"), results);
   experiments::print_results_table(std::cout, all);
@@ -118,7 +127,7 @@ int run_command(const std::vector<std::string>& raw) {
   if (positional.size() != 1) throw UsageError{"expected one experiment file"};
   const std::string name = std::filesystem::path(positional[0]).stem().string();
   return run_experiments(
-      positional, args,
+      positional, args, command_line("run", raw),
       args.get("out").value_or((std::filesystem::path("results") / name).string()));
 }
 
@@ -138,7 +147,7 @@ int reproduce_command(const std::vector<std::string>& raw) {
   }
   const std::string dir = std::string(OPF_SOURCE_DIR) + "/experiments/";
   return run_experiments({dir + "general_op.yaml", dir + "sugar_drop.yaml", dir + "baseball.yaml"},
-                         args, args.get("out").value_or("results"));
+                         args, command_line("reproduce", raw), args.get("out").value_or("results"));
 }
 
 }  // namespace opf::cli

@@ -2,6 +2,7 @@
 
 #include "arguments.h"
 #include "cli/version.h"
+#include "config_command.h"
 #include "core/heap_policy.h"
 #include "detect_command.h"
 #include "dropout_command.h"
@@ -32,6 +33,7 @@ constexpr const char* kHelp =
     "  sweep      run a grid of experiment runs across the cores, resumable, into one table\n"
     "  detect     segment objects in a real video and write their poses as a measurement log\n"
     "  dropout    remove objects' detections from a measurement log in periodic windows\n"
+    "  config     print the effective estimator settings (--dump) as YAML\n"
     "\n"
     "Run 'opf <command> --help' for a command's options.\n";
 
@@ -59,6 +61,7 @@ int main(int argc, char** argv) {
     if (command == "sweep") return opf::cli::sweep_command(rest);
     if (command == "detect") return opf::cli::detect_command(rest);
     if (command == "dropout") return opf::cli::dropout_command(rest);
+    if (command == "config") return opf::cli::config_command(rest);
     std::cerr << "opf: unknown command '" << command << "'\n\n" << kHelp;
     return 2;
   } catch (const opf::cli::UsageError& error) {

@@ -1,9 +1,13 @@
 #include "sweep_command.h"
 
 #include "arguments.h"
+#include "cli/presets.h"
 #include "drivers/sweep_executor.h"
 #include "drivers/sweep_plan.h"
 #include "drivers/sweep_table.h"
+#include "estimators/estimator_settings_yaml.h"
+#include "io/atomic_file.h"
+#include "provenance.h"
 
 #include <unistd.h>
 
@@ -93,6 +97,13 @@ int sweep_command(const std::vector<std::string>& raw) {
   }
   const std::filesystem::path table = out / (spec.name + ".csv");
   const std::size_t ok = experiments::write_sweep_table(spec, runs, out, table);
+  // Beside the table, how it was made: each run's own summary.json carries its full settings
+  // (the preset's, the experiment's, the run's settings.yaml); these are the preset's.
+  EstimatorSettings base;
+  if (preset == "paper") base = parse_estimator_settings(kPaperPresetYaml, "preset paper");
+  write_file_atomically(out / (spec.name + ".provenance.json"), [&](std::ostream& os) {
+    os << provenance_json(command_line("sweep", raw), {{"", base}}) << "\n";
+  });
   experiments::print_sweep_summary(std::cout, table);
   std::cout << "\n"
             << ok << " of " << runs.size() << " runs in " << table.string() << " ("

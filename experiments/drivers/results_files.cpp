@@ -174,13 +174,16 @@ HypothesisStats hypothesis_stats(const ExperimentResults& results, const std::st
 }
 
 void write_summary_json(const std::filesystem::path& path,
-                        const std::vector<ExperimentResults>& experiments) {
+                        const std::vector<ExperimentResults>& experiments,
+                        const std::string& provenance) {
   write_file_atomically(path, [&](std::ostream& out) {
     const auto stat = [&](const char* name, const MeanStd& m, bool last) {
       out << "        \"" << name << "\": {\"mean\": " << number(m.mean)
           << ", \"std\": " << number(m.std) << "}" << (last ? "\n" : ",\n");
     };
-    out << "{\n  \"experiments\": {\n";
+    out << "{\n";
+    if (!provenance.empty()) out << "  \"provenance\": " << provenance << ",\n";
+    out << "  \"experiments\": {\n";
     for (std::size_t e = 0; e < experiments.size(); ++e) {
       const ExperimentResults& x = experiments[e];
       out << "    \"" << x.experiment << "\": {\n";

@@ -47,8 +47,11 @@ struct HypothesisStats {
 };
 HypothesisStats hypothesis_stats(const ExperimentResults& results, const std::string& estimator);
 
+/// `provenance`, when not empty, is a JSON object (how the results were made, see the `opf`
+/// program's provenance.h) written first under "provenance".
 void write_summary_json(const std::filesystem::path& path,
-                        const std::vector<ExperimentResults>& experiments);
+                        const std::vector<ExperimentResults>& experiments,
+                        const std::string& provenance = "");
 
 /// Per experiment: each estimator's errors (mean +- std over seeds), the OPF/PF ratios, and the
 /// paper's Table I numbers where the paper has them.

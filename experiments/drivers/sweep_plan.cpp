@@ -1,42 +1,11 @@
 #include "drivers/sweep_plan.h"
 
-#include <cstdio>
+#include "io/json_text.h"
+
 #include <string>
 #include <string_view>
 
 namespace opf::experiments {
-namespace {
-
-std::string json_string(std::string_view text) {
-  std::string s = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"':
-        s += "\\\"";
-        break;
-      case '\\':
-        s += "\\\\";
-        break;
-      case '\n':
-        s += "\\n";
-        break;
-      case '\t':
-        s += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buffer[8];
-          std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-          s += buffer;
-        } else {
-          s += c;
-        }
-    }
-  }
-  return s + "\"";
-}
-
-}  // namespace
 
 void write_sweep_plan(std::ostream& json, const SweepSpec& spec, const std::vector<SweepRun>& runs,
                       const std::filesystem::path& out) {

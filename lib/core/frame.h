@@ -19,6 +19,9 @@ struct Detection {
 struct Frame {
   double t = 0.0;
   std::vector<Detection> detections;
+  /// True for a frame the log has no row at: inserted inside a gap at the log's frame period, so
+  /// that every object is estimated there too.
+  bool filled = false;
 
   /// The detection of `object`, or nullptr when the object is unobserved in this frame.
   const Detection* find(std::string_view object) const {

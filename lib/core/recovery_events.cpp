@@ -7,10 +7,11 @@ namespace opf {
 namespace {
 
 // The events in the order they are written, each with its word.
-constexpr std::array<std::pair<std::string_view, bool RecoveryEvents::*>, 3> kEvents = {{
+constexpr std::array<std::pair<std::string_view, bool RecoveryEvents::*>, 4> kEvents = {{
     {"reset", &RecoveryEvents::sensor_reset},
     {"underflow", &RecoveryEvents::weights_underflow},
     {"capped", &RecoveryEvents::trace_capped},
+    {"filled", &RecoveryEvents::frame_filled},
 }};
 
 }  // namespace

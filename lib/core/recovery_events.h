@@ -24,13 +24,16 @@ struct RecoveryEvents {
   /// "capped": the OPF's Q~ reached its cap (UncertaintyOptions::max_scale) and no longer grows
   /// with the time hidden, so trace(Q~) stays finite through an occlusion of any length.
   bool trace_capped = false;
+  /// "filled": the log has no row at this frame; it was inserted inside a gap at the log's frame
+  /// period (Frame::filled), so the estimate is a prediction through the gap.
+  bool frame_filled = false;
 
-  bool any() const { return sensor_reset || weights_underflow || trace_capped; }
+  bool any() const { return sensor_reset || weights_underflow || trace_capped || frame_filled; }
   friend bool operator==(const RecoveryEvents&, const RecoveryEvents&) = default;
 };
 
-/// The mode column's text: the mode word, then "+reset", "+underflow" and "+capped" in that order
-/// for each event that occurred.
+/// The mode column's text: the mode word, then "+reset", "+underflow", "+capped" and "+filled" in
+/// that order for each event that occurred.
 std::string mode_column(EstimateMode mode, const RecoveryEvents& events);
 
 /// What a mode column says, or nullopt when it is not a mode word followed by known events.

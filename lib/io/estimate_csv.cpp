@@ -91,7 +91,7 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
     if (!parse_mode_column(record.mode))
       reader.fail(column[10],
                   "expected a mode (measured, predicted, dynamics, occluder or "
-                  "random_walk) optionally followed by +reset, +underflow, +capped; "
+                  "random_walk) optionally followed by +reset, +underflow, +capped, +filled; "
                   "got '" +
                       record.mode + "'");
     if (hypothesis_column) {

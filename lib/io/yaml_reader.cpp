@@ -1,5 +1,6 @@
 #include "io/yaml_reader.h"
 
+#include "io/csv.h"
 #include "io/input_error.h"
 
 #include <algorithm>
@@ -106,25 +107,73 @@ YamlReader::YamlReader(const YAML::Node& node, std::string key_path, std::string
   }
 }
 
+void YamlReader::record_into(YAML::Node node) {
+  record_ = node;
+  recording_ = true;
+}
+
+void YamlReader::record(std::string_view key, double value) {
+  if (recording_) record_[std::string(key)] = csv::format_double(value);
+}
+
+void YamlReader::record(std::string_view key, std::size_t value) {
+  if (recording_) record_[std::string(key)] = value;
+}
+
+void YamlReader::record(std::string_view key, bool value) {
+  if (recording_) record_[std::string(key)] = value;
+}
+
+void YamlReader::record(std::string_view key, const std::string& value) {
+  if (recording_) record_[std::string(key)] = value;
+}
+
+void YamlReader::record(std::string_view key, const std::vector<double>& values) {
+  if (!recording_ || values.empty()) return;  // an optional value not set
+  YAML::Node list(YAML::NodeType::Sequence);
+  for (const double v : values) list.push_back(csv::format_double(v));
+  list.SetStyle(YAML::EmitterStyle::Flow);
+  record_[std::string(key)] = list;
+}
+
+void YamlReader::record(std::string_view key, const std::vector<std::string>& values) {
+  if (!recording_ || values.empty()) return;
+  YAML::Node list(YAML::NodeType::Sequence);
+  for (const std::string& v : values) list.push_back(v);
+  list.SetStyle(YAML::EmitterStyle::Flow);
+  record_[std::string(key)] = list;
+}
+
 void YamlReader::get(std::string_view key, double& out) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   const auto value = to_number(scalar(*entry, "a number"));
   if (!value) fail(key, "expected a finite number, got " + describe(entry->value));
   out = *value;
+  record(key, out);
 }
 
 void YamlReader::get(std::string_view key, std::size_t& out) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   const auto value = to_count(scalar(*entry, "a non-negative integer"));
   if (!value) fail(key, "expected a non-negative integer, got " + describe(entry->value));
   out = *value;
+  record(key, out);
 }
 
 void YamlReader::get(std::string_view key, std::vector<double>& out, std::size_t size) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   const std::string expectation = "a sequence of " + std::to_string(size) + " numbers";
   if (!entry->value.IsSequence() || entry->value.size() != size)
     fail(key, "expected " + expectation + ", got " + describe(entry->value));
@@ -135,30 +184,43 @@ void YamlReader::get(std::string_view key, std::vector<double>& out, std::size_t
     values.push_back(*value);
   }
   out = std::move(values);
+  record(key, out);
 }
 
 void YamlReader::get(std::string_view key, bool& out) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   scalar(*entry, "true or false");
   bool value = false;
   if (!YAML::convert<bool>::decode(entry->value, value))
     fail(key, "expected true or false, got " + describe(entry->value));
   out = value;
+  record(key, out);
 }
 
 void YamlReader::get(std::string_view key, std::string& out) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   out = scalar(*entry, "a string");
+  record(key, out);
 }
 
 void YamlReader::get(std::string_view key, std::vector<std::string>& out) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   const std::string expectation = "a list of names or values";
   if (entry->value.IsScalar()) {
     out = {entry->value.Scalar()};
+    record(key, out);
     return;
   }
   if (!entry->value.IsSequence() || entry->value.size() == 0)
@@ -174,6 +236,7 @@ void YamlReader::get(std::string_view key, std::vector<std::string>& out) {
     values.push_back(item.Scalar());
   }
   out = std::move(values);
+  record(key, out);
 }
 
 std::vector<YamlReader::Item> YamlReader::items(std::string_view key) {
@@ -188,19 +251,27 @@ std::vector<YamlReader::Item> YamlReader::items(std::string_view key) {
 
 void YamlReader::get_positive(std::string_view key, double& out) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   const auto value = to_number(scalar(*entry, "a positive number"));
   if (!value || !(*value > 0.0))
     fail(key, "expected a positive number, got " + describe(entry->value));
   out = *value;
+  record(key, out);
 }
 
 void YamlReader::get_positive(std::string_view key, std::size_t& out) {
   const Entry* entry = find(key);
-  if (entry == nullptr) return;
+  if (entry == nullptr) {
+    record(key, out);
+    return;
+  }
   const auto value = to_count(scalar(*entry, "a positive integer"));
   if (!value || *value < 1) fail(key, "expected a positive integer, got " + describe(entry->value));
   out = *value;
+  record(key, out);
 }
 
 void YamlReader::require(std::string_view key, bool ok, const std::string& expectation) const {
@@ -216,6 +287,10 @@ YamlReader& YamlReader::child(std::string_view key) {
   const Entry* entry = find(key);
   children_.push_back(
       std::make_unique<YamlReader>(entry ? entry->value : YAML::Node(), path, source_));
+  if (recording_) {
+    record_[std::string(key)] = YAML::Node(YAML::NodeType::Map);
+    children_.back()->record_into(record_[std::string(key)]);
+  }
   return *children_.back();
 }
 

@@ -69,6 +69,11 @@ class YamlReader {
   /// child; their paths read `key[i]`. InputError when `key` holds something else.
   std::vector<YamlReader*> sequence(std::string_view key);
 
+  /// From now on every get() also writes the key's final value (the file's, or the default it
+  /// left) into `node`, and every child() a nested mapping: reading an empty document this way
+  /// records every setting the reader knows, with its value (the effective settings, dumped).
+  void record_into(YAML::Node node);
+
   /// Throws InputError for the first key present in the file but never read here or in a child,
   /// suggesting the closest known key by edit distance ("did you mean 'scheme'?").
   void finish() const;
@@ -94,6 +99,15 @@ class YamlReader {
   /// The scalar text of a present key, InputError when it is a mapping, sequence or null.
   std::string scalar(const Entry& entry, const std::string& expectation) const;
 
+  void record(std::string_view key, double value);
+  void record(std::string_view key, std::size_t value);
+  void record(std::string_view key, bool value);
+  void record(std::string_view key, const std::string& value);
+  void record(std::string_view key, const std::vector<double>& values);
+  void record(std::string_view key, const std::vector<std::string>& values);
+
+  bool recording_ = false;
+  YAML::Node record_;
   std::string key_path_;
   std::string source_;
   std::size_t line_ = 0;  ///< of the mapping itself; 0 when absent from the file

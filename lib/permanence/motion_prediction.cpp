@@ -2,6 +2,8 @@
 
 #include "core/so3.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -9,6 +11,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -686,27 +689,31 @@ std::optional<RecentVelocity> recent_velocity(const std::deque<MotionSample>& hi
   if (history.size() < 3) return std::nullopt;
   const MotionSample& last = history.back();
   const Eigen::Quaterniond last_inverse = last.measured_orientation.normalized().conjugate();
-  // Six channels per sample: the position and the rotation vector relative to the last sample.
+  // Six channels per sample: the position and the rotation vector relative to the last sample,
+  // at tau = t - t_last <= 0; computed once for the line, its residuals and the quadratic.
   using Channels = Eigen::Matrix<double, 6, 1>;
-  const auto channels = [&](const MotionSample& s) {
+  struct Sample {
+    double tau;
     Channels c;
-    c << s.measured_position - last.measured_position,
-        so3::log(last_inverse * s.measured_orientation.normalized());
-    return c;
   };
+  std::vector<Sample> samples;
+  for (auto it = history.rbegin(); it != history.rend() && last.t - it->t <= window; ++it) {
+    Sample s{it->t - last.t, Channels()};
+    s.c << it->measured_position - last.measured_position,
+        so3::log(last_inverse * it->measured_orientation.normalized());
+    samples.push_back(s);
+  }
+  const std::size_t n = samples.size();
+  if (n < 3) return std::nullopt;
   // Least-squares slopes about the window's mean time.
   double st = 0.0, stt = 0.0;
   Channels sc = Channels::Zero(), stc = Channels::Zero();
-  std::size_t n = 0;
-  for (auto it = history.rbegin(); it != history.rend() && last.t - it->t <= window; ++it, ++n) {
-    const double tau = it->t - last.t;
-    const Channels c = channels(*it);
-    st += tau;
-    stt += tau * tau;
-    sc += c;
-    stc += tau * c;
+  for (const Sample& s : samples) {
+    st += s.tau;
+    stt += s.tau * s.tau;
+    sc += s.c;
+    stc += s.tau * s.c;
   }
-  if (n < 3) return std::nullopt;
   const double count = static_cast<double>(n);
   const double denominator = stt - st * st / count;
   if (!(denominator > 0.0)) return std::nullopt;
@@ -716,21 +723,46 @@ std::optional<RecentVelocity> recent_velocity(const std::deque<MotionSample>& hi
   // channel's slope is shrunk by v^2 / (v^2 + se^2), its squared standard error from the
   // residuals about the line (a Wiener gain), so a clear motion drifts in full and jitter not.
   Channels residual_squares = Channels::Zero();
-  std::size_t k = 0;
-  for (auto it = history.rbegin(); k < n; ++it, ++k) {
-    const double tau = it->t - last.t;
-    residual_squares += (channels(*it) - intercept - slope * tau).cwiseAbs2();
-  }
+  for (const Sample& s : samples) residual_squares += (s.c - intercept - slope * s.tau).cwiseAbs2();
   const Channels slope_variance = residual_squares / ((count - 2.0) * denominator);
   const Channels slope_squared = slope.cwiseAbs2();
   Channels gain = Channels::Ones();
   for (int i = 0; i < 6; ++i)
     if (slope_squared[i] + slope_variance[i] > 0.0)
       gain[i] = slope_squared[i] / (slope_squared[i] + slope_variance[i]);
-  const Channels shrunk = slope.cwiseProduct(gain);
+  Channels drift = slope.cwiseProduct(gain);
+
+  // Under a clear acceleration (gravity on a thrown ball) the line's slope is the velocity at the
+  // window's middle, half a window late: a quadratic's slope at the last sample (tau = 0) is used
+  // instead on each channel whose curvature stands out of the noise by kCurvatureSignificance
+  // standard errors (high: a hand-carried object's noisy end-point slope would only add jitter).
+  constexpr double kCurvatureSignificance = 10.0;
+  if (n >= 6) {
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Matrix<double, 3, 6> moments = Eigen::Matrix<double, 3, 6>::Zero();
+    for (const Sample& s : samples) {
+      const Eigen::Vector3d basis(1.0, s.tau, s.tau * s.tau);
+      normal += basis * basis.transpose();
+      moments += basis * s.c.transpose();
+    }
+    const Eigen::LDLT<Eigen::Matrix3d> solver(normal);
+    const Eigen::Matrix<double, 3, 6> coefficients = solver.solve(moments);
+    const double curvature_variance_factor = solver.solve(Eigen::Vector3d::UnitZ())(2);
+    Channels quadratic_residuals = Channels::Zero();
+    for (const Sample& s : samples) {
+      const Eigen::Vector3d basis(1.0, s.tau, s.tau * s.tau);
+      quadratic_residuals += (s.c - coefficients.transpose() * basis).cwiseAbs2();
+    }
+    for (int i = 0; i < 6; ++i) {
+      const double variance = quadratic_residuals[i] / (count - 3.0) * curvature_variance_factor;
+      const double curvature = coefficients(2, i);
+      if (curvature * curvature > kCurvatureSignificance * kCurvatureSignificance * variance)
+        drift[i] = coefficients(1, i);
+    }
+  }
   RecentVelocity v;
-  v.linear = shrunk.head<3>();
-  v.angular = shrunk.tail<3>();
+  v.linear = drift.head<3>();
+  v.angular = drift.tail<3>();
   return v;
 }
 

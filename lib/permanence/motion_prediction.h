@@ -157,9 +157,11 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> his
 MotionPrediction continued(const MotionPrediction& prediction, double t_last,
                            const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation);
 
-/// The velocity and body-frame angular velocity of the last `window` seconds of `history` by a
-/// least-squares line (for the particles' drift while the object is visible). Nothing when fewer
-/// than three samples lie in the window.
+/// The velocity and body-frame angular velocity of the last `window` seconds of `history` (for the
+/// particles' drift while the object is visible): per channel the slope of a least-squares line,
+/// shrunk by its significance, or, where a quadratic's curvature stands 10 standard errors out of
+/// the noise (a thrown object under gravity), the quadratic's slope at the last sample. Nothing
+/// when fewer than three samples lie in the window.
 struct RecentVelocity {
   Eigen::Vector3d linear = Eigen::Vector3d::Zero();   ///< m/s, world frame
   Eigen::Vector3d angular = Eigen::Vector3d::Zero();  ///< rad/s, body frame of the last sample

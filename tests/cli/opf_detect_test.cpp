@@ -166,8 +166,16 @@ TEST_F(OpfProgram, DetectReadsAFolderOfImagesAtTheGivenRate) {
   EXPECT_EQ(err(), "");  // no progress bar when stderr is not a terminal
   const std::string text = read(log_path);
   EXPECT_EQ(text.substr(0, text.find('\n')), "t,object,x,y,z,qx,qy,qz,qw");
-  const MeasurementLog log = read_measurement_log(log_path);
-  ASSERT_EQ(log.frames.size(), 4u);  // frames 1, 2, 4, 5: none at frame 3
+  // The log's frames are 1, 2, 4, 5; reading it fills frame 3, where the box was not found.
+  const MeasurementLog filled = read_measurement_log(log_path);
+  ASSERT_EQ(filled.frames.size(), 5u);
+  EXPECT_TRUE(filled.frames[2].filled);
+  EXPECT_TRUE(filled.frames[2].detections.empty());
+  EXPECT_NEAR(filled.frames[2].t, 0.15, 1e-12);
+  LogReadOptions log_frames_only;
+  log_frames_only.fill_gaps = false;
+  const MeasurementLog log = read_measurement_log(log_path, log_frames_only);
+  ASSERT_EQ(log.frames.size(), 4u);
   const double expected_t[] = {0.05, 0.1, 0.2, 0.25};
   for (std::size_t i = 0; i < 4; ++i) {
     EXPECT_EQ(log.frames[i].t, expected_t[i]);

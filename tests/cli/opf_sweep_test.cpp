@@ -80,6 +80,14 @@ TEST_F(OpfSweep, RunsTheGridMatchesOpfRunAndResumes) {
   EXPECT_EQ(rows[3].at("opf.uncertainty.kappa"), "1.1");
   EXPECT_EQ(rows[3].at("seed"), "1");
   EXPECT_NE(out().find("general_op  opf  default  1.1  ->"), std::string::npos) << out();
+  // Beside the table, how it was made; each run's summary.json has its own settings.
+  const std::string provenance = read(results / "tiny.provenance.json");
+  EXPECT_NE(provenance.find("\"command\": \"opf sweep " + sweep.string()), std::string::npos)
+      << provenance;
+  EXPECT_NE(provenance.find("\"commit\": "), std::string::npos) << provenance;
+  const std::string run_summary =
+      read(results / "general_op/opf/default/opf.uncertainty.kappa=1.1/seed_1/summary.json");
+  EXPECT_NE(run_summary.find("\"kappa\": 1.1"), std::string::npos) << run_summary;
 
   // The same seeds from one `opf run` with kappa 1.1.
   std::ofstream(dir_ / "kappa.yaml") << "opf:\n  uncertainty:\n    kappa: 1.1\n";

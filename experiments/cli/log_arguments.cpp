@@ -1,0 +1,59 @@
+#include "log_arguments.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace opf::cli {
+
+std::vector<OptionSpec> log_option_specs() {
+  return {
+      {"time-unit", "s|ms|us|ns",
+       "unit of the log's t (default s; a log whose times cannot be seconds is refused)"},
+      {"length-unit", "m|mm",
+       "unit of the log's x, y, z (default m; objects faster than 100 m/s are refused as mm)"},
+      {"columns", "NAME=COL,...",
+       "the log's own column names, e.g. qx=rx,qy=ry,qz=rz,qw=rw (default: the format's names)"},
+      {"frame-tolerance", "S",
+       "rows this close in time (s) form one frame (default: a quarter of the median interval "
+       "between one object's detections; 0: equal times only)"},
+      {"rate", "HZ", "frame rate at which gaps in the log are filled (default: inferred from it)"},
+      {"no-fill", "", "keep only the log's frames: no estimates inside gaps"},
+  };
+}
+
+LogReadOptions log_options_from(const Arguments& args) {
+  LogReadOptions options;
+  if (const auto unit = args.get("time-unit")) {
+    options.time_unit = parse_time_unit(*unit);
+    if (!options.time_unit)
+      throw UsageError{"option '--time-unit': expected s, ms, us or ns, got \"" + *unit + "\""};
+  }
+  if (const auto unit = args.get("length-unit")) {
+    options.length_unit = parse_length_unit(*unit);
+    if (!options.length_unit)
+      throw UsageError{"option '--length-unit': expected m or mm, got \"" + *unit + "\""};
+  }
+  if (const auto columns = args.get("columns")) {
+    try {
+      options.columns = parse_column_mapping(*columns);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError{"option '--columns': " + std::string(e.what())};
+    }
+  }
+  if (const auto tolerance = args.get_number("frame-tolerance")) {
+    if (*tolerance < 0.0) throw UsageError{"option '--frame-tolerance' expects seconds >= 0"};
+    options.frame_tolerance = *tolerance;
+  }
+  if (const auto rate = args.get_number("rate")) {
+    if (!(*rate > 0.0)) throw UsageError{"option '--rate' expects a frame rate in Hz > 0"};
+    options.rate = *rate;
+  }
+  options.fill_gaps = !args.has("no-fill");
+  if (!options.fill_gaps && options.rate)
+    throw UsageError{
+        "options '--rate' and '--no-fill' contradict each other: --rate sets the "
+        "rate gaps are filled at"};
+  return options;
+}
+
+}  // namespace opf::cli

@@ -1,0 +1,60 @@
+#pragma once
+// How a measurement log is read when it was not written the way the toolkit writes its own: the
+// units of its times and positions, its column names, how far apart the clocks of one frame's
+// detections may be, and whether frames missing inside gaps are filled.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace opf {
+
+enum class TimeUnit { kSeconds, kMilliseconds, kMicroseconds, kNanoseconds };
+enum class LengthUnit { kMetres, kMillimetres };
+
+struct LogReadOptions {
+  /// The unit of t. Unset: seconds, and a log whose times cannot be seconds (one object detected
+  /// less often than every 10 s, or epoch-like values past the year 5000) is refused with the unit
+  /// they look like.
+  std::optional<TimeUnit> time_unit;
+  /// The unit of x, y, z. Unset: metres, and a log whose objects move faster than
+  /// kMaxPlausibleSpeed between detections (median) is refused as millimetres.
+  std::optional<LengthUnit> length_unit;
+  /// Rows this close in time (seconds) belong to one frame. Unset: a quarter of the median
+  /// interval between one object's detections; 0: only equal times share a frame.
+  std::optional<double> frame_tolerance;
+  /// Column names of the file for the canonical ones (t, object, x, y, z, qx, qy, qz, qw), e.g.
+  /// {"qx", "rx"}; columns not named keep their canonical name.
+  std::vector<std::pair<std::string, std::string>> columns;
+  /// Insert empty frames where the log has none for longer than 1.5 frame periods.
+  bool fill_gaps = true;
+  /// The frame rate (Hz) gaps are filled at. Unset: the median of the recent frame intervals.
+  std::optional<double> rate;
+};
+
+/// Objects faster than this (m/s, median between detections) are taken as logged in millimetres.
+inline constexpr double kMaxPlausibleSpeed = 100.0;
+/// One object's detections further apart than this (s, median) are taken as not in seconds.
+inline constexpr double kMaxPlausibleInterval = 10.0;
+/// Gaps longer than this (s) are not filled (reported instead): a clock jump, not a dropout.
+inline constexpr double kMaxFilledGap = 10.0;
+
+/// "s", "ms", "us", "ns" and "m", "mm": the names the command line and the settings file use.
+std::optional<TimeUnit> parse_time_unit(std::string_view name);
+std::optional<LengthUnit> parse_length_unit(std::string_view name);
+std::string_view to_string(TimeUnit unit);
+std::string_view to_string(LengthUnit unit);
+/// Seconds per unit, metres per unit.
+double seconds_per(TimeUnit unit);
+double metres_per(LengthUnit unit);
+
+/// The file's name of the canonical column `canonical` under `options.columns`.
+std::string mapped_column(const LogReadOptions& options, std::string_view canonical);
+
+/// "qx=rx,qy=ry" -> {{"qx", "rx"}, {"qy", "ry"}}. Throws std::invalid_argument naming the entry
+/// when one is not NAME=COLUMN, names no canonical column, or maps a column twice.
+std::vector<std::pair<std::string, std::string>> parse_column_mapping(std::string_view text);
+
+}  // namespace opf

@@ -1,0 +1,86 @@
+#include "io/log_row_reader.h"
+
+#include "core/pose_conversion.h"
+#include "io/input_error.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+namespace opf {
+namespace {
+
+constexpr std::array<std::string_view, 9> kColumns = {"t",  "object", "x",  "y", "z",
+                                                      "qx", "qy",     "qz", "qw"};
+constexpr std::size_t kPoseFields = 7;  // x, y, z, qx, qy, qz, qw: kColumns[2..8]
+constexpr double kQuaternionNormTolerance = 0.01;
+
+std::array<std::string, 9> file_names(const LogReadOptions& options) {
+  std::array<std::string, 9> names;
+  for (std::size_t i = 0; i < kColumns.size(); ++i) names[i] = mapped_column(options, kColumns[i]);
+  return names;
+}
+
+std::vector<std::string_view> views(const std::array<std::string, 9>& names) {
+  return {names.begin(), names.end()};
+}
+
+}  // namespace
+
+LogRowReader::LogRowReader(std::istream& in, const std::string& source,
+                           const LogReadOptions& options)
+    : names_(file_names(options)),
+      reader_(in, source, views(names_)),
+      seconds_per_unit_(options.time_unit ? seconds_per(*options.time_unit) : 1.0),
+      metres_per_unit_(options.length_unit ? metres_per(*options.length_unit) : 1.0) {
+  for (std::size_t i = 0; i < names_.size(); ++i) column_[i] = reader_.column(names_[i]);
+}
+
+const std::string& LogRowReader::column_name(std::string_view name) const {
+  const auto it = std::find(kColumns.begin(), kColumns.end(), name);
+  return names_.at(static_cast<std::size_t>(it - kColumns.begin()));
+}
+
+bool LogRowReader::next(LogRow& row) {
+  if (!reader_.next()) return false;
+  row.line = reader_.line();
+  row.t = reader_.number(column_[0]) * seconds_per_unit_;
+  row.object = reader_.field(column_[1]);
+  if (row.object.empty()) reader_.fail(column_[1], "expected an object name, got an empty field");
+  row.pose.reset();
+
+  std::size_t empty_fields = 0;
+  for (std::size_t i = 0; i < kPoseFields; ++i)
+    if (reader_.field(column_[2 + i]).empty()) ++empty_fields;
+  if (empty_fields == kPoseFields) return true;  // explicitly unobserved
+  if (empty_fields > 0) {
+    for (std::size_t i = 0; i < kPoseFields; ++i)
+      if (reader_.field(column_[2 + i]).empty())
+        reader_.fail(column_[2 + i],
+                     "empty while other pose fields are set; leave all seven of x,y,z,qx,qy,qz,qw "
+                     "empty to mark the object unobserved");
+  }
+
+  std::array<double, kPoseFields> pose{};
+  for (std::size_t i = 0; i < kPoseFields; ++i) pose[i] = reader_.number(column_[2 + i]);
+  const Eigen::Vector3d translation = Eigen::Vector3d(pose[0], pose[1], pose[2]) * metres_per_unit_;
+  Eigen::Quaterniond orientation(pose[6], pose[3], pose[4], pose[5]);  // Eigen takes w first
+  const double norm = orientation.norm();
+  if (!(std::abs(norm - 1.0) <= kQuaternionNormTolerance)) {
+    // Name the columns the fault spans; the line locates the row.
+    throw InputError(reader_.source(), reader_.line(),
+                     names_[5] + "," + names_[6] + "," + names_[7] + "," + names_[8],
+                     "expected a unit quaternion (norm within " +
+                         csv::format_double(kQuaternionNormTolerance) + " of 1), got norm " +
+                         csv::format_double(norm));
+  }
+  orientation.normalize();
+  row.pose = make_pose(translation, orientation);
+  return true;
+}
+
+}  // namespace opf

@@ -1,0 +1,48 @@
+#pragma once
+// One detection row of a measurement log at a time, in the toolkit's units (seconds, metres), with
+// the file's own column names mapped to the format's: the first stage of reading a log, shared by
+// whole-file reading and streams.
+
+#include "io/csv.h"
+#include "io/log_read_options.h"
+
+#include <mrpt/poses/CPose3D.h>
+
+#include <array>
+#include <cstddef>
+#include <istream>
+#include <optional>
+#include <string>
+
+namespace opf {
+
+struct LogRow {
+  double t = 0.0;  ///< seconds
+  std::string object;
+  /// Empty when all seven pose fields are: the object is unobserved at t.
+  std::optional<mrpt::poses::CPose3D> pose;
+  std::size_t line = 0;  ///< 1-based line in the file, for error messages
+};
+
+class LogRowReader {
+ public:
+  /// Reads the header; throws InputError when a (mapped) column is missing.
+  LogRowReader(std::istream& in, const std::string& source, const LogReadOptions& options);
+
+  /// The next row, false at the end of input. Throws InputError naming the file, line and column
+  /// of a malformed row.
+  bool next(LogRow& row);
+
+  const std::string& source() const { return reader_.source(); }
+  /// The file's name of the canonical column `name` ("t", "qx", ...).
+  const std::string& column_name(std::string_view name) const;
+
+ private:
+  std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
+  csv::Reader reader_;
+  std::array<std::size_t, 9> column_{};
+  double seconds_per_unit_ = 1.0;
+  double metres_per_unit_ = 1.0;
+};
+
+}  // namespace opf
