@@ -11,8 +11,15 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-60}"
 bash "$repo/scripts/setup.sh" >/dev/null  # clang and libclang-rt come from scripts/packages.txt
 build="$repo/build-fuzz"
-cmake -S "$repo/fuzz" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ >/dev/null
-cmake --build "$build" -j 2 >/dev/null
+mkdir -p "$build"
+# The build's output is kept, and shown when it fails: a fuzzer that does not build is a failure
+# to read, not a silent exit.
+if ! { cmake -S "$repo/fuzz" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ &&
+  cmake --build "$build" -j 2; } >"$build/build.log" 2>&1; then
+  echo "fuzz: building the fuzzers failed ($build/build.log):" >&2
+  grep -E "error|undefined reference" "$build/build.log" | head -n 20 >&2 || tail -n 40 "$build/build.log" >&2
+  exit 1
+fi
 status=0
 for target in measurement_log estimator_settings; do
   scratch="$(mktemp -d)"
