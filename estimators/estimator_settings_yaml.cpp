@@ -256,7 +256,7 @@ EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
   return settings;
 }
 
-std::string dump_estimator_settings(const EstimatorSettings& settings) {
+YAML::Node estimator_settings_node(const EstimatorSettings& settings) {
   // The reader is the schema: reading nothing over `settings` while recording visits every key
   // with its value, so the dump cannot miss an option the reader knows.
   YAML::Node root(YAML::NodeType::Map);
@@ -264,8 +264,12 @@ std::string dump_estimator_settings(const EstimatorSettings& settings) {
   yaml.record_into(root);
   EstimatorSettings copy = settings;
   read_settings(yaml, copy);
+  return root;
+}
+
+std::string dump_estimator_settings(const EstimatorSettings& settings) {
   YAML::Emitter out;
-  out << root;
+  out << estimator_settings_node(settings);
   return std::string(out.c_str()) + "\n";
 }
 

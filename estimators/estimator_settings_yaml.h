@@ -29,6 +29,8 @@
 
 #include "estimators/estimator_settings.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include <filesystem>
 #include <string>
 
@@ -46,8 +48,9 @@ EstimatorSettings parse_estimator_settings(const std::string& yaml_text,
                                            const EstimatorSettings& base = {});
 
 /// Every setting with its value, as YAML in the settings file's shape (so that
-/// parse_estimator_settings of it gives `settings` back): `opf config --dump` and the provenance of
-/// result files.
+/// parse_estimator_settings of it gives `settings` back): `opf config --dump`.
 std::string dump_estimator_settings(const EstimatorSettings& settings);
+/// The same as a YAML tree (numbers as their shortest exact text): the provenance of result files.
+YAML::Node estimator_settings_node(const EstimatorSettings& settings);
 
 }  // namespace opf

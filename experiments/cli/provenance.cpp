@@ -4,8 +4,6 @@
 #include "estimators/estimator_settings_yaml.h"
 #include "io/json_text.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <sstream>
 
 namespace opf::cli {
@@ -29,7 +27,7 @@ std::string shell_quoted(const std::string& arg) {
 }
 
 std::string settings_json(const EstimatorSettings& settings, std::size_t indent) {
-  return yaml_as_json(YAML::Load(dump_estimator_settings(settings)), indent);
+  return yaml_as_json(estimator_settings_node(settings), indent);
 }
 
 }  // namespace

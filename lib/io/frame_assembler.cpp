@@ -53,7 +53,12 @@ TimeUnit unit_of_epoch(double t) {
 }  // namespace
 
 FrameAssembler::FrameAssembler(std::string source, const LogReadOptions& options)
-    : source_(std::move(source)), options_(options) {}
+    : source_(std::move(source)),
+      options_(options),
+      t_column_(mapped_column(options, "t")),
+      object_column_(mapped_column(options, "object")),
+      position_columns_(mapped_column(options, "x") + "," + mapped_column(options, "y") + "," +
+                        mapped_column(options, "z")) {}
 
 void FrameAssembler::fail(std::size_t line, const std::string& column,
                           const std::string& message) const {
@@ -110,13 +115,12 @@ void FrameAssembler::calibrate() {
     previous = &row;
   }
   object_interval_ = median(intervals);
-  const std::string t_column = mapped_column(options_, "t");
 
   if (!options_.time_unit && !pending_.empty()) {
     const LogRow& first = pending_.front();
     if (std::abs(first.t) > 1e11) {
       const TimeUnit unit = unit_of_epoch(std::abs(first.t));
-      fail(first.line, t_column,
+      fail(first.line, t_column_,
            "t = " + csv::format_double(first.t) +
                " cannot be seconds (past the year 5000); the times look like " +
                std::string(to_string(unit)) + " since 1970: pass --time-unit " +
@@ -124,7 +128,7 @@ void FrameAssembler::calibrate() {
     }
     if (object_interval_ > kMaxPlausibleInterval) {
       const TimeUnit unit = unit_of_interval(object_interval_);
-      fail(interval_line, t_column,
+      fail(interval_line, t_column_,
            "one object's detections are a median " + csv::format_double(object_interval_) +
                " apart, which cannot be seconds (over " + seconds_text(kMaxPlausibleInterval) +
                "); the times look like " + std::string(to_string(unit)) + ": pass --time-unit " +
@@ -134,9 +138,7 @@ void FrameAssembler::calibrate() {
   if (!options_.length_unit && !speeds.empty()) {
     const double speed = median(speeds);
     if (speed > kMaxPlausibleSpeed)
-      fail(interval_line,
-           mapped_column(options_, "x") + "," + mapped_column(options_, "y") + "," +
-               mapped_column(options_, "z"),
+      fail(interval_line, position_columns_,
            "the objects move a median " + csv::format_double(speed) +
                " m/s between detections (over " + csv::format_double(kMaxPlausibleSpeed) +
                " m/s); the positions look like millimetres: pass --length-unit mm (or "
@@ -152,17 +154,16 @@ void FrameAssembler::calibrate() {
 
 void FrameAssembler::add(LogRow row) {
   const double tolerance = report_.frame_tolerance;
-  const std::string t_column = mapped_column(options_, "t");
   if (open_) {
     const bool fits = row.t >= start_ - tolerance && row.t - start_ <= tolerance;
     if (const auto member = members_.find(row.object); member != members_.end()) {
       const auto [t, line] = member->second;
       if (t == row.t)
-        fail(row.line, mapped_column(options_, "object"),
+        fail(row.line, object_column_,
              "object '" + row.object + "' appears twice at t = " + csv::format_double(row.t) +
                  " (first on line " + std::to_string(line) + ")");
       if (fits)
-        fail(row.line, t_column,
+        fail(row.line, t_column_,
              "object '" + row.object + "' has a second row " + seconds_text(std::abs(row.t - t)) +
                  " from its row on line " + std::to_string(line) + ", within the frame tolerance " +
                  seconds_text(tolerance) +
@@ -170,7 +171,7 @@ void FrameAssembler::add(LogRow row) {
                  "--frame-tolerance (0: only equal times share a frame)");
     }
     if (row.t < start_ - tolerance)
-      fail(row.line, t_column,
+      fail(row.line, t_column_,
            "out of order: t = " + csv::format_double(row.t) +
                " comes after a row at t = " + csv::format_double(start_) +
                "; a stream must be in time order (a whole file read at once may be unsorted)");
@@ -178,7 +179,7 @@ void FrameAssembler::add(LogRow row) {
   }
   if (!open_) {
     if (last_frame_t_ && row.t <= *last_frame_t_)
-      fail(row.line, t_column,
+      fail(row.line, t_column_,
            "out of order: t = " + csv::format_double(row.t) +
                " is not after the frame at t = " + csv::format_double(*last_frame_t_) +
                " already produced; a stream must be in time order (a whole file read at once may "
@@ -228,8 +229,7 @@ void FrameAssembler::close_frame() {
     report_.frame_period = gap_period();
   }
   last_frame_t_ = frame_.t;
-  emit(std::move(frame_));
-  frame_ = Frame{};
+  emit(std::move(frame_));  // the next row's add() starts a fresh frame_
 }
 
 void FrameAssembler::emit(Frame frame) {

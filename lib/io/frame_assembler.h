@@ -56,6 +56,10 @@ class FrameAssembler {
 
   std::string source_;
   LogReadOptions options_;
+  // The file's names of the columns errors point at.
+  std::string t_column_;
+  std::string object_column_;
+  std::string position_columns_;  // "x,y,z"
   FrameAssemblyReport report_;
 
   // Until calibrated: the rows so far and the objects they name.

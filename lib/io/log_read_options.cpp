@@ -7,61 +7,62 @@
 namespace opf {
 namespace {
 
-constexpr std::array<std::pair<std::string_view, TimeUnit>, 4> kTimeUnits = {{
-    {"s", TimeUnit::kSeconds},
-    {"ms", TimeUnit::kMilliseconds},
-    {"us", TimeUnit::kMicroseconds},
-    {"ns", TimeUnit::kNanoseconds},
+// Each unit with its name and its size in seconds or metres.
+template <class Unit>
+struct UnitEntry {
+  std::string_view name;
+  Unit unit;
+  double size;
+};
+constexpr std::array<UnitEntry<TimeUnit>, 4> kTimeUnits = {{
+    {"s", TimeUnit::kSeconds, 1.0},
+    {"ms", TimeUnit::kMilliseconds, 1e-3},
+    {"us", TimeUnit::kMicroseconds, 1e-6},
+    {"ns", TimeUnit::kNanoseconds, 1e-9},
 }};
-constexpr std::array<std::pair<std::string_view, LengthUnit>, 2> kLengthUnits = {{
-    {"m", LengthUnit::kMetres},
-    {"mm", LengthUnit::kMillimetres},
+constexpr std::array<UnitEntry<LengthUnit>, 2> kLengthUnits = {{
+    {"m", LengthUnit::kMetres, 1.0},
+    {"mm", LengthUnit::kMillimetres, 1e-3},
 }};
-constexpr std::array<std::string_view, 9> kCanonicalColumns = {"t",  "object", "x",  "y", "z",
-                                                               "qx", "qy",     "qz", "qw"};
+
+template <class Unit, std::size_t N>
+const UnitEntry<Unit>* find_unit(const std::array<UnitEntry<Unit>, N>& table, Unit unit) {
+  for (const auto& entry : table)
+    if (entry.unit == unit) return &entry;
+  return nullptr;
+}
+
+template <class Unit, std::size_t N>
+std::optional<Unit> parse_unit(const std::array<UnitEntry<Unit>, N>& table, std::string_view name) {
+  for (const auto& entry : table)
+    if (entry.name == name) return entry.unit;
+  return std::nullopt;
+}
 
 }  // namespace
 
 std::optional<TimeUnit> parse_time_unit(std::string_view name) {
-  for (const auto& [word, unit] : kTimeUnits)
-    if (word == name) return unit;
-  return std::nullopt;
+  return parse_unit(kTimeUnits, name);
 }
 
 std::optional<LengthUnit> parse_length_unit(std::string_view name) {
-  for (const auto& [word, unit] : kLengthUnits)
-    if (word == name) return unit;
-  return std::nullopt;
+  return parse_unit(kLengthUnits, name);
 }
 
 std::string_view to_string(TimeUnit unit) {
-  for (const auto& [word, u] : kTimeUnits)
-    if (u == unit) return word;
-  return "?";
+  return find_unit(kTimeUnits, unit)->name;
 }
 
 std::string_view to_string(LengthUnit unit) {
-  for (const auto& [word, u] : kLengthUnits)
-    if (u == unit) return word;
-  return "?";
+  return find_unit(kLengthUnits, unit)->name;
 }
 
 double seconds_per(TimeUnit unit) {
-  switch (unit) {
-    case TimeUnit::kSeconds:
-      return 1.0;
-    case TimeUnit::kMilliseconds:
-      return 1e-3;
-    case TimeUnit::kMicroseconds:
-      return 1e-6;
-    case TimeUnit::kNanoseconds:
-      return 1e-9;
-  }
-  return 1.0;
+  return find_unit(kTimeUnits, unit)->size;
 }
 
 double metres_per(LengthUnit unit) {
-  return unit == LengthUnit::kMillimetres ? 1e-3 : 1.0;
+  return find_unit(kLengthUnits, unit)->size;
 }
 
 std::string mapped_column(const LogReadOptions& options, std::string_view canonical) {
@@ -84,8 +85,7 @@ std::vector<std::pair<std::string, std::string>> parse_column_mapping(std::strin
                                   "' is not NAME=COLUMN (e.g. qx=rx: the column rx holds qx)");
     const std::string name(entry.substr(0, eq));
     const std::string column(entry.substr(eq + 1));
-    if (std::find(kCanonicalColumns.begin(), kCanonicalColumns.end(), name) ==
-        kCanonicalColumns.end())
+    if (std::find(kLogColumns.begin(), kLogColumns.end(), name) == kLogColumns.end())
       throw std::invalid_argument("'" + name +
                                   "' is not a column of the log format (t, object, x, y, z, qx, "
                                   "qy, qz, qw)");

@@ -3,6 +3,7 @@
 // units of its times and positions, its column names, how far apart the clocks of one frame's
 // detections may be, and whether frames missing inside gaps are filled.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,10 @@
 #include <vector>
 
 namespace opf {
+
+/// The columns of the log format, in this order: t, object, the position, the quaternion.
+inline constexpr std::array<std::string_view, 9> kLogColumns = {"t",  "object", "x",  "y", "z",
+                                                                "qx", "qy",     "qz", "qw"};
 
 enum class TimeUnit { kSeconds, kMilliseconds, kMicroseconds, kNanoseconds };
 enum class LengthUnit { kMetres, kMillimetres };

@@ -6,7 +6,6 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include <algorithm>
 #include <cmath>
 #include <string_view>
 #include <vector>
@@ -14,14 +13,13 @@
 namespace opf {
 namespace {
 
-constexpr std::array<std::string_view, 9> kColumns = {"t",  "object", "x",  "y", "z",
-                                                      "qx", "qy",     "qz", "qw"};
-constexpr std::size_t kPoseFields = 7;  // x, y, z, qx, qy, qz, qw: kColumns[2..8]
+constexpr std::size_t kPoseFields = 7;  // x, y, z, qx, qy, qz, qw: kLogColumns[2..8]
 constexpr double kQuaternionNormTolerance = 0.01;
 
 std::array<std::string, 9> file_names(const LogReadOptions& options) {
   std::array<std::string, 9> names;
-  for (std::size_t i = 0; i < kColumns.size(); ++i) names[i] = mapped_column(options, kColumns[i]);
+  for (std::size_t i = 0; i < kLogColumns.size(); ++i)
+    names[i] = mapped_column(options, kLogColumns[i]);
   return names;
 }
 
@@ -38,11 +36,6 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
       seconds_per_unit_(options.time_unit ? seconds_per(*options.time_unit) : 1.0),
       metres_per_unit_(options.length_unit ? metres_per(*options.length_unit) : 1.0) {
   for (std::size_t i = 0; i < names_.size(); ++i) column_[i] = reader_.column(names_[i]);
-}
-
-const std::string& LogRowReader::column_name(std::string_view name) const {
-  const auto it = std::find(kColumns.begin(), kColumns.end(), name);
-  return names_.at(static_cast<std::size_t>(it - kColumns.begin()));
 }
 
 bool LogRowReader::next(LogRow& row) {

@@ -34,8 +34,6 @@ class LogRowReader {
   bool next(LogRow& row);
 
   const std::string& source() const { return reader_.source(); }
-  /// The file's name of the canonical column `name` ("t", "qx", ...).
-  const std::string& column_name(std::string_view name) const;
 
  private:
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw

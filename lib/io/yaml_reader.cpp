@@ -129,15 +129,14 @@ void YamlReader::record(std::string_view key, const std::string& value) {
 }
 
 void YamlReader::record(std::string_view key, const std::vector<double>& values) {
-  if (!recording_ || values.empty()) return;  // an optional value not set
-  YAML::Node list(YAML::NodeType::Sequence);
-  for (const double v : values) list.push_back(csv::format_double(v));
-  list.SetStyle(YAML::EmitterStyle::Flow);
-  record_[std::string(key)] = list;
+  if (!recording_) return;
+  std::vector<std::string> texts;
+  for (const double v : values) texts.push_back(csv::format_double(v));
+  record(key, texts);
 }
 
 void YamlReader::record(std::string_view key, const std::vector<std::string>& values) {
-  if (!recording_ || values.empty()) return;
+  if (!recording_ || values.empty()) return;  // an optional value not set
   YAML::Node list(YAML::NodeType::Sequence);
   for (const std::string& v : values) list.push_back(v);
   list.SetStyle(YAML::EmitterStyle::Flow);
