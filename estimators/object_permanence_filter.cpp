@@ -94,14 +94,17 @@ void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
   }
 }
 
-void ObjectPermanenceFilter::drift_with_recent_velocity(Hypothesis& h, double dt) {
+void ObjectPermanenceFilter::predict_with_recent_velocity(Hypothesis& h, double dt) {
   const auto velocity = recent_velocity(history_, options_.velocity_window);
-  if (!velocity) return;
+  if (!velocity) {
+    h.filter.predict(dt);
+    return;
+  }
   // The body-frame angular velocity turns the estimate's orientation; as a world rotation it
   // turns every particle about the same axis (they lie within a few degrees of the estimate).
   const Eigen::Quaterniond q = history_.back().estimated_orientation.normalized();
   const Eigen::Quaterniond turn = q * so3::exp(velocity->angular * dt) * q.conjugate();
-  h.filter.shift(velocity->linear * dt, turn.normalized());
+  h.filter.predict(dt, velocity->linear * dt, turn.normalized());
 }
 
 Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* measurement,
@@ -118,8 +121,13 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
 
   if (measurement) {
     // The object was seen in the previous frame too: its recent velocity carries the particles.
-    if (options_.velocity_drift && !hidden_) drift_with_recent_velocity(hypotheses_[0], dt);
-    for (Hypothesis& h : hypotheses_) h.filter.predict(dt);
+    const bool drifts = options_.velocity_drift && !hidden_;
+    for (std::size_t i = 0; i < hypotheses_.size(); ++i) {
+      if (i == 0 && drifts)
+        predict_with_recent_velocity(hypotheses_[0], dt);
+      else
+        hypotheses_[i].filter.predict(dt);
+    }
     const Eigen::Vector3d position = translation_of(*measurement);
     const Eigen::Quaterniond orientation = orientation_of(*measurement);
     keep_hypothesis_explaining(position);

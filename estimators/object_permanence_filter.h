@@ -82,7 +82,8 @@ class ObjectPermanenceFilter final : public Estimator {
   /// The history's estimates as samples for the motion test and the paper predictor's fit.
   std::vector<TrajectorySample> estimate_history() const;
   void follow_prediction(Hypothesis& hypothesis, double t_previous, double t);
-  void drift_with_recent_velocity(Hypothesis& hypothesis, double dt);
+  /// The random walk, after a drift by the recent measurements' velocity (one pass).
+  void predict_with_recent_velocity(Hypothesis& hypothesis, double dt);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 const Estimate& estimate);
   void follow_occluder(Hypothesis& hypothesis, const std::string& occluder,

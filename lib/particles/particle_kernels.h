@@ -18,6 +18,11 @@ const char* instruction_set();
 /// x[i] += sigma * noise[i] for i < count.
 void add_scaled_noise(double* x, const float* noise, double sigma, std::size_t count);
 
+/// x[i] = (x[i] + offset) + sigma * noise[i] for i < count: a rigid shift and the random walk in
+/// one pass over the particles.
+void add_offset_and_scaled_noise(double* x, const float* noise, double offset, double sigma,
+                                 std::size_t count);
+
 /// x[i] += sigma[i] * noise[i] for i < count: a spread per particle.
 void add_scaled_noise_per_particle(double* x, const float* noise, const double* sigma,
                                    std::size_t count);
@@ -27,6 +32,12 @@ void add_scaled_noise_per_particle(double* x, const float* noise, const double* 
 /// s_i = sigma_per_particle[i], or `sigma` when that is null.
 void perturb_quaternions(float* q, std::size_t stride, std::size_t count, const float* noise,
                          double sigma, const double* sigma_per_particle);
+
+/// q_i <- normalise(normalise(r * q_i) * exp(e_i)) with e_i as above (one spread `sigma`): a
+/// world-frame turn r (x, y, z, w) and the random walk in one pass, with rotate_quaternions'
+/// and perturb_quaternions' arithmetic.
+void turn_and_perturb_quaternions(float* q, std::size_t stride, std::size_t count,
+                                  const float* noise, double sigma, const std::array<double, 4>& r);
 
 /// q_i <- normalise(r * q_i): every particle turned by the world-frame rotation r (x, y, z, w).
 void rotate_quaternions(float* q, std::size_t n, const std::array<double, 4>& r);

@@ -106,9 +106,19 @@ void PoseParticleFilter::predict_rotation(double dt) {
   predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), noise_);
 }
 
+void PoseParticleFilter::predict(double dt, const Eigen::Vector3d& translation,
+                                 const Eigen::Quaterniond& rotation) {
+  if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
+  predict_random_walk(translation_, options_.process_noise_translation * std::sqrt(dt), translation,
+                      noise_);
+  predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), rotation, noise_);
+}
+
 void PoseParticleFilter::shift(const Eigen::Vector3d& translation,
                                const Eigen::Quaterniond& rotation) {
-  translation_.states.colwise() += translation;
+  // Row by row: each coordinate is contiguous (structure of arrays), so the add vectorises; a
+  // column-wise add would step through the rows three doubles at a time.
+  for (Eigen::Index k = 0; k < 3; ++k) translation_.states.row(k).array() += translation(k);
   rotate_all(rotation_, rotation);
 }
 

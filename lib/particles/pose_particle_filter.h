@@ -53,6 +53,8 @@ class PoseParticleFilter {
   void predict(double dt);
   void predict_translation(double dt);
   void predict_rotation(double dt);
+  /// shift(translation, rotation), then predict(dt), in one pass over the particles.
+  void predict(double dt, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
 
   /// Moves every particle rigidly: translation particles by `translation`, rotation particles by
   /// the world-frame rotation `rotation` (q <- rotation * q). The motion model f of paper Eq. 3

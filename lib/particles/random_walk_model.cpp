@@ -19,7 +19,8 @@ void require_size(const Eigen::VectorXd& sigma, std::size_t count) {
 // Translation rows: x[r n + i] += s n_ri, chunk by chunk, with s = row_sigma(r), or the
 // particle's own spread per_particle[i] when that is given.
 void add_noise(TranslationParticles& particles, const Eigen::Vector3d& row_sigma,
-               const double* per_particle, GaussianSampler& noise) {
+               const double* per_particle, GaussianSampler& noise,
+               const Eigen::Vector3d* offset = nullptr) {
   const std::size_t n = particles.size();
   alignas(64) std::array<float, kChunk> block;
   for (std::size_t r = 0; r < 3; ++r) {
@@ -27,7 +28,11 @@ void add_noise(TranslationParticles& particles, const Eigen::Vector3d& row_sigma
     for (std::size_t begin = 0; begin < n; begin += kChunk) {
       const std::size_t count = std::min(kChunk, n - begin);
       noise.fill({block.data(), count});
-      if (per_particle)
+      if (offset)
+        kernels::add_offset_and_scaled_noise(row + begin, block.data(),
+                                             (*offset)(static_cast<Eigen::Index>(r)),
+                                             row_sigma(static_cast<Eigen::Index>(r)), count);
+      else if (per_particle)
         kernels::add_scaled_noise_per_particle(row + begin, block.data(), per_particle + begin,
                                                count);
       else
@@ -38,14 +43,23 @@ void add_noise(TranslationParticles& particles, const Eigen::Vector3d& row_sigma
 }
 
 void perturb(RotationParticles& particles, double sigma, const double* per_particle,
-             GaussianSampler& noise) {
+             GaussianSampler& noise, const Eigen::Quaterniond* turn = nullptr) {
+  std::array<double, 4> r{};
+  if (turn) {
+    const Eigen::Quaterniond unit = turn->normalized();
+    r = {unit.x(), unit.y(), unit.z(), unit.w()};
+  }
   const std::size_t n = particles.size();
   alignas(64) std::array<float, 3 * kChunk> block;
   for (std::size_t begin = 0; begin < n; begin += kChunk) {
     const std::size_t count = std::min(kChunk, n - begin);
     noise.fill({block.data(), 3 * count});
-    kernels::perturb_quaternions(particles.states.data() + begin, n, count, block.data(), sigma,
-                                 per_particle ? per_particle + begin : nullptr);
+    if (turn)
+      kernels::turn_and_perturb_quaternions(particles.states.data() + begin, n, count, block.data(),
+                                            sigma, r);
+    else
+      kernels::perturb_quaternions(particles.states.data() + begin, n, count, block.data(), sigma,
+                                   per_particle ? per_particle + begin : nullptr);
   }
 }
 
@@ -57,6 +71,16 @@ void predict_random_walk(TranslationParticles& particles, double sigma, Gaussian
 
 void predict_random_walk(RotationParticles& particles, double sigma, GaussianSampler& noise) {
   perturb(particles, sigma, nullptr, noise);
+}
+
+void predict_random_walk(TranslationParticles& particles, double sigma,
+                         const Eigen::Vector3d& offset, GaussianSampler& noise) {
+  add_noise(particles, Eigen::Vector3d::Constant(sigma), nullptr, noise, &offset);
+}
+
+void predict_random_walk(RotationParticles& particles, double sigma, const Eigen::Quaterniond& turn,
+                         GaussianSampler& noise) {
+  perturb(particles, sigma, nullptr, noise, &turn);
 }
 
 void predict_random_walk(TranslationParticles& particles, const Eigen::VectorXd& sigma,

@@ -14,6 +14,13 @@ namespace opf {
 void predict_random_walk(TranslationParticles& particles, double sigma, GaussianSampler& noise);
 void predict_random_walk(RotationParticles& particles, double sigma, GaussianSampler& noise);
 
+/// A rigid shift (x' = x + offset + e) or a world-frame turn (q' = r q exp(e)) first, in the same
+/// pass over the particles as the random walk: the velocity drift costs no pass of its own.
+void predict_random_walk(TranslationParticles& particles, double sigma,
+                         const Eigen::Vector3d& offset, GaussianSampler& noise);
+void predict_random_walk(RotationParticles& particles, double sigma, const Eigen::Quaterniond& turn,
+                         GaussianSampler& noise);
+
 /// The same with a spread per particle (sigma[i] for particle i).
 void predict_random_walk(TranslationParticles& particles, const Eigen::VectorXd& sigma,
                          GaussianSampler& noise);

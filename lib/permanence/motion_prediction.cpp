@@ -34,6 +34,10 @@ int complexity(TranslationModel model) {
 // change of motion, many enough that no single origin decides.
 constexpr double kValidationSpan = 1.0;
 constexpr double kWanderLag = 0.3;  // s: the longest lag of the wander regression
+// Lags up to this many frames are all used; longer ones (logs faster than 30 Hz) on a ladder
+// growing by a quarter, which keeps the regression's reach at a fraction of the cost (each lag
+// takes two medians over the history).
+constexpr long kEveryWanderLag = 9;
 // The validation's many fits are plain least squares (one pass for the three axes); the fits
 // kept for the prediction take options.robust_iterations. An outlier then costs every candidate
 // alike in the scores, and none of them in the prediction.
@@ -115,6 +119,19 @@ double settled(double h, double settle_time) {
   return settle_time > 0.0 ? 1.0 - std::exp(-h / settle_time) : 1.0;
 }
 
+// A constant velocity's fitted rate shrunk by v^2 / (v^2 + se^2) per axis (se: its standard
+// error from the residuals), as the velocity drift is: a rate that is only noise would carry the
+// noise through the gap.
+void shrink_rate(LocalPolynomial& fit, double window) {
+  if (fit.order != 1 || fit.known_acceleration.squaredNorm() > 0.0 || fit.samples < 3) return;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double v = fit.coefficients(axis, 1);
+    const double se2 =
+        12.0 * fit.residual_variance(axis) / (static_cast<double>(fit.samples) * window * window);
+    if (v * v + se2 > 0.0) fit.coefficients(axis, 1) = v * v * v / (v * v + se2);
+  }
+}
+
 Eigen::Vector3d gravity_of(const MotionPredictionOptions& options) {
   return -options.gravity * options.up.normalized();
 }
@@ -135,6 +152,7 @@ Validation validate_translation(std::span<const MotionSample> history, const Ser
                               std::min(options.robust_iterations, kValidationRobustIterations),
                               fit))
       return v;
+    shrink_rate(fit, window);
     // Anchored at the filter's estimate at the origin and settling onto the fit, as the
     // prediction is at onset.
     const Eigen::Vector3d anchor = history[o].estimated_position - last;
@@ -290,11 +308,16 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
   const Eigen::Index lags = std::max<Eigen::Index>(3, std::lround(kWanderLag / period));
   Eigen::Vector3d q2 = Eigen::Vector3d::Zero();
   if (n < 2 * lags + 6) return q2;
+  std::vector<Eigen::Index> ladder;
+  for (Eigen::Index lag = 1; lag < lags;
+       lag = lag < kEveryWanderLag ? lag + 1 : std::max(lag + 1, (5 * lag + 2) / 4))
+    ladder.push_back(lag);
+  ladder.push_back(lags);
   for (int axis = 0; axis < 3; ++axis) {
     // Weighted least squares of V(L) = c + b L^3 with weights (n - 2L) / V(L)^2.
     double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     std::vector<double> d, deviation;
-    for (Eigen::Index lag = 1; lag <= lags; ++lag) {
+    for (const Eigen::Index lag : ladder) {
       const Eigen::Index count = n - 2 * lag;
       d.clear();
       for (Eigen::Index k = lag; k + lag < n; ++k)
@@ -566,6 +589,23 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
           {model, candidate, options.fit_windows[best], by_window[best]});
     }
   }
+  // The kept fits, one per (model, window): the robust fit reweights each axis on its own, so one
+  // fit serves every axis that chose that model and window.
+  std::vector<std::pair<const Scored*, LocalPolynomial>> fitted;
+  fitted.reserve(translation_candidates.size() * options.fit_windows.size());
+  const auto fit_of = [&](const Scored& m) -> const LocalPolynomial* {
+    for (const auto& [key, fit] : fitted)
+      if (key->model == m.model && key->window == m.window) return &fit;
+    LocalPolynomial fit;
+    const Eigen::Vector3d acceleration =
+        m.candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
+    if (!fit_local_polynomial(s.t, s.position, s.t.back() - m.window, s.t.back(), m.candidate.order,
+                              acceleration, options.robust_iterations, fit))
+      return nullptr;
+    shrink_rate(fit, m.window);
+    fitted.emplace_back(&m, std::move(fit));
+    return &fitted.back().second;
+  };
   double squared_score = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
     auto& candidates = scored[static_cast<std::size_t>(axis)];
@@ -581,15 +621,13 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       if (!(weights[c] > 0.0)) continue;
       const Scored& m = candidates[c];
-      const Eigen::Vector3d acceleration =
-          m.candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
       WeightedFit wf;
       wf.weight = weights[c];
       wf.window = m.window;
       wf.settles = m.candidate.order >= 1;
-      if (!fit_local_polynomial(s.t, s.position, s.t.back() - m.window, s.t.back(),
-                                m.candidate.order, acceleration, options.robust_iterations, wf.fit))
-        return std::nullopt;
+      const LocalPolynomial* fit = fit_of(m);
+      if (!fit) return std::nullopt;
+      wf.fit = *fit;
       for (std::size_t j = 0; j < combined.errors.size(); ++j)
         combined.errors[j](axis) += weights[c] * m.validation.errors[j](axis);
       if (m.candidate.order >= 1 || m.candidate.ballistic)

@@ -7,6 +7,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -165,6 +166,36 @@ TEST(ParticleKernels, RotateQuaternionsTurnsEveryParticle) {
   kernels::rotate_quaternions(q.data(), n, {turn.x(), turn.y(), turn.z(), turn.w()});
   for (std::size_t i = 0; i < n; ++i)
     EXPECT_LT(so3::angle_between(column(q, n, i), turn * column(before, n, i)), 1e-6);
+}
+
+// The velocity drift's fused step does in one pass exactly what a turn and then the random walk
+// do in two, bit for bit: the OPF's results do not depend on which path ran.
+TEST(ParticleKernels, TurnAndPerturbIsTheTurnThenTheRandomWalk) {
+  Random random(4);
+  const std::size_t n = 1003;
+  for (const double sigma : {0.02, 2.0}) {  // the polynomial path and the reduction's
+    std::vector<float> fused =
+        quaternion_rows(n, so3::exp(Eigen::Vector3d(0.2, 0.1, -0.3)), 0.2, random);
+    std::vector<float> two_passes = fused;
+    std::vector<float> noise(3 * n);
+    for (float& v : noise) v = static_cast<float>(random.normal());
+    const Eigen::Quaterniond turn = so3::exp(Eigen::Vector3d(0.05, -0.02, 0.3));
+    const std::array<double, 4> r{turn.x(), turn.y(), turn.z(), turn.w()};
+    kernels::turn_and_perturb_quaternions(fused.data(), n, n, noise.data(), sigma, r);
+    kernels::rotate_quaternions(two_passes.data(), n, r);
+    kernels::perturb_quaternions(two_passes.data(), n, n, noise.data(), sigma, nullptr);
+    EXPECT_EQ(fused, two_passes) << sigma;
+  }
+  std::vector<double> x(1003), shifted(1003);
+  std::vector<float> noise(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    x[i] = shifted[i] = random.normal();
+    noise[i] = static_cast<float>(random.normal());
+  }
+  kernels::add_offset_and_scaled_noise(x.data(), noise.data(), 0.25, 0.01, x.size());
+  for (double& v : shifted) v += 0.25;
+  kernels::add_scaled_noise(shifted.data(), noise.data(), 0.01, shifted.size());
+  EXPECT_EQ(x, shifted);
 }
 
 // Clouds of every spread: 0.05 rad keeps every block of particles within 60 degrees of z (the
