@@ -165,6 +165,7 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   yaml.get("carry_particles", options.carry_particles);
 
   yaml.get("velocity_drift", options.velocity_drift);
+  yaml.get("adaptive_rotation_noise", options.adaptive_rotation_noise);
   yaml.get_positive("velocity_window", options.velocity_window);
   yaml.get_positive("hold_after", options.hold_after);
   read_dynamics(yaml.child("dynamics"), options.dynamics);

@@ -61,7 +61,10 @@ void validate(const OpfOptions& options) {
 
 ObjectPermanenceFilter::ObjectPermanenceFilter(const OpfOptions& options, std::string object,
                                                std::uint64_t seed)
-    : options_(options), object_(std::move(object)), seed_(seed) {
+    : options_(options),
+      object_(std::move(object)),
+      seed_(seed),
+      rotation_jitter_(options.dynamics.selection.history_window) {
   validate(options_);
 }
 
@@ -71,6 +74,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
                            CovarianceInflation(options_.uncertainty));
   hypotheses_[0].filter.initialise(translation_of(first), orientation_of(first));
   history_.clear();
+  rotation_jitter_.clear();
   confirmed_motion_.reset();
   t_ = t;
   hidden_ = false;
@@ -83,6 +87,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
 void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
                                       const Estimate& estimate) {
+  rotation_jitter_.add(t, orientation);
   history_.push_back({t, position, orientation, translation_of(estimate.pose.mean),
                       orientation_of(estimate.pose.mean)});
   if (options_.dynamics.predictor == DynamicsPredictor::kPaper) {
@@ -105,6 +110,17 @@ void ObjectPermanenceFilter::predict_with_recent_velocity(Hypothesis& h, double 
   const Eigen::Quaterniond q = history_.back().estimated_orientation.normalized();
   const Eigen::Quaterniond turn = q * so3::exp(velocity->angular * dt) * q.conjugate();
   h.filter.predict(dt, velocity->linear * dt, turn.normalized());
+}
+
+void ObjectPermanenceFilter::adapt_rotation_noise(Hypothesis& h) {
+  const auto sigma = rotation_jitter_.sigma();
+  if (!sigma) return;
+  // Never wider than configured (a turning object's differences hold some of its motion, so the
+  // estimate is an upper bound), nor narrower than a tenth of it: 5000 particles diffused by the
+  // random walk cannot resolve a likelihood much narrower than their step.
+  constexpr double kFloorShare = 0.1;
+  const double configured = options_.particles.observation_noise_rotation;
+  h.filter.set_rotation_likelihood_noise(std::clamp(*sigma, kFloorShare * configured, configured));
 }
 
 Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* measurement,
@@ -133,6 +149,7 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     keep_hypothesis_explaining(position);
     Hypothesis& h = hypotheses_[0];
     const Source hidden_by = h.source;
+    if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
     const bool lost = h.filter.update_with_measurement(position, orientation);
     if (h.filter.translation_was_reset())
       confirmed_motion_.reset();

@@ -9,6 +9,7 @@
 #include "core/estimator.h"
 #include "estimators/opf_options.h"
 #include "particles/pose_particle_filter.h"
+#include "permanence/rotation_jitter.h"
 
 #include <cstdint>
 #include <deque>
@@ -84,6 +85,8 @@ class ObjectPermanenceFilter final : public Estimator {
   void follow_prediction(Hypothesis& hypothesis, double t_previous, double t);
   /// The random walk, after a drift by the recent measurements' velocity (one pass).
   void predict_with_recent_velocity(Hypothesis& hypothesis, double dt);
+  /// The rotation likelihood's spread from the detector's own jitter (adaptive_rotation_noise).
+  void adapt_rotation_noise(Hypothesis& hypothesis);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 const Estimate& estimate);
   void follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
@@ -99,6 +102,7 @@ class ObjectPermanenceFilter final : public Estimator {
   std::uint64_t spawned_ = 0;
   std::vector<Hypothesis> hypotheses_;  ///< [0] is the object's main estimate
   std::deque<MotionSample> history_;    ///< measured frames: measurement and estimate
+  RotationJitter rotation_jitter_;      ///< the detector's rotation noise, for the likelihood
   /// The dynamics module's last prediction, kept when the object was seen again where it said
   /// (no translation reset): a glimpse too brief to fit anything new continues it.
   std::optional<MotionPrediction> confirmed_motion_;

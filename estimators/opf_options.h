@@ -59,6 +59,11 @@ struct OpfOptions {
   /// is followed without lag. false: the paper's pure random walk.
   bool velocity_drift = true;
   double velocity_window = 0.3;  ///< s
+  /// While the object is visible, its rotation's observation noise is the detector's own jitter
+  /// (permanence/rotation_jitter.h) over the last history_window seconds, between a tenth of the
+  /// configured observation_noise.rotation and that value: a likelihood wider than the detector's
+  /// noise trails every turn by a share of it. false: the configured value, always (the paper's).
+  bool adaptive_rotation_noise = true;
   /// s hidden after which the dynamics module's prediction stops moving the object and holds it,
   /// its uncertainty still growing (a bounded hidden state: no extrapolation runs off for ever;
   /// the bundled scenes extrapolate correctly for up to 3 s, under the sugar-dropping hand). The

@@ -72,7 +72,10 @@ void validate(const PoseParticleFilterOptions& options) {
 }
 
 PoseParticleFilter::PoseParticleFilter(const PoseParticleFilterOptions& options, std::uint64_t seed)
-    : options_(options), random_(seed), noise_(derive_seed(seed, 1)) {
+    : options_(options),
+      rotation_likelihood_noise_(options.observation_noise_rotation),
+      random_(seed),
+      noise_(derive_seed(seed, 1)) {
   validate(options_);
   translation_.resize(options_.translation_particles);
   rotation_.resize(options_.rotation_particles);
@@ -104,6 +107,11 @@ void PoseParticleFilter::predict_translation(double dt) {
 void PoseParticleFilter::predict_rotation(double dt) {
   if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
   predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), noise_);
+}
+
+void PoseParticleFilter::set_rotation_likelihood_noise(double sigma) {
+  require_positive(sigma, "observation_noise.rotation");
+  rotation_likelihood_noise_ = sigma;
 }
 
 void PoseParticleFilter::predict(double dt, const Eigen::Vector3d& translation,
@@ -156,7 +164,7 @@ void PoseParticleFilter::reweight_translation(const Eigen::Vector3d& position,
 
 void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation,
                                            double covariance_scale) {
-  const double sigma = options_.observation_noise_rotation;
+  const double sigma = rotation_likelihood_noise_;
   rotation_best_exponent_ =
       reweight_gaussian(rotation_, orientation, covariance_scale * sigma * sigma);
   rotation_reweighted_ = true;
@@ -178,7 +186,7 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
     translation_reset_ = reset = true;
   }
   if (rotation_best_exponent_ < threshold) {
-    scatter_around(rotation_, orientation, options_.observation_noise_rotation, noise_);
+    scatter_around(rotation_, orientation, rotation_likelihood_noise_, noise_);
     rotation_reweighted_ = rotation_underflow_ = false;
     reset = true;
   }

@@ -53,6 +53,12 @@ class PoseParticleFilter {
   void predict(double dt);
   void predict_translation(double dt);
   void predict_rotation(double dt);
+  /// The rotation's observation noise (rad) in the likelihood and a sensor reset's scatter from
+  /// now on: the OPF's estimate of the detector's own. observation_trace() keeps the configured
+  /// value (the uncertainty module's Q and the alert are the sensor's declared noise). Throws
+  /// std::invalid_argument unless it is positive and finite.
+  void set_rotation_likelihood_noise(double sigma);
+
   /// shift(translation, rotation), then predict(dt), in one pass over the particles.
   void predict(double dt, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
 
@@ -114,8 +120,9 @@ class PoseParticleFilter {
 
  private:
   PoseParticleFilterOptions options_;
-  Random random_;          ///< resampling draws
-  GaussianSampler noise_;  ///< process and initialisation noise, in bulk
+  double rotation_likelihood_noise_;  ///< rad: options_' value unless set_rotation_likelihood_noise
+  Random random_;                     ///< resampling draws
+  GaussianSampler noise_;             ///< process and initialisation noise, in bulk
   TranslationParticles translation_;
   RotationParticles rotation_;
   bool translation_reweighted_ = false;

@@ -201,6 +201,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
       "opf:\n"
       "  velocity_drift: false\n"
       "  velocity_window: 0.5\n"
+      "  adaptive_rotation_noise: false\n"
       "  dynamics:\n"
       "    predictor: paper\n"
       "    history_window: 3.0\n"
@@ -219,6 +220,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   const OpfOptions& o = s.opf;
   EXPECT_FALSE(o.velocity_drift);
   EXPECT_EQ(o.velocity_window, 0.5);
+  EXPECT_FALSE(o.adaptive_rotation_noise);
   EXPECT_EQ(o.dynamics.predictor, DynamicsPredictor::kPaper);
   const MotionPredictionOptions& m = o.dynamics.selection;
   EXPECT_EQ(m.history_window, 3.0);
