@@ -1,6 +1,7 @@
 #include "permanence/motion_prediction.h"
 
 #include "core/so3.h"
+#include "permanence/second_difference_noise.h"
 
 #include <Eigen/Cholesky>
 
@@ -383,10 +384,7 @@ std::vector<double> inverse_error_weights(const std::vector<Scored>& candidates,
   return weights;
 }
 
-// The measurement noise's variance per axis, from the series itself: the second difference of
-// samples of a smooth motion is mostly noise, N(0, 6 sigma^2) at even spacing; its median square
-// is 6 sigma^2 times 0.4549 (the median of chi-square with one degree of freedom), which
-// ignores the few differences a turn or an outlier inflates.
+// The measurement noise's variance per axis, from the series itself (second_difference_noise.h).
 Eigen::Vector3d noise_variance(const Eigen::Matrix3Xd& values) {
   const Eigen::Index n = values.cols();
   if (n < 3) return Eigen::Vector3d::Zero();
@@ -397,9 +395,7 @@ Eigen::Vector3d noise_variance(const Eigen::Matrix3Xd& values) {
       const double d = values(axis, k + 1) - 2.0 * values(axis, k) + values(axis, k - 1);
       squares[static_cast<std::size_t>(k - 1)] = d * d;
     }
-    const auto middle = squares.begin() + static_cast<std::ptrdiff_t>(squares.size() / 2);
-    std::nth_element(squares.begin(), middle, squares.end());
-    variance(axis) = *middle / (6.0 * 0.4549);
+    variance(axis) = noise_variance_from_second_differences(squares);
   }
   return variance;
 }
@@ -591,11 +587,15 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   }
   // The kept fits, one per (model, window): the robust fit reweights each axis on its own, so one
   // fit serves every axis that chose that model and window.
-  std::vector<std::pair<const Scored*, LocalPolynomial>> fitted;
-  fitted.reserve(translation_candidates.size() * options.fit_windows.size());
+  struct Fitted {
+    TranslationModel model;
+    double window;
+    LocalPolynomial fit;
+  };
+  std::vector<Fitted> fitted;
   const auto fit_of = [&](const Scored& m) -> const LocalPolynomial* {
-    for (const auto& [key, fit] : fitted)
-      if (key->model == m.model && key->window == m.window) return &fit;
+    for (const Fitted& f : fitted)
+      if (f.model == m.model && f.window == m.window) return &f.fit;
     LocalPolynomial fit;
     const Eigen::Vector3d acceleration =
         m.candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
@@ -603,8 +603,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
                               acceleration, options.robust_iterations, fit))
       return nullptr;
     shrink_rate(fit, m.window);
-    fitted.emplace_back(&m, std::move(fit));
-    return &fitted.back().second;
+    fitted.push_back({m.model, m.window, std::move(fit)});
+    return &fitted.back().fit;
   };
   double squared_score = 0.0;
   for (int axis = 0; axis < 3; ++axis) {

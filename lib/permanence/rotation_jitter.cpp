@@ -1,6 +1,7 @@
 #include "permanence/rotation_jitter.h"
 
 #include "core/so3.h"
+#include "permanence/second_difference_noise.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@ namespace {
 // Intervals within this share of each other count as equal (a camera's frame times jitter; a
 // missed frame doubles the interval).
 constexpr double kIntervalTolerance = 0.25;
-constexpr double kChiSquareOneMedian = 0.4549;
 
 }  // namespace
 
@@ -43,11 +43,9 @@ std::optional<double> RotationJitter::sigma() {
   for (int axis = 0; axis < 3; ++axis) {
     scratch_.clear();
     for (const Difference& d : differences_) scratch_.push_back(d.squares(axis));
-    const auto middle = scratch_.begin() + static_cast<std::ptrdiff_t>(scratch_.size() / 2);
-    std::nth_element(scratch_.begin(), middle, scratch_.end());
-    largest = std::max(largest, *middle);
+    largest = std::max(largest, noise_variance_from_second_differences(scratch_));
   }
-  return std::sqrt(largest / (6.0 * kChiSquareOneMedian));
+  return std::sqrt(largest);
 }
 
 }  // namespace opf

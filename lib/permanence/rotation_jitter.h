@@ -13,11 +13,9 @@
 
 namespace opf {
 
-/// The second difference of three consecutive orientations at equal intervals (their two tangent
-/// increments subtracted) of a smooth motion is mostly noise, N(0, 6 sigma^2) per body axis; the
-/// median of its squares is 6 sigma^2 times 0.4549 (the median of chi-square with one degree of
-/// freedom), which ignores the few differences a sharp turn or an outlier inflates. Kept over the
-/// last `window` seconds; a gap (an interval unlike the one before) starts the differences afresh.
+/// The second differences of consecutive orientations at equal intervals (their two tangent
+/// increments subtracted), per body axis, read as noise (second_difference_noise.h). Kept over
+/// the last `window` seconds; a gap (an interval unlike the one before) starts them afresh.
 class RotationJitter {
  public:
   explicit RotationJitter(double window) : window_(window) {}

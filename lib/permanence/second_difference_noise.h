@@ -1,0 +1,15 @@
+#pragma once
+// A measurement's noise read from the measurements themselves: the second difference of three
+// samples of a smooth motion at equal intervals is mostly noise, N(0, 6 sigma^2); the median of
+// its squares is 6 sigma^2 times 0.4549 (the median of chi-square with one degree of freedom),
+// which ignores the few differences a turn or an outlier inflates. The dynamics module reads the
+// positions' and rotations' noise this way, the OPF its detector's rotation jitter.
+
+#include <vector>
+
+namespace opf {
+
+/// sigma^2 from the squared second differences of one coordinate (reorders them); 0 for none.
+double noise_variance_from_second_differences(std::vector<double>& squares);
+
+}  // namespace opf
