@@ -2,11 +2,11 @@
 // measured, as in a cluttered scene before any occlusion) stepped by the Tracker on one thread
 // and on two. A frame's time is what a camera-rate loop must fit in; items are object-steps.
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "core/tracker.h"
-#include "estimators/registry.h"
-#include "particles/random.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
 
 #include <benchmark/benchmark.h>
 

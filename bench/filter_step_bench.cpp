@@ -4,12 +4,12 @@
 // object is hidden (moved and spread by the dynamics module's prediction); and the CV
 // Kalman filter, which has no particles.
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "estimators/cv_kalman.h"
-#include "estimators/object_permanence_filter.h"
-#include "estimators/registry.h"
-#include "particles/random.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/estimators/cv_kalman.h"
+#include "opf/estimators/object_permanence_filter.h"
+#include "opf/estimators/registry.h"
 
 #include <benchmark/benchmark.h>
 

@@ -4,11 +4,11 @@
 // rows written) and the memory: the resident set after a tenth of the stream and at its end, so
 // that memory flat in the log's length shows as a growth near zero.
 
-#include "core/tracker.h"
-#include "estimators/registry.h"
-#include "io/estimate_csv.h"
-#include "io/measurement_log.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
+#include "opf/io/estimate_csv.h"
+#include "opf/io/measurement_log.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,8 +1,8 @@
 // The benchmark program's entry point: Google Benchmark's own, plus the build facts a reader of
 // the JSON report needs next to the machine facts it records anyway (CPU, caches, load).
 
-#include "core/heap_policy.h"
-#include "particles/particle_kernels.h"
+#include "opf/core/heap_policy.h"
+#include "opf/particles/particle_kernels.h"
 
 #include <benchmark/benchmark.h>
 

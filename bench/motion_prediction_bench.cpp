@@ -3,9 +3,9 @@
 // occlusion, not per frame; the target is 1 ms at the default 2 s of history. Measured per frame
 // rate, since the history's length in samples (and so the cost) grows with it.
 
-#include "core/so3.h"
-#include "particles/random.h"
-#include "permanence/motion_prediction.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/permanence/motion_prediction.h"
 
 #include <benchmark/benchmark.h>
 

@@ -4,14 +4,14 @@
 // resampler, the moments (mean and covariance; Markley's mean for rotation) and the occluder
 // module's Bhattacharyya search over K candidates. Particles per second count one portion.
 
-#include "core/so3.h"
-#include "particles/gaussian_likelihood.h"
-#include "particles/gaussian_sampler.h"
-#include "particles/particle_statistics.h"
-#include "particles/random.h"
-#include "particles/random_walk_model.h"
-#include "particles/resampling.h"
-#include "permanence/occluder_selection.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/particles/gaussian_likelihood.h"
+#include "opf/particles/gaussian_sampler.h"
+#include "opf/particles/particle_statistics.h"
+#include "opf/particles/random_walk_model.h"
+#include "opf/particles/resampling.h"
+#include "opf/permanence/occluder_selection.h"
 
 #include <benchmark/benchmark.h>
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "sim/colour_blob_detector.h"
-#include "sim/scene_renderer.h"
+#include "opf/sim/colour_blob_detector.h"
+#include "opf/sim/scene_renderer.h"
 
 namespace opf::sim {
 namespace {

@@ -2,9 +2,9 @@
 // 0.01 rad noise) per translation order and rotation case. It runs once per occlusion, not per
 // frame, so tens to hundreds of microseconds are affordable.
 
-#include "core/so3.h"
-#include "fit/trajectory_fit.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/fit/trajectory_fit.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
-#include "estimators/cv_kalman.h"
+#include "opf/estimators/cv_kalman.h"
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/so3.h"
 
 #include <Eigen/Cholesky>
 

@@ -2,8 +2,8 @@
 // The constant-velocity Kalman filter baseline: a linear KF on position + velocity and an
 // error-state KF on orientation + body-frame angular velocity; it predicts through gaps.
 
-#include "core/estimator.h"
-#include "estimators/cv_kalman_options.h"
+#include "opf/core/estimator.h"
+#include "opf/estimators/cv_kalman_options.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

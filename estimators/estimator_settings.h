@@ -1,10 +1,10 @@
 #pragma once
 // Every estimator's options in one place: what a YAML config file sets and the registry reads.
 
-#include "estimators/cv_kalman_options.h"
-#include "estimators/oapf_options.h"
-#include "estimators/opf_options.h"
-#include "particles/particle_filter_options.h"
+#include "opf/estimators/cv_kalman_options.h"
+#include "opf/estimators/oapf_options.h"
+#include "opf/estimators/opf_options.h"
+#include "opf/particles/particle_filter_options.h"
 
 namespace opf {
 

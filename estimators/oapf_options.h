@@ -2,7 +2,7 @@
 // Options of the random-walk occlusion-aware particle filter baseline (Meshgi et al., CVIU 2016),
 // adapted to the 6-DoF two-portion particle filter: occlusion chain, likelihoods, search growth.
 
-#include "particles/particle_filter_options.h"
+#include "opf/particles/particle_filter_options.h"
 
 namespace opf {
 

@@ -1,10 +1,10 @@
-#include "estimators/object_permanence_filter.h"
+#include "opf/estimators/object_permanence_filter.h"
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "particles/random.h"
-#include "permanence/motion_classifier.h"
-#include "permanence/occluder_selection.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/permanence/motion_classifier.h"
+#include "opf/permanence/occluder_selection.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,10 +6,10 @@
 // whose trace drives the safety alert (feedback module). Two equally likely occluders spawn a
 // second hypothesis; the one that explains the object's reappearance survives.
 
-#include "core/estimator.h"
-#include "estimators/opf_options.h"
-#include "particles/pose_particle_filter.h"
-#include "permanence/rotation_jitter.h"
+#include "opf/core/estimator.h"
+#include "opf/estimators/opf_options.h"
+#include "opf/particles/pose_particle_filter.h"
+#include "opf/permanence/rotation_jitter.h"
 
 #include <cstdint>
 #include <deque>

@@ -2,13 +2,13 @@
 // Options of the Object Permanence Filter (paper Sec. III): the particle filter it extends and
 // the four modules of its Object Permanence update, each switchable off for ablations.
 
-#include "fit/trajectory_fit.h"
-#include "particles/particle_filter_options.h"
-#include "permanence/covariance_inflation.h"
-#include "permanence/motion_classifier.h"
-#include "permanence/motion_prediction.h"
-#include "permanence/occluder_selection.h"
-#include "permanence/safety_feedback.h"
+#include "opf/fit/trajectory_fit.h"
+#include "opf/particles/particle_filter_options.h"
+#include "opf/permanence/covariance_inflation.h"
+#include "opf/permanence/motion_classifier.h"
+#include "opf/permanence/motion_prediction.h"
+#include "opf/permanence/occluder_selection.h"
+#include "opf/permanence/safety_feedback.h"
 
 #include <cstddef>
 

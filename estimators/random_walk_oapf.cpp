@@ -1,11 +1,11 @@
-#include "estimators/random_walk_oapf.h"
+#include "opf/estimators/random_walk_oapf.h"
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "particles/gaussian_likelihood.h"
-#include "particles/particle_statistics.h"
-#include "particles/random_walk_model.h"
-#include "particles/resampling.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/so3.h"
+#include "opf/particles/gaussian_likelihood.h"
+#include "opf/particles/particle_statistics.h"
+#include "opf/particles/random_walk_model.h"
+#include "opf/particles/resampling.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,11 +3,11 @@
 // carry an occlusion flag and, while occluded, random-walk in a widening search; no object
 // permanence reasoning.
 
-#include "core/estimator.h"
-#include "estimators/oapf_options.h"
-#include "particles/particle_portion.h"
-#include "particles/pose_particle_filter.h"
-#include "particles/random.h"
+#include "opf/core/estimator.h"
+#include "opf/core/random.h"
+#include "opf/estimators/oapf_options.h"
+#include "opf/particles/particle_portion.h"
+#include "opf/particles/pose_particle_filter.h"
 
 #include <Eigen/Core>
 

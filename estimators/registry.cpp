@@ -1,9 +1,9 @@
-#include "estimators/registry.h"
+#include "opf/estimators/registry.h"
 
-#include "estimators/cv_kalman.h"
-#include "estimators/object_permanence_filter.h"
-#include "estimators/random_walk_oapf.h"
-#include "estimators/standard_pf.h"
+#include "opf/estimators/cv_kalman.h"
+#include "opf/estimators/object_permanence_filter.h"
+#include "opf/estimators/random_walk_oapf.h"
+#include "opf/estimators/standard_pf.h"
 
 #include <stdexcept>
 

@@ -1,8 +1,8 @@
 #pragma once
 // Builds any estimator by its registry name ("pf", "cvkf", ...) with its options.
 
-#include "core/tracker.h"
-#include "estimators/estimator_settings.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/estimator_settings.h"
 
 #include <string>
 #include <vector>

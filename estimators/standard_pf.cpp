@@ -1,6 +1,6 @@
-#include "estimators/standard_pf.h"
+#include "opf/estimators/standard_pf.h"
 
-#include "core/pose_conversion.h"
+#include "opf/core/pose_conversion.h"
 
 #include <sstream>
 #include <stdexcept>

@@ -3,8 +3,8 @@
 // measurement is missing it predicts only, so the estimate stays where the object vanished (the
 // cloud spreads by the random walk) and jumps when the object reappears.
 
-#include "core/estimator.h"
-#include "particles/pose_particle_filter.h"
+#include "opf/core/estimator.h"
+#include "opf/particles/pose_particle_filter.h"
 
 #include <cstdint>
 

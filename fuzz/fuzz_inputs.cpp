@@ -1,8 +1,8 @@
 #include "fuzz_inputs.h"
 
-#include "estimators/estimator_settings_yaml.h"
-#include "io/input_error.h"
-#include "io/measurement_log.h"
+#include "opf/io/estimator_settings_yaml.h"
+#include "opf/io/input_error.h"
+#include "opf/io/measurement_log.h"
 
 #include <cmath>
 #include <optional>

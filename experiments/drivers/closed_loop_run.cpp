@@ -1,13 +1,13 @@
 #include "drivers/closed_loop_run.h"
 
-#include "control/cautious_tracking_controller.h"
-#include "core/pose_conversion.h"
-#include "core/tracker.h"
 #include "drivers/observe_experiment.h"
-#include "estimators/registry.h"
-#include "sim/camera_sensor.h"
-#include "sim/noisy_measurement.h"
-#include "sim/scripted_scene.h"
+#include "opf/control/cautious_tracking_controller.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
+#include "opf/sim/camera_sensor.h"
+#include "opf/sim/noisy_measurement.h"
+#include "opf/sim/scripted_scene.h"
 
 #include <algorithm>
 #include <cmath>

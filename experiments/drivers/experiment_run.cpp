@@ -1,9 +1,9 @@
 #include "drivers/experiment_run.h"
 
-#include "core/pose_conversion.h"
-#include "core/tracker.h"
-#include "estimators/registry.h"
-#include "sim/noisy_measurement.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
+#include "opf/sim/noisy_measurement.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -3,12 +3,12 @@
 // seed the sensor noise is drawn once and every estimator tracks that same stream, so comparisons
 // between estimators are paired.
 
-#include "core/error_accumulator.h"
-#include "core/estimate.h"
-#include "estimators/estimator_settings.h"
-#include "particles/random.h"
-#include "sim/experiment_config.h"
-#include "sim/sighting.h"
+#include "opf/core/error_accumulator.h"
+#include "opf/core/estimate.h"
+#include "opf/core/random.h"
+#include "opf/estimators/estimator_settings.h"
+#include "opf/sim/experiment_config.h"
+#include "opf/sim/sighting.h"
 
 #include <opencv2/core/mat.hpp>
 

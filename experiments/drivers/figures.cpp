@@ -1,9 +1,9 @@
 #include "drivers/figures.h"
 
-#include "core/metrics.h"
-#include "core/pose_conversion.h"
+#include "drivers/line_chart.h"
 #include "drivers/observe_experiment.h"
-#include "io/line_chart.h"
+#include "opf/core/metrics.h"
+#include "opf/core/pose_conversion.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

@@ -4,7 +4,7 @@
 // rendered snapshot with every estimator's estimate drawn in. PNG, from the first seed.
 
 #include "drivers/experiment_run.h"
-#include "sim/experiment_config.h"
+#include "opf/sim/experiment_config.h"
 
 #include <filesystem>
 #include <vector>

@@ -1,7 +1,7 @@
 #include "drivers/observe_experiment.h"
 
-#include "sim/camera_sensor.h"
-#include "sim/scripted_scene.h"
+#include "opf/sim/camera_sensor.h"
+#include "opf/sim/scripted_scene.h"
 
 #include <numbers>
 

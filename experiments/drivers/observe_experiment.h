@@ -3,8 +3,8 @@
 // saw, the input every seed and estimator of an open-loop run shares.
 
 #include "drivers/experiment_run.h"
-#include "sim/camera_model.h"
-#include "sim/experiment_config.h"
+#include "opf/sim/camera_model.h"
+#include "opf/sim/experiment_config.h"
 
 namespace opf::experiments {
 

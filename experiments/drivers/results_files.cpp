@@ -1,9 +1,9 @@
 #include "drivers/results_files.h"
 
-#include "core/metrics.h"
-#include "core/pose_conversion.h"
-#include "io/atomic_file.h"
-#include "io/csv.h"
+#include "opf/core/metrics.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/io/atomic_file.h"
+#include "opf/io/csv.h"
 
 #include <algorithm>
 #include <cstdio>

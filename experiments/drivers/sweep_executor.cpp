@@ -1,6 +1,6 @@
 #include "drivers/sweep_executor.h"
 
-#include "io/atomic_file.h"
+#include "opf/io/atomic_file.h"
 
 #include <fcntl.h>
 #include <spawn.h>

@@ -1,6 +1,6 @@
 #include "drivers/sweep_plan.h"
 
-#include "io/json_text.h"
+#include "opf/io/json_text.h"
 
 #include <string>
 #include <string_view>

@@ -1,9 +1,11 @@
 #include "drivers/sweep_spec.h"
 
-#include "estimators/estimator_settings_yaml.h"
-#include "estimators/registry.h"
-#include "io/input_error.h"
-#include "io/yaml_reader.h"
+#include "drivers/data_directory.h"
+
+#include "opf/estimators/registry.h"
+#include "opf/io/estimator_settings_yaml.h"
+#include "opf/io/input_error.h"
+#include "opf/io/yaml_reader.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -23,7 +25,7 @@ std::filesystem::path resolve_experiment(const std::string& entry,
                                          const std::filesystem::path& sweep_file) {
   const bool is_path =
       entry.find('/') != std::string::npos || std::filesystem::path(entry).extension() == ".yaml";
-  if (!is_path) return std::filesystem::path(OPF_SOURCE_DIR) / "experiments" / (entry + ".yaml");
+  if (!is_path) return bundled_experiments() / (entry + ".yaml");
   const std::filesystem::path path(entry);
   return path.is_absolute() ? path : sweep_file.parent_path() / path;
 }

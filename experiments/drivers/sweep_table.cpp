@@ -1,9 +1,9 @@
 #include "drivers/sweep_table.h"
 
-#include "core/metrics.h"
-#include "io/atomic_file.h"
-#include "io/csv.h"
-#include "io/input_error.h"
+#include "opf/core/metrics.h"
+#include "opf/io/atomic_file.h"
+#include "opf/io/csv.h"
+#include "opf/io/input_error.h"
 
 #include <array>
 #include <cstdio>

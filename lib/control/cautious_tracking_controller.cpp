@@ -1,4 +1,4 @@
-#include "control/cautious_tracking_controller.h"
+#include "opf/control/cautious_tracking_controller.h"
 
 #include <cmath>
 #include <stdexcept>

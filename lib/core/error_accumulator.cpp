@@ -1,6 +1,6 @@
-#include "core/error_accumulator.h"
+#include "opf/core/error_accumulator.h"
 
-#include "core/metrics.h"
+#include "opf/core/metrics.h"
 
 #include <Eigen/Core>
 

@@ -2,7 +2,7 @@
 // Accumulates an estimator's per-frame errors against ground truth over one run and returns the
 // paper's "error distance" (mean over frames), overall and over the frames without a measurement.
 
-#include "core/estimate.h"
+#include "opf/core/estimate.h"
 
 #include <mrpt/poses/CPose3D.h>
 

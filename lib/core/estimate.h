@@ -1,8 +1,8 @@
 #pragma once
 // An estimator's output for one object at one frame.
 
-#include "core/estimate_mode.h"
-#include "core/recovery_events.h"
+#include "opf/core/estimate_mode.h"
+#include "opf/core/recovery_events.h"
 
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 

@@ -2,8 +2,8 @@
 // The interface every estimator implements (standard PF, OPF, constant-velocity Kalman, ...).
 // A Tracker owns one estimator per object and steps them frame by frame.
 
-#include "core/estimate.h"
-#include "core/frame.h"
+#include "opf/core/estimate.h"
+#include "opf/core/frame.h"
 
 #include <mrpt/poses/CPose3D.h>
 

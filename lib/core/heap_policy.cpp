@@ -1,4 +1,4 @@
-#include "core/heap_policy.h"
+#include "opf/core/heap_policy.h"
 
 #include <cstdlib>  // defines __GLIBC__ where glibc is the C library
 

@@ -1,6 +1,6 @@
-#include "core/pose_conversion.h"
+#include "opf/core/pose_conversion.h"
 
-#include "core/so3.h"
+#include "opf/core/so3.h"
 
 #include <mrpt/math/CMatrixFixed.h>
 #include <mrpt/math/CQuaternion.h>

@@ -3,7 +3,7 @@
 // column of result files ("measured+reset", "occluder+underflow+capped"), so a user replaying a
 // log sees which frames the filter had to rescue rather than track.
 
-#include "core/estimate_mode.h"
+#include "opf/core/estimate_mode.h"
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
-#include "core/tracker.h"
+#include "opf/core/tracker.h"
 
-#include "particles/random.h"
+#include "opf/core/random.h"
 
 #include <algorithm>
 #include <sstream>

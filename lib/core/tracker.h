@@ -4,10 +4,10 @@
 // estimators of one frame run in parallel over a worker pool: each sees only the previous frame's
 // estimates of the others, so the results are the same for any number of threads.
 
-#include "core/estimate.h"
-#include "core/estimator.h"
-#include "core/frame.h"
-#include "core/worker_pool.h"
+#include "opf/core/estimate.h"
+#include "opf/core/estimator.h"
+#include "opf/core/frame.h"
+#include "opf/core/worker_pool.h"
 
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "core/worker_pool.h"
+#include "opf/core/worker_pool.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "fit/local_polynomial.h"
+#include "opf/fit/local_polynomial.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include "fit/trajectory_fit.h"
+#include "opf/fit/trajectory_fit.h"
 
-#include "core/so3.h"
+#include "opf/core/so3.h"
 
 #include <ceres/autodiff_cost_function.h>
 #include <ceres/loss_function.h>

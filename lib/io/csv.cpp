@@ -1,6 +1,6 @@
-#include "io/csv.h"
+#include "opf/io/csv.h"
 
-#include "io/input_error.h"
+#include "opf/io/input_error.h"
 
 #include <algorithm>
 #include <charconv>

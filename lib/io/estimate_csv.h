@@ -13,7 +13,7 @@
 // unless the estimator models it; model names the motion models the dynamics module extrapolates
 // with (per axis x, y, z, then rotation: cp, cv, ca or ballistic; co or cw), empty otherwise.
 
-#include "core/estimate.h"
+#include "opf/core/estimate.h"
 
 #include <mrpt/poses/CPose3D.h>
 

@@ -1,7 +1,7 @@
-#include "io/frame_assembler.h"
+#include "opf/io/frame_assembler.h"
 
-#include "io/csv.h"
-#include "io/input_error.h"
+#include "opf/io/csv.h"
+#include "opf/io/input_error.h"
 
 #include <algorithm>
 #include <cmath>

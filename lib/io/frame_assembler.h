@@ -5,9 +5,9 @@
 // frame by frame with memory bounded by the number of objects; reading a whole file feeds it the
 // rows sorted by time and gets the same frames.
 
-#include "core/frame.h"
-#include "io/log_read_options.h"
-#include "io/log_row_reader.h"
+#include "opf/core/frame.h"
+#include "opf/io/log_read_options.h"
+#include "opf/io/log_row_reader.h"
 
 #include <cstddef>
 #include <deque>

@@ -1,6 +1,6 @@
-#include "io/input_file.h"
+#include "opf/io/input_file.h"
 
-#include "io/input_error.h"
+#include "opf/io/input_error.h"
 
 #include <cerrno>
 #include <cstring>

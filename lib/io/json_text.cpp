@@ -1,6 +1,6 @@
-#include "io/json_text.h"
+#include "opf/io/json_text.h"
 
-#include "io/csv.h"
+#include "opf/io/csv.h"
 
 #include <cmath>
 #include <cstdio>

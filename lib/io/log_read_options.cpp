@@ -1,4 +1,4 @@
-#include "io/log_read_options.h"
+#include "opf/io/log_read_options.h"
 
 #include <algorithm>
 #include <array>

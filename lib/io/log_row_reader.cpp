@@ -1,7 +1,7 @@
-#include "io/log_row_reader.h"
+#include "opf/io/log_row_reader.h"
 
-#include "core/pose_conversion.h"
-#include "io/input_error.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/io/input_error.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

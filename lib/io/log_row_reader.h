@@ -3,8 +3,8 @@
 // the file's own column names mapped to the format's: the first stage of reading a log, shared by
 // whole-file reading and streams.
 
-#include "io/csv.h"
-#include "io/log_read_options.h"
+#include "opf/io/csv.h"
+#include "opf/io/log_read_options.h"
 
 #include <mrpt/poses/CPose3D.h>
 

@@ -1,7 +1,7 @@
-#include "io/measurement_dropout.h"
+#include "opf/io/measurement_dropout.h"
 
-#include "io/csv.h"
-#include "io/input_error.h"
+#include "opf/io/csv.h"
+#include "opf/io/input_error.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
-#include "io/measurement_log.h"
+#include "opf/io/measurement_log.h"
 
-#include "io/input_error.h"
-#include "io/input_file.h"
+#include "opf/io/input_error.h"
+#include "opf/io/input_file.h"
 
 #include <algorithm>
 #include <fstream>

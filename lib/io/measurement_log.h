@@ -22,10 +22,10 @@
 // that cannot be seconds and positions that cannot be metres are refused unless their unit is
 // given (LogReadOptions).
 
-#include "core/frame.h"
-#include "io/frame_assembler.h"
-#include "io/log_read_options.h"
-#include "io/log_row_reader.h"
+#include "opf/core/frame.h"
+#include "opf/io/frame_assembler.h"
+#include "opf/io/log_read_options.h"
+#include "opf/io/log_row_reader.h"
 
 #include <filesystem>
 #include <istream>

@@ -1,6 +1,6 @@
-#include "io/measurement_log_writer.h"
+#include "opf/io/measurement_log_writer.h"
 
-#include "io/csv.h"
+#include "opf/io/csv.h"
 
 namespace opf {
 

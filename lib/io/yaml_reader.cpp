@@ -1,7 +1,7 @@
-#include "io/yaml_reader.h"
+#include "opf/io/yaml_reader.h"
 
-#include "io/csv.h"
-#include "io/input_error.h"
+#include "opf/io/csv.h"
+#include "opf/io/input_error.h"
 
 #include <algorithm>
 #include <charconv>

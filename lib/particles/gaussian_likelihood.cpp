@@ -1,4 +1,4 @@
-#include "particles/gaussian_likelihood.h"
+#include "opf/particles/gaussian_likelihood.h"
 
 namespace opf {
 

@@ -4,7 +4,7 @@
 // per portion (rotation residuals in the particle's tangent space). The normalising constant is
 // the same for every particle, so only the exponent is added to the log-weights.
 
-#include "particles/particle_portion.h"
+#include "opf/particles/particle_portion.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

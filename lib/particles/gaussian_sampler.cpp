@@ -1,8 +1,8 @@
-#include "particles/gaussian_sampler.h"
+#include "opf/particles/gaussian_sampler.h"
 
-#include "particles/kernel_dispatch.h"
-#include "particles/random.h"
-#include "particles/vector_math.h"
+#include "opf/core/random.h"
+#include "opf/particles/kernel_dispatch.h"
+#include "opf/particles/vector_math.h"
 
 #include <cmath>
 #include <cstring>

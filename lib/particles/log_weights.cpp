@@ -1,4 +1,4 @@
-#include "particles/log_weights.h"
+#include "opf/particles/log_weights.h"
 
 #include <algorithm>
 #include <cmath>

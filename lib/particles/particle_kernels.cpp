@@ -1,8 +1,8 @@
-#include "particles/particle_kernels.h"
+#include "opf/particles/particle_kernels.h"
 
-#include "particles/kernel_dispatch.h"
-#include "particles/sorted_gather.h"
-#include "particles/vector_math.h"
+#include "opf/particles/kernel_dispatch.h"
+#include "opf/particles/sorted_gather.h"
+#include "opf/particles/vector_math.h"
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 // kernels (a quaternion product, a sine, an arctangent per particle) run at twice the lanes.
 // Log-weights are double for both.
 
-#include "particles/log_weights.h"
-#include "particles/particle_kernels.h"
+#include "opf/particles/log_weights.h"
+#include "opf/particles/particle_kernels.h"
 
 #include <Eigen/Core>
 

@@ -1,4 +1,4 @@
-#include "particles/particle_statistics.h"
+#include "opf/particles/particle_statistics.h"
 
 #include <Eigen/Eigenvalues>
 

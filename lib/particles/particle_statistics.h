@@ -2,7 +2,7 @@
 // Weighted statistics of the particle portions: translation mean and covariance, the Markley
 // quaternion mean and the rotation covariance in the tangent space at that mean.
 
-#include "particles/particle_portion.h"
+#include "opf/particles/particle_portion.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

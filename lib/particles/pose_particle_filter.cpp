@@ -1,9 +1,9 @@
-#include "particles/pose_particle_filter.h"
+#include "opf/particles/pose_particle_filter.h"
 
-#include "core/pose_conversion.h"
-#include "particles/gaussian_likelihood.h"
-#include "particles/random_walk_model.h"
-#include "particles/resampling.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/particles/gaussian_likelihood.h"
+#include "opf/particles/random_walk_model.h"
+#include "opf/particles/resampling.h"
 
 #include <cmath>
 #include <stdexcept>

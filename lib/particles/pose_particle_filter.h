@@ -3,11 +3,11 @@
 // normalise and resample, moments): a translation portion and a rotation portion, each with its
 // own particles and weights, one seeded generator. Estimators (standard PF, OPF) drive the steps.
 
-#include "particles/gaussian_sampler.h"
-#include "particles/particle_filter_options.h"
-#include "particles/particle_portion.h"
-#include "particles/particle_statistics.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/particles/gaussian_sampler.h"
+#include "opf/particles/particle_filter_options.h"
+#include "opf/particles/particle_portion.h"
+#include "opf/particles/particle_statistics.h"
 
 #include <mrpt/poses/CPose3DPDFGaussian.h>
 

@@ -1,4 +1,4 @@
-#include "particles/random_walk_model.h"
+#include "opf/particles/random_walk_model.h"
 
 #include <algorithm>
 #include <array>

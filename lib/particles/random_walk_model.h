@@ -3,8 +3,8 @@
 // translation (paper Eq. 3 with f the identity) and q' = q * exp(e) in the tangent space for
 // rotation, so rotation particles stay unit quaternions on SO(3).
 
-#include "particles/gaussian_sampler.h"
-#include "particles/particle_portion.h"
+#include "opf/particles/gaussian_sampler.h"
+#include "opf/particles/particle_portion.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

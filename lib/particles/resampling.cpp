@@ -1,6 +1,6 @@
-#include "particles/resampling.h"
+#include "opf/particles/resampling.h"
 
-#include "particles/particle_kernels.h"
+#include "opf/particles/particle_kernels.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,8 +3,8 @@
 // TParticleResamplingAlgorithm, implemented over our seeded generator (MRPT's own draw from its
 // global generator) in O(N), returning indices in increasing order.
 
-#include "particles/particle_filter_options.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/particles/particle_filter_options.h"
 
 #include <Eigen/Core>
 

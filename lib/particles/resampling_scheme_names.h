@@ -1,7 +1,7 @@
 #pragma once
 // The names of the resampling schemes as config files and the command line spell them.
 
-#include "particles/particle_filter_options.h"
+#include "opf/particles/particle_filter_options.h"
 
 #include <string_view>
 

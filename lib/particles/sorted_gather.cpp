@@ -1,4 +1,4 @@
-#include "particles/sorted_gather.h"
+#include "opf/particles/sorted_gather.h"
 
 #include <utility>
 

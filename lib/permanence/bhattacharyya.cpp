@@ -1,4 +1,4 @@
-#include "permanence/bhattacharyya.h"
+#include "opf/permanence/bhattacharyya.h"
 
 #include <Eigen/Cholesky>
 

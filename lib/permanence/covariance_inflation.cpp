@@ -1,4 +1,4 @@
-#include "permanence/covariance_inflation.h"
+#include "opf/permanence/covariance_inflation.h"
 
 #include <algorithm>
 #include <cmath>

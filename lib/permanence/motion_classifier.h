@@ -2,7 +2,7 @@
 // The dynamics module's first question (paper Sec. III-B.1, Eq. 10-11): was the object moving or
 // static over its last H states before the measurement went missing?
 
-#include "fit/trajectory_fit.h"
+#include "opf/fit/trajectory_fit.h"
 
 #include <span>
 

@@ -1,7 +1,7 @@
-#include "permanence/motion_prediction.h"
+#include "opf/permanence/motion_prediction.h"
 
-#include "core/so3.h"
-#include "permanence/second_difference_noise.h"
+#include "opf/core/so3.h"
+#include "opf/permanence/second_difference_noise.h"
 
 #include <Eigen/Cholesky>
 

@@ -19,7 +19,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "fit/local_polynomial.h"
+#include "opf/fit/local_polynomial.h"
 
 #include <array>
 #include <deque>

@@ -1,6 +1,6 @@
-#include "permanence/occluder_selection.h"
+#include "opf/permanence/occluder_selection.h"
 
-#include "permanence/bhattacharyya.h"
+#include "opf/permanence/bhattacharyya.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>

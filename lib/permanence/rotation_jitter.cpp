@@ -1,7 +1,7 @@
-#include "permanence/rotation_jitter.h"
+#include "opf/permanence/rotation_jitter.h"
 
-#include "core/so3.h"
-#include "permanence/second_difference_noise.h"
+#include "opf/core/so3.h"
+#include "opf/permanence/second_difference_noise.h"
 
 #include <algorithm>
 #include <cmath>

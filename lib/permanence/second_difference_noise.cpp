@@ -1,4 +1,4 @@
-#include "permanence/second_difference_noise.h"
+#include "opf/permanence/second_difference_noise.h"
 
 #include <algorithm>
 #include <cstddef>

@@ -1,6 +1,6 @@
-#include "sim/camera_sensor.h"
+#include "opf/sim/camera_sensor.h"
 
-#include "sim/silhouette.h"
+#include "opf/sim/silhouette.h"
 
 #include <algorithm>
 #include <cmath>

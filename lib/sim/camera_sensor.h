@@ -2,10 +2,10 @@
 // The simulated camera of the paper's experiments (Sec. IV-B): renders the scene, finds each
 // tracked body's colour blob, and reports its centre and how much of it is visible.
 
-#include "sim/camera_model.h"
-#include "sim/colour_blob_detector.h"
-#include "sim/scene_renderer.h"
-#include "sim/sighting.h"
+#include "opf/sim/camera_model.h"
+#include "opf/sim/colour_blob_detector.h"
+#include "opf/sim/scene_renderer.h"
+#include "opf/sim/sighting.h"
 
 namespace opf::sim {
 

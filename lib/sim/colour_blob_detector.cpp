@@ -1,4 +1,4 @@
-#include "sim/colour_blob_detector.h"
+#include "opf/sim/colour_blob_detector.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>

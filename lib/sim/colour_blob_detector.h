@@ -9,8 +9,8 @@
 #include <optional>
 #include <vector>
 
-#include "sim/body.h"
-#include "sim/camera_model.h"
+#include "opf/sim/body.h"
+#include "opf/sim/camera_model.h"
 
 namespace opf::sim {
 

@@ -1,8 +1,8 @@
-#include "sim/experiment_config.h"
+#include "opf/sim/experiment_config.h"
 
-#include "io/input_error.h"
-#include "io/input_file.h"
-#include "io/yaml_reader.h"
+#include "opf/io/input_error.h"
+#include "opf/io/input_file.h"
+#include "opf/io/yaml_reader.h"
 
 #include <algorithm>
 #include <cmath>

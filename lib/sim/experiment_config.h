@@ -2,8 +2,8 @@
 // An experiment as a user writes it (experiments/*.yaml): the scripted scene, the camera, the
 // measurement model and which objects the results table scores.
 
-#include "control/cautious_tracking_controller.h"
-#include "sim/scripted_scene.h"
+#include "opf/control/cautious_tracking_controller.h"
+#include "opf/sim/scripted_scene.h"
 
 #include <Eigen/Core>
 

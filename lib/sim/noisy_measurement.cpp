@@ -1,7 +1,7 @@
-#include "sim/noisy_measurement.h"
+#include "opf/sim/noisy_measurement.h"
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/so3.h"
 
 #include <stdexcept>
 

@@ -3,11 +3,11 @@
 // a position from the colour blob with seeded noise, and an orientation from a marker-style
 // sensor (the true orientation with seeded noise), for every body seen well enough.
 
-#include "core/frame.h"
-#include "particles/random.h"
-#include "sim/body.h"
-#include "sim/experiment_config.h"
-#include "sim/sighting.h"
+#include "opf/core/frame.h"
+#include "opf/core/random.h"
+#include "opf/sim/body.h"
+#include "opf/sim/experiment_config.h"
+#include "opf/sim/sighting.h"
 
 namespace opf::sim {
 

@@ -1,4 +1,4 @@
-#include "sim/scene_renderer.h"
+#include "opf/sim/scene_renderer.h"
 
 #include <mrpt/img/CImage.h>
 #include <mrpt/img/TCamera.h>
@@ -22,7 +22,7 @@
 #include <utility>
 #include <vector>
 
-#include "core/pose_conversion.h"
+#include "opf/core/pose_conversion.h"
 
 namespace opf::sim {
 namespace {

@@ -6,8 +6,8 @@
 
 #include <memory>
 
-#include "sim/body.h"
-#include "sim/camera_model.h"
+#include "opf/sim/body.h"
+#include "opf/sim/camera_model.h"
 
 namespace opf::sim {
 

@@ -3,7 +3,7 @@
 // a body is carried by another (the ball under the mug), rolling without slipping, and poses set
 // from outside (the robot's end-effector under the controller). at(t) gives the snapshot.
 
-#include "sim/body.h"
+#include "opf/sim/body.h"
 
 #include <optional>
 #include <string>

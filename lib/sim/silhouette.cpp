@@ -1,4 +1,4 @@
-#include "sim/silhouette.h"
+#include "opf/sim/silhouette.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>

@@ -2,8 +2,8 @@
 // The image area a body would cover if nothing hid it, so that experiments can tell how much of
 // a detected object is visible (visible fraction = detected area / expected area).
 
-#include "sim/body.h"
-#include "sim/camera_model.h"
+#include "opf/sim/body.h"
+#include "opf/sim/camera_model.h"
 
 namespace opf::sim {
 

@@ -1,4 +1,4 @@
-#include "vision/blob_pose.h"
+#include "opf/vision/blob_pose.h"
 
 #include <algorithm>
 #include <cmath>

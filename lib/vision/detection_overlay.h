@@ -3,7 +3,7 @@
 // pixels tinted, its centroid marked, its principal axis drawn and its name written beside it; the
 // candidate pixels that were not taken for the object whitened.
 
-#include "vision/video_detection.h"
+#include "opf/vision/video_detection.h"
 
 #include <opencv2/core/mat.hpp>
 

@@ -1,7 +1,7 @@
-#include "vision/frame_source.h"
+#include "opf/vision/frame_source.h"
 
-#include "io/input_error.h"
-#include "io/input_file.h"
+#include "opf/io/input_error.h"
+#include "opf/io/input_file.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>

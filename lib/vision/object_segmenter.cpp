@@ -1,4 +1,4 @@
-#include "vision/object_segmenter.h"
+#include "opf/vision/object_segmenter.h"
 
 #include <opencv2/imgproc.hpp>
 

@@ -1,9 +1,9 @@
-#include "vision/segmentation_spec.h"
+#include "opf/vision/segmentation_spec.h"
 
-#include "io/csv.h"
-#include "io/input_error.h"
-#include "io/input_file.h"
-#include "io/yaml_reader.h"
+#include "opf/io/csv.h"
+#include "opf/io/input_error.h"
+#include "opf/io/input_file.h"
+#include "opf/io/yaml_reader.h"
 
 #include <array>
 #include <cmath>

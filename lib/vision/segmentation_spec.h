@@ -21,8 +21,8 @@
 // Unknown keys are errors (with a suggestion for near misses), as are values out of range; every
 // error is an InputError naming the file, the line, the key path and what was expected.
 
-#include "vision/blob_pose.h"
-#include "vision/object_segmenter.h"
+#include "opf/vision/blob_pose.h"
+#include "opf/vision/object_segmenter.h"
 
 #include <filesystem>
 #include <string>

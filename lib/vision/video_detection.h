@@ -2,10 +2,10 @@
 // `opf detect`'s pipeline: every frame of a video through one segmenter per object of a
 // segmentation spec, the blobs turned into poses, the poses written as a measurement log.
 
-#include "vision/blob_pose.h"
-#include "vision/frame_source.h"
-#include "vision/object_segmenter.h"
-#include "vision/segmentation_spec.h"
+#include "opf/vision/blob_pose.h"
+#include "opf/vision/frame_source.h"
+#include "opf/vision/object_segmenter.h"
+#include "opf/vision/segmentation_spec.h"
 
 #include <cstddef>
 #include <functional>

@@ -2,7 +2,7 @@
 // sample clip box.mp4 (package opencv-doc, scripts/packages.txt) with the bundled box.yaml.
 
 #include "cli/opf_program.h"
-#include "io/measurement_log.h"
+#include "opf/io/measurement_log.h"
 #include "vision/synthetic_image.h"
 
 #include <opencv2/imgcodecs.hpp>

@@ -1,7 +1,7 @@
 // End-to-end tests of `opf dropout` on the bundled example log.
 
 #include "cli/opf_program.h"
-#include "io/csv.h"
+#include "opf/io/csv.h"
 
 #include <gtest/gtest.h>
 

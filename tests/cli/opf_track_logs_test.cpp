@@ -2,7 +2,7 @@
 // answered frame by frame; other units and column names; gaps filled and marked; quiet runs.
 
 #include "cli/opf_program.h"
-#include "io/estimate_csv.h"
+#include "opf/io/estimate_csv.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // End-to-end tests of the `opf` program: runs the built binary on the bundled example log.
 
 #include "cli/opf_program.h"
-#include "io/estimate_csv.h"
-#include "io/measurement_log.h"
+#include "opf/io/estimate_csv.h"
+#include "opf/io/measurement_log.h"
 
-#include "core/metrics.h"
+#include "opf/core/metrics.h"
 
 #include <gtest/gtest.h>
 

@@ -5,11 +5,11 @@
 // must not grow once the ensemble is running: a leak of more than one byte per object-step would
 // show.
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "core/tracker.h"
-#include "estimators/registry.h"
-#include "particles/random.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
 
 #include <gtest/gtest.h>
 

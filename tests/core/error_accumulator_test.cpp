@@ -1,4 +1,4 @@
-#include "core/error_accumulator.h"
+#include "opf/core/error_accumulator.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "core/heap_policy.h"
+#include "opf/core/heap_policy.h"
 
 #include <gtest/gtest.h>
 

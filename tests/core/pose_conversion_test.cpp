@@ -1,7 +1,7 @@
-#include "core/pose_conversion.h"
+#include "opf/core/pose_conversion.h"
 
-#include "core/so3.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "core/recovery_events.h"
+#include "opf/core/recovery_events.h"
 
 #include <gtest/gtest.h>
 

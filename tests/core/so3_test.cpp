@@ -1,4 +1,4 @@
-#include "core/so3.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "core/tracker.h"
+#include "opf/core/tracker.h"
 
 #include <gtest/gtest.h>
 

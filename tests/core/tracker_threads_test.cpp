@@ -1,11 +1,11 @@
 // The Tracker's results do not depend on how many threads step the objects: every estimator
 // reads the same previous-frame view and owns its generators.
 
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "core/tracker.h"
-#include "estimators/registry.h"
-#include "particles/random.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "drivers/closed_loop_run.h"
-#include "estimators/estimator_settings_yaml.h"
+#include "opf/io/estimator_settings_yaml.h"
 
-#include "core/pose_conversion.h"
+#include "opf/core/pose_conversion.h"
 
 #include <gtest/gtest.h>
 

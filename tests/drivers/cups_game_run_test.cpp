@@ -1,9 +1,9 @@
 #include "drivers/experiment_run.h"
 
 #include "drivers/observe_experiment.h"
-#include "estimators/estimator_settings_yaml.h"
+#include "opf/io/estimator_settings_yaml.h"
 
-#include "core/pose_conversion.h"
+#include "opf/core/pose_conversion.h"
 
 #include <gtest/gtest.h>
 

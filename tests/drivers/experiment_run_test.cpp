@@ -1,7 +1,7 @@
 #include "drivers/experiment_run.h"
 
 #include "drivers/observe_experiment.h"
-#include "estimators/estimator_settings_yaml.h"
+#include "opf/io/estimator_settings_yaml.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,9 @@
 #include "drivers/sweep_spec.h"
+#include "drivers/data_directory.h"
 #include "drivers/sweep_runs.h"
 
-#include "estimators/estimator_settings_yaml.h"
-#include "io/input_error.h"
+#include "opf/io/estimator_settings_yaml.h"
+#include "opf/io/input_error.h"
 
 #include <gtest/gtest.h>
 
@@ -182,8 +183,9 @@ TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
                 ":2: key 'estimators': unknown estimator 'kalman'; expected one of opf, pf, "
                 "cvkf, oapf");
   EXPECT_EQ(error_of("experiments: [no_such_experiment]\nestimators: [opf]\n"),
-            file + ":1: key 'experiments': no experiment file " + std::string(OPF_SOURCE_DIR) +
-                "/experiments/no_such_experiment.yaml for 'no_such_experiment' (a bare name is "
+            file + ":1: key 'experiments': no experiment file " +
+                (opf::experiments::bundled_experiments() / "no_such_experiment.yaml").string() +
+                " for 'no_such_experiment' (a bare name is "
                 "experiments/<name>.yaml, a path is relative to the sweep file)");
   EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nconfig: missing.yaml\n"),
             file + ":3: key 'config': no estimator settings file " +

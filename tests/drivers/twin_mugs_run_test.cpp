@@ -2,9 +2,9 @@
 
 #include "drivers/observe_experiment.h"
 #include "drivers/results_files.h"
-#include "estimators/estimator_settings_yaml.h"
+#include "opf/io/estimator_settings_yaml.h"
 
-#include "core/pose_conversion.h"
+#include "opf/core/pose_conversion.h"
 
 #include <gtest/gtest.h>
 

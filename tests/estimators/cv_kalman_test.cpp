@@ -1,9 +1,9 @@
-#include "estimators/cv_kalman.h"
+#include "opf/estimators/cv_kalman.h"
 
-#include "core/metrics.h"
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "particles/random.h"
+#include "opf/core/metrics.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/math/CQuaternion.h>

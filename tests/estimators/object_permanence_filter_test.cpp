@@ -1,11 +1,11 @@
-#include "estimators/object_permanence_filter.h"
+#include "opf/estimators/object_permanence_filter.h"
 
-#include "core/metrics.h"
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "core/tracker.h"
-#include "estimators/standard_pf.h"
-#include "particles/random.h"
+#include "opf/core/metrics.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/standard_pf.h"
 
 #include <gtest/gtest.h>
 

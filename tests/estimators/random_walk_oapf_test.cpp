@@ -1,10 +1,10 @@
-#include "estimators/random_walk_oapf.h"
+#include "opf/estimators/random_walk_oapf.h"
 
-#include "core/metrics.h"
-#include "core/pose_conversion.h"
-#include "core/so3.h"
-#include "estimators/standard_pf.h"
-#include "particles/random.h"
+#include "opf/core/metrics.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/estimators/standard_pf.h"
 
 #include <gtest/gtest.h>
 

@@ -2,10 +2,10 @@
 // OPF with default settings: per-object clocks a fraction of a millisecond apart track as well as
 // aligned ones, and a thrown ball is estimated in every frame of a 0.5 s gap with no rows.
 
-#include "core/tracker.h"
-#include "estimators/registry.h"
-#include "io/measurement_log.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
+#include "opf/io/measurement_log.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "estimators/registry.h"
+#include "opf/estimators/registry.h"
 
 #include <gtest/gtest.h>
 

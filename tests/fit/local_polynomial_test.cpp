@@ -1,6 +1,6 @@
-#include "fit/local_polynomial.h"
+#include "opf/fit/local_polynomial.h"
 
-#include "particles/random.h"
+#include "opf/core/random.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "fit/trajectory_fit.h"
+#include "opf/fit/trajectory_fit.h"
 
-#include "core/so3.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "io/atomic_file.h"
+#include "opf/io/atomic_file.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

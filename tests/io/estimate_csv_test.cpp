@@ -1,8 +1,8 @@
-#include "io/estimate_csv.h"
+#include "opf/io/estimate_csv.h"
 
-#include "core/pose_conversion.h"
-#include "io/csv.h"
-#include "io/input_error.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/io/csv.h"
+#include "opf/io/input_error.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

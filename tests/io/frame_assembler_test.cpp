@@ -2,8 +2,8 @@
 // are refused with the unit they look like, gaps are filled at the log's rate, and a stream gives
 // the frames a whole-file read gives, each as soon as the next frame's first row is in.
 
-#include "io/input_error.h"
-#include "io/measurement_log.h"
+#include "opf/io/input_error.h"
+#include "opf/io/measurement_log.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "io/input_error.h"
+#include "opf/io/input_error.h"
 
 #include <gtest/gtest.h>
 

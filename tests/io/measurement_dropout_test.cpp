@@ -1,8 +1,8 @@
-#include "io/measurement_dropout.h"
+#include "opf/io/measurement_dropout.h"
 
-#include "io/csv.h"
-#include "io/input_error.h"
-#include "io/measurement_log.h"
+#include "opf/io/csv.h"
+#include "opf/io/input_error.h"
+#include "opf/io/measurement_log.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "io/measurement_log_writer.h"
+#include "opf/io/measurement_log_writer.h"
 
-#include "core/pose_conversion.h"
-#include "io/measurement_log.h"
+#include "opf/core/pose_conversion.h"
+#include "opf/io/measurement_log.h"
 
 #include <gtest/gtest.h>
 

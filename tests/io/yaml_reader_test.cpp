@@ -1,6 +1,6 @@
-#include "io/yaml_reader.h"
+#include "opf/io/yaml_reader.h"
 
-#include "io/input_error.h"
+#include "opf/io/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "particles/gaussian_sampler.h"
+#include "opf/particles/gaussian_sampler.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "particles/particle_kernels.h"
+#include "opf/particles/particle_kernels.h"
 
-#include "core/so3.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "particles/particle_statistics.h"
+#include "opf/particles/particle_statistics.h"
 
-#include "core/so3.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

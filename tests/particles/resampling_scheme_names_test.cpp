@@ -1,4 +1,4 @@
-#include "particles/resampling_scheme_names.h"
+#include "opf/particles/resampling_scheme_names.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "particles/resampling.h"
+#include "opf/particles/resampling.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "particles/sorted_gather.h"
+#include "opf/particles/sorted_gather.h"
 
-#include "particles/random.h"
+#include "opf/core/random.h"
 
 #include <gtest/gtest.h>
 

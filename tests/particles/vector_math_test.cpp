@@ -1,6 +1,6 @@
-#include "particles/vector_math.h"
+#include "opf/particles/vector_math.h"
 
-#include "particles/random.h"
+#include "opf/core/random.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-#include "permanence/motion_classifier.h"
+#include "opf/permanence/motion_classifier.h"
 
-#include "core/so3.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
-#include "permanence/motion_prediction.h"
+#include "opf/permanence/motion_prediction.h"
 
-#include "core/so3.h"
-#include "fit/local_polynomial.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
+#include "opf/fit/local_polynomial.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "permanence/occluder_selection.h"
+#include "opf/permanence/occluder_selection.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-#include "permanence/rotation_jitter.h"
+#include "opf/permanence/rotation_jitter.h"
 
-#include "core/so3.h"
-#include "particles/random.h"
+#include "opf/core/random.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

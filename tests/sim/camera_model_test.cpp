@@ -1,4 +1,4 @@
-#include "sim/camera_model.h"
+#include "opf/sim/camera_model.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "sim/camera_sensor.h"
+#include "opf/sim/camera_sensor.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "sim/colour_blob_detector.h"
+#include "opf/sim/colour_blob_detector.h"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "sim/scene_renderer.h"
-#include "sim/silhouette.h"
+#include "opf/sim/scene_renderer.h"
+#include "opf/sim/silhouette.h"
 
 namespace opf::sim {
 namespace {

@@ -1,6 +1,6 @@
-#include "sim/experiment_config.h"
+#include "opf/sim/experiment_config.h"
 
-#include "io/input_error.h"
+#include "opf/io/input_error.h"
 
 #include <gtest/gtest.h>
 

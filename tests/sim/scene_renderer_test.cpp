@@ -1,4 +1,4 @@
-#include "sim/scene_renderer.h"
+#include "opf/sim/scene_renderer.h"
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "sim/colour_blob_detector.h"
+#include "opf/sim/colour_blob_detector.h"
 
 namespace opf::sim {
 namespace {

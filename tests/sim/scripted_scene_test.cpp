@@ -1,6 +1,6 @@
-#include "sim/scripted_scene.h"
+#include "opf/sim/scripted_scene.h"
 
-#include "core/so3.h"
+#include "opf/core/so3.h"
 
 #include <gtest/gtest.h>
 

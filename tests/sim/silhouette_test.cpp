@@ -1,4 +1,4 @@
-#include "sim/silhouette.h"
+#include "opf/sim/silhouette.h"
 
 #include <gtest/gtest.h>
 

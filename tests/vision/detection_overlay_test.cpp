@@ -1,4 +1,4 @@
-#include "vision/detection_overlay.h"
+#include "opf/vision/detection_overlay.h"
 
 #include "vision/synthetic_image.h"
 

@@ -1,6 +1,6 @@
-#include "vision/frame_source.h"
+#include "opf/vision/frame_source.h"
 
-#include "io/input_error.h"
+#include "opf/io/input_error.h"
 
 #include <opencv2/imgcodecs.hpp>
 

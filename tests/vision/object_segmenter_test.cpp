@@ -1,6 +1,6 @@
-#include "vision/object_segmenter.h"
+#include "opf/vision/object_segmenter.h"
 
-#include "vision/blob_pose.h"
+#include "opf/vision/blob_pose.h"
 #include "vision/synthetic_image.h"
 
 #include <gtest/gtest.h>

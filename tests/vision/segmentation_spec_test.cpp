@@ -1,6 +1,6 @@
-#include "vision/segmentation_spec.h"
+#include "opf/vision/segmentation_spec.h"
 
-#include "io/input_error.h"
+#include "opf/io/input_error.h"
 
 #include <gtest/gtest.h>
 

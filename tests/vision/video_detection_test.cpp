@@ -1,7 +1,7 @@
-#include "vision/video_detection.h"
+#include "opf/vision/video_detection.h"
 
-#include "io/input_error.h"
-#include "io/measurement_log.h"
+#include "opf/io/input_error.h"
+#include "opf/io/measurement_log.h"
 #include "vision/synthetic_image.h"
 
 #include <opencv2/imgcodecs.hpp>

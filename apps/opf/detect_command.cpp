@@ -1,0 +1,165 @@
+#include "detect_command.h"
+
+#include "arguments.h"
+#include "opf/io/atomic_file.h"
+#include "opf/vision/detection_overlay.h"
+#include "opf/vision/frame_source.h"
+#include "opf/vision/segmentation_spec.h"
+#include "opf/vision/video_detection.h"
+
+#include <opencv2/imgcodecs.hpp>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+namespace opf::cli {
+namespace {
+
+std::vector<OptionSpec> specs() {
+  return {
+      {"video", "FILE", "a video file, or a folder of images read in name order (required)"},
+      {"objects", "SPEC.yaml", "the objects and how to segment each (required)"},
+      {"out", "LOG.csv", "measurement log: t,object,x,y,z,qx,qy,qz,qw (required)"},
+      {"rate", "HZ", "frame rate, overriding the video's (required for a folder of images)"},
+      {"first", "N", "first frame to segment, counting from 0 (default 0)"},
+      {"frames", "N", "segment at most N frames (default: to the end)"},
+      {"overlay", "DIR", "also write PNGs of the frames with what was found drawn over them"},
+      {"overlay-every", "N", "with --overlay: every Nth frame (default 10)"},
+  };
+}
+
+constexpr const char* kSummary =
+    "Finds each object of SPEC.yaml in every frame of a video (an HSV colour range, a dark or\n"
+    "light grey-level threshold, or background subtraction following one mover from a start\n"
+    "point) and writes one row per object and frame it was found in: the blob's centroid (u, v)\n"
+    "at a nominal scale (x = u * metres_per_pixel, y = v * metres_per_pixel, default 1 px = 1 "
+    "mm),\n"
+    "the depth from its apparent size (z = reference_depth * sqrt(reference_area / area)) and a\n"
+    "rotation about z by the principal axis of its moments, unwrapped so that it never jumps by\n"
+    "pi. t = frame / rate. A frame where an object is not found has no row for it (unobserved).\n"
+    "See lib/vision/segmentation_spec.h for the YAML keys. The log is written only when the whole\n"
+    "run succeeded.";
+
+/// "\r[#####.....] 123/456" on a terminal; nothing is drawn otherwise.
+class ProgressBar {
+ public:
+  explicit ProgressBar(std::optional<std::size_t> total)
+      : total_(total), enabled_(isatty(STDERR_FILENO) != 0) {}
+  void update(std::size_t done) {
+    if (!enabled_) return;
+    constexpr std::size_t kWidth = 40;
+    std::string bar;
+    if (total_ && *total_ > 0) {
+      const std::size_t filled = std::min(kWidth, done * kWidth / *total_);
+      bar.append(1, '[').append(filled, '#').append(kWidth - filled, '.').append("] ");
+    }
+    std::cerr << "\rdetect: " << bar << done;
+    if (total_) std::cerr << '/' << *total_;
+    std::cerr << " frames" << std::flush;
+  }
+  void finish() {
+    if (enabled_) std::cerr << "\n";
+  }
+
+ private:
+  std::optional<std::size_t> total_;
+  bool enabled_;
+};
+
+std::string range_text(double low, double high) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.0f-%.0f", low, high);
+  return buffer;
+}
+
+}  // namespace
+
+int detect_command(const std::vector<std::string>& raw) {
+  const auto option_specs = specs();
+  const Arguments args(raw, option_specs);
+  if (args.help()) {
+    std::cout << usage("detect", kSummary, option_specs);
+    return 0;
+  }
+  const std::filesystem::path video = args.require("video");
+  const std::filesystem::path spec_path = args.require("objects");
+  const std::filesystem::path out = args.require("out");
+  const std::optional<double> rate = args.get_number("rate");
+  if (rate && !(*rate > 0.0)) throw UsageError{"option '--rate' expects a frame rate > 0"};
+  const std::size_t first = args.get_count("first").value_or(0);
+  std::optional<std::size_t> frames;
+  if (const auto count = args.get_count("frames")) {
+    if (*count == 0) throw UsageError{"option '--frames' expects at least 1"};
+    frames = *count;
+  }
+  const std::optional<std::filesystem::path> overlay_dir =
+      args.has("overlay") ? std::optional<std::filesystem::path>(*args.get("overlay"))
+                          : std::nullopt;
+  const std::size_t overlay_every = args.get_count("overlay-every").value_or(10);
+  if (overlay_every == 0) throw UsageError{"option '--overlay-every' expects at least 1"};
+  if (args.has("overlay-every") && !overlay_dir)
+    throw UsageError{"option '--overlay-every' needs --overlay"};
+
+  const vision::SegmentationSpec spec = vision::load_segmentation_spec(spec_path);
+  vision::FrameSource source(video);
+  const std::optional<double> fps = rate ? rate : source.fps();
+  if (!fps)
+    throw UsageError{"option '--rate' is required: " + video.string() + " states no frame rate"};
+  if (overlay_dir) std::filesystem::create_directories(*overlay_dir);
+
+  std::vector<std::string> names;
+  for (const auto& object : spec.objects) names.push_back(object.name);
+  std::optional<std::size_t> total;
+  if (source.frame_count())
+    total = *source.frame_count() > first ? *source.frame_count() - first : 0;
+  if (frames) total = total ? std::min(*total, *frames) : *frames;
+  ProgressBar progress(total);
+  std::size_t done = 0;
+  const vision::VideoDetection detection =
+      vision::detect_in_video(source, spec, first, frames, [&](const vision::FrameResult& result) {
+        progress.update(++done);
+        if (overlay_dir && (result.frame - first) % overlay_every == 0) {
+          char name[32];
+          std::snprintf(name, sizeof name, "frame_%06zu.png", result.frame);
+          const std::filesystem::path file = *overlay_dir / name;
+          if (!cv::imwrite(file.string(), vision::draw_detection_overlay(result, names)))
+            throw std::runtime_error("cannot write " + file.string());
+        }
+      });
+  progress.finish();
+
+  write_file_atomically(
+      out, [&](std::ostream& os) { vision::write_detection_log(os, detection, *fps); });
+
+  const std::size_t last = detection.first_frame + detection.frames - 1;
+  std::cout << "opf detect: " << video.string() << ", frames " << detection.first_frame << "-"
+            << last << " (" << detection.frames << " frames at " << *fps << " Hz)\n";
+  for (const vision::ObjectTrack& object : detection.objects) {
+    std::cout << "  " << object.name << ": found in " << object.sightings.size() << " of "
+              << detection.frames << " frames";
+    if (!object.sightings.empty()) {
+      double u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
+      for (const auto& s : object.sightings) {
+        u0 = std::min(u0, s.centroid_px.x);
+        u1 = std::max(u1, s.centroid_px.x);
+        v0 = std::min(v0, s.centroid_px.y);
+        v1 = std::max(v1, s.centroid_px.y);
+      }
+      std::cout << ", frames " << object.sightings.front().frame << "-"
+                << object.sightings.back().frame << ", centroid u " << range_text(u0, u1)
+                << " px, v " << range_text(v0, v1) << " px";
+    }
+    std::cout << "\n";
+    if (object.sightings.empty())
+      std::cerr << "opf detect: warning: object '" << object.name << "' was never found\n";
+  }
+  std::cout << "  log written to " << out.string() << "\n";
+  return 0;
+}
+
+}  // namespace opf::cli

@@ -1,0 +1,84 @@
+#include "estimator_arguments.h"
+
+#include "cli/presets.h"
+#include "opf/io/estimator_settings_yaml.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace opf::cli {
+
+std::vector<OptionSpec> estimator_option_specs() {
+  return {
+      {"preset", "NAME",
+       "default (the toolkit's best settings) or paper (the paper's literal rules, "
+       "experiments/configs/paper.yaml); --config is applied on top"},
+      {"config", "FILE.yaml", "estimator options (see experiments/configs/estimators.yaml)"},
+      {"camera", "X,Y,Z",
+       "the camera's position in the world frame (m): the occluder module's line of sight runs "
+       "from it (default: straight down; experiments pass their own)"},
+      {"particles", "N", "particles per portion (translation and rotation); default 5000"},
+      {"seed", "S", "seed of every random draw; the same seed gives identical output (default 1)"},
+      {"threads", "N",
+       "threads that step the objects of a frame (default: the machine's cores); the output is "
+       "the same for any N"},
+  };
+}
+
+EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base) {
+  EstimatorSettings settings = base;
+  if (const auto preset = args.get("preset")) {
+    if (*preset == "paper")
+      settings = parse_estimator_settings(kPaperPresetYaml, "preset paper", settings);
+    else if (*preset != "default")
+      throw UsageError{"option '--preset': expected default or paper, got \"" + *preset + "\""};
+  }
+  if (const auto path = args.get("config")) settings = load_estimator_settings(*path, settings);
+  if (const auto camera = args.get("camera")) {
+    const std::vector<std::string> parts = split_list(*camera);
+    Eigen::Vector3d position;
+    bool ok = parts.size() == 3;
+    for (std::size_t i = 0; ok && i < 3; ++i) {
+      char* end = nullptr;
+      position(static_cast<Eigen::Index>(i)) = std::strtod(parts[i].c_str(), &end);
+      ok = end != parts[i].c_str() && *end == '\0' &&
+           std::isfinite(position(static_cast<Eigen::Index>(i)));
+    }
+    if (!ok)
+      throw UsageError{"option '--camera': expected three numbers X,Y,Z in metres, got \"" +
+                       *camera + "\""};
+    settings.opf.occluder.camera_position = position;
+  }
+  if (const auto particles = args.get_count("particles")) {
+    if (*particles == 0) throw UsageError{"option '--particles' must be at least 1"};
+    settings.pf.translation_particles = settings.pf.rotation_particles = *particles;
+  }
+  return settings;
+}
+
+void require_camera_for_line_of_sight(const EstimatorSettings& settings) {
+  if (settings.opf.occluder.plane == OccluderPlane::kLineOfSight &&
+      !settings.opf.occluder.camera_position)
+    throw UsageError{
+        "opf.occluder.plane is line_of_sight but no camera position is given: pass --camera "
+        "X,Y,Z (or set opf.occluder.camera_position), or use plane auto (a top-down camera "
+        "without one)"};
+}
+
+std::size_t threads_from(const Arguments& args) {
+  if (const auto threads = args.get_count("threads")) {
+    if (*threads == 0) throw UsageError{"option '--threads' must be at least 1"};
+    return *threads;
+  }
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+std::uint64_t seed_from(const Arguments& args) {
+  return args.get_count("seed").value_or(kDefaultSeed);
+}
+
+}  // namespace opf::cli

@@ -1,0 +1,31 @@
+#pragma once
+// The options every estimator-running subcommand shares: --config, --particles, --seed,
+// --threads.
+
+#include "arguments.h"
+#include "opf/estimators/estimator_settings.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace opf::cli {
+
+std::vector<OptionSpec> estimator_option_specs();
+
+/// For a log (track, evaluate), where no experiment supplies its camera: `line_of_sight` without
+/// a camera position is a usage error, not a silent top-down camera.
+void require_camera_for_line_of_sight(const EstimatorSettings& settings);
+
+/// `base` (the defaults unless given), then the YAML file of --config, then --particles (both
+/// portions).
+EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base = {});
+
+/// --threads, or the machine's hardware threads.
+std::size_t threads_from(const Arguments& args);
+
+/// --seed, or the toolkit's default seed.
+std::uint64_t seed_from(const Arguments& args);
+
+constexpr std::uint64_t kDefaultSeed = 1;
+
+}  // namespace opf::cli

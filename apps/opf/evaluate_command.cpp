@@ -1,0 +1,304 @@
+#include "evaluate_command.h"
+
+#include "arguments.h"
+#include "drivers/data_directory.h"
+#include "estimator_arguments.h"
+#include "log_arguments.h"
+#include "opf/core/error_accumulator.h"
+#include "opf/core/metrics.h"
+#include "opf/core/random.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
+#include "opf/io/atomic_file.h"
+#include "opf/io/csv.h"
+#include "opf/io/json_text.h"
+#include "opf/io/measurement_log.h"
+#include "provenance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+namespace opf::cli {
+namespace {
+
+/// Times this close count as equal when a log's frames group equal times only.
+constexpr double kExactTimeTolerance = 1e-9;
+
+std::vector<OptionSpec> specs() {
+  std::vector<OptionSpec> s = {
+      {"in", "LOG.csv", "measurement log (default: the bundled experiments/data/example_log.csv)"},
+      {"truth", "TRUTH.csv",
+       "ground truth: a log in the same units and columns with every object at every frame"},
+      {"estimators", "A,B,...", "estimators to compare (default: all registered)"},
+      {"seeds", "N", "runs per estimator, seeds derived from --seed (default 5)"},
+      {"out", "FILE.csv|FILE.json",
+       "also write the tables: a row per estimator (csv), or with the provenance (json)"},
+  };
+  for (auto& spec : log_option_specs()) s.push_back(std::move(spec));
+  for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
+  return s;
+}
+
+constexpr const char* kSummary =
+    "Replays a measurement log through each estimator over N seeds and prints, per estimator,\n"
+    "the mean +- std over seeds of the per-run mean errors against the ground truth: translation\n"
+    "(m), rotation as the paper's Euler-angle difference and as the geodesic angle (rad), and\n"
+    "translation over the frames the object was unobserved. A second table splits the errors\n"
+    "into unobserved (hidden) and measured (visible) frames and reports how honest the position\n"
+    "covariance was while hidden: the share of hidden frames within 2 sqrt(trace) of it\n"
+    "(coverage) and the median error / sqrt(trace).";
+
+/// The ground truth by object, in time order, matched to a frame by the nearest time within the
+/// log's frame tolerance (a log's frames are at the mean time of their rows).
+class TruthTable {
+ public:
+  TruthTable(const MeasurementLog& truth, double tolerance) : tolerance_(tolerance) {
+    for (const Frame& frame : truth.frames)
+      for (const Detection& d : frame.detections) poses_[d.object].emplace_back(frame.t, d.pose);
+  }
+  const mrpt::poses::CPose3D* find(const std::string& object, double t) const {
+    const auto series = poses_.find(object);
+    if (series == poses_.end()) return nullptr;
+    const auto& rows = series->second;
+    auto it = std::lower_bound(rows.begin(), rows.end(), t,
+                               [](const auto& row, double time) { return row.first < time; });
+    const mrpt::poses::CPose3D* best = nullptr;
+    double best_distance = tolerance_;
+    for (auto candidate : {it, it == rows.begin() ? it : std::prev(it)}) {
+      if (candidate == rows.end()) continue;
+      const double distance = std::abs(candidate->first - t);
+      if (distance <= best_distance) {
+        best = &candidate->second;
+        best_distance = distance;
+      }
+    }
+    return best;
+  }
+
+ private:
+  double tolerance_;
+  std::map<std::string, std::vector<std::pair<double, mrpt::poses::CPose3D>>> poses_;
+};
+
+/// The errors of one run, and how many estimates of filled frames had no truth to compare with.
+struct ScoredRun {
+  RunErrors errors;
+  std::size_t unscored = 0;
+};
+
+ScoredRun run_once(const MeasurementLog& log, const TruthTable& truth, const std::string& name,
+                   const EstimatorSettings& settings, std::uint64_t seed, std::size_t threads,
+                   const std::string& truth_path) {
+  Tracker tracker(make_estimator_factory(name, settings), seed, threads);
+  ErrorAccumulator errors;
+  ScoredRun run;
+  for (const Frame& frame : log.frames) {
+    for (const Estimate& estimate : tracker.step(frame)) {
+      const mrpt::poses::CPose3D* pose = truth.find(estimate.object, frame.t);
+      if (!pose && frame.filled) {
+        ++run.unscored;  // a frame the log never had: no truth there is no fault
+        continue;
+      }
+      if (!pose) {
+        std::ostringstream msg;
+        msg << truth_path << ": no ground truth for object '" << estimate.object
+            << "' at t = " << frame.t;
+        throw std::runtime_error(msg.str());
+      }
+      errors.add(estimate, *pose);
+    }
+  }
+  run.errors = errors.result();
+  return run;
+}
+
+/// A JSON number, null when not finite (a seed with no hidden frame).
+std::string json_number(double value) {
+  return std::isfinite(value) ? csv::format_double(value) : "null";
+}
+
+std::string cell(const MeanStd& value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.5f +- %.5f", value.mean, value.std);
+  return buffer;
+}
+
+/// One estimator's errors, one value per seed.
+struct Row {
+  std::string name;
+  std::vector<double> translation, paper, geodesic, hidden_translation, hidden_rotation,
+      visible_translation, visible_rotation, coverage, normalised;
+};
+
+/// The columns of --out, each a statistic over seeds of one error of a Row.
+struct Column {
+  const char* name;
+  std::vector<double> Row::*values;
+};
+constexpr Column kColumns[] = {
+    {"translation", &Row::translation},
+    {"rotation_paper", &Row::paper},
+    {"rotation_geodesic", &Row::geodesic},
+    {"hidden_translation", &Row::hidden_translation},
+    {"hidden_rotation", &Row::hidden_rotation},
+    {"visible_translation", &Row::visible_translation},
+    {"visible_rotation", &Row::visible_rotation},
+    {"coverage", &Row::coverage},
+    {"error_over_sd", &Row::normalised},
+};
+
+/// The tables as a file: .csv (a row per estimator, mean and std over seeds per error) or .json
+/// (the same with the provenance).
+void write_evaluation(const std::filesystem::path& path, const std::vector<Row>& rows,
+                      const std::string& provenance) {
+  const bool json = path.extension() == ".json";
+  write_file_atomically(path, [&](std::ostream& out) {
+    if (!json) {
+      out << "estimator";
+      for (const Column& c : kColumns) out << ',' << c.name << ',' << c.name << "_std";
+      out << '\n';
+      for (const Row& row : rows) {
+        out << csv::quote_if_needed(row.name);
+        for (const Column& c : kColumns) {
+          const MeanStd m = mean_std(row.*c.values);
+          out << ',' << csv::format_double(m.mean) << ',' << csv::format_double(m.std);
+        }
+        out << '\n';
+      }
+      return;
+    }
+    out << "{\n  \"provenance\": " << provenance << ",\n  \"estimators\": {\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      out << "    " << json_string(rows[i].name) << ": {\n";
+      out << "      \"seeds\": " << rows[i].translation.size();
+      for (const Column& c : kColumns) {
+        const MeanStd m = mean_std(rows[i].*c.values);
+        out << ",\n      \"" << c.name << "\": {\"mean\": " << json_number(m.mean)
+            << ", \"std\": " << json_number(m.std) << "}";
+      }
+      out << "\n    }" << (i + 1 < rows.size() ? ",\n" : "\n");
+    }
+    out << "  }\n}\n";
+  });
+}
+
+}  // namespace
+
+int evaluate_command(const std::vector<std::string>& raw) {
+  const auto option_specs = specs();
+  const Arguments args(raw, option_specs);
+  if (args.help()) {
+    std::cout << usage("evaluate", kSummary, option_specs);
+    return 0;
+  }
+  const std::string data = (experiments::bundled_experiments() / "data").string() + "/";
+  const std::string example = data + "example_log.csv";
+  const std::string in = args.get("in").value_or(example);
+  // The bundled truth belongs to the bundled log only: compared with another log it would score
+  // the estimators against the wrong motion.
+  std::error_code ignored;
+  if (!args.has("truth") && !std::filesystem::equivalent(in, example, ignored))
+    throw UsageError{"option '--truth' is required with --in " + in +
+                     " (the bundled example_truth.csv belongs to the bundled example log only)"};
+  const std::string truth_path = args.get("truth").value_or(data + "example_truth.csv");
+  const auto names =
+      args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
+  // Every name is checked before the first run, not when its turn comes.
+  const std::vector<std::string> known = estimator_names();
+  for (const std::string& name : names)
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw UsageError{"option '--estimators': unknown estimator '" + name + "' (known: " + list +
+                       ")"};
+    }
+  if (const auto path = args.get("out")) {
+    const auto extension = std::filesystem::path(*path).extension();
+    if (extension != ".csv" && extension != ".json")
+      throw UsageError{"option '--out': expected a file name ending in .csv or .json, got \"" +
+                       *path + "\""};
+  }
+  const std::size_t seeds = args.get_count("seeds").value_or(5);
+  if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
+  const EstimatorSettings settings = settings_from(args);
+  require_camera_for_line_of_sight(settings);
+  const std::uint64_t base_seed = seed_from(args);
+  const std::size_t threads = threads_from(args);
+
+  const LogReadOptions log_options = log_options_from(args);
+  const MeasurementLog log = read_measurement_log(in, log_options);
+  LogReadOptions truth_options = log_options;
+  truth_options.fill_gaps = false;
+  truth_options.rate.reset();
+  const TruthTable truth(read_measurement_log(truth_path, truth_options),
+                         std::max(log.report.frame_tolerance, kExactTimeTolerance));
+
+  std::printf("opf evaluate: %s, %zu frames, %zu objects, %zu seeds, %zu + %zu particles\n\n",
+              in.c_str(), log.frames.size(), log.objects.size(), seeds,
+              settings.pf.translation_particles, settings.pf.rotation_particles);
+  std::printf("%-10s %-22s %-22s %-22s %-22s\n", "estimator", "translation [m]",
+              "rotation paper [rad]", "rotation geodesic", "transl. unobserved [m]");
+  std::vector<Row> rows;
+  std::size_t unscored = 0;
+  for (const std::string& name : names) {
+    Row row;
+    row.name = name;
+    auto& translation = row.translation;
+    auto& paper = row.paper;
+    auto& geodesic = row.geodesic;
+    for (std::size_t k = 0; k < seeds; ++k) {
+      const ScoredRun run =
+          run_once(log, truth, name, settings, derive_seed(base_seed, k), threads, truth_path);
+      unscored = std::max(unscored, run.unscored);
+      const RunErrors& r = run.errors;
+      translation.push_back(r.translation);
+      paper.push_back(r.rotation_paper);
+      geodesic.push_back(r.rotation_geodesic);
+      row.hidden_translation.push_back(r.translation_unobserved);
+      row.hidden_rotation.push_back(r.rotation_unobserved);
+      row.visible_translation.push_back(r.translation_visible);
+      row.visible_rotation.push_back(r.rotation_visible);
+      row.coverage.push_back(r.coverage_unobserved);
+      row.normalised.push_back(r.normalised_error_unobserved);
+    }
+    std::printf("%-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
+                cell(mean_std(translation)).c_str(), cell(mean_std(paper)).c_str(),
+                cell(mean_std(geodesic)).c_str(), cell(mean_std(row.hidden_translation)).c_str());
+    std::fflush(stdout);
+    rows.push_back(std::move(row));
+  }
+  // The same runs split by whether the object was measured, and how honest the reported
+  // position covariance was while it was not.
+  std::printf("\n%-10s %-13s %-13s %-13s %-13s %-10s %-10s\n", "estimator", "hidden [m]",
+              "hidden [rad]", "visible [m]", "visible [rad]", "coverage", "err/sd");
+  for (const Row& row : rows) {
+    std::printf("%-10s %-13.5f %-13.5f %-13.5f %-13.5f %-10.3f %-10.3f\n", row.name.c_str(),
+                mean_std(row.hidden_translation).mean, mean_std(row.hidden_rotation).mean,
+                mean_std(row.visible_translation).mean, mean_std(row.visible_rotation).mean,
+                mean_std(row.coverage).mean, mean_std(row.normalised).mean);
+  }
+  std::printf(
+      "\ncoverage: share of unobserved frames whose translation error is within 2 sqrt(trace) of "
+      "the estimate's\nposition covariance; err/sd: median of error / sqrt(trace) over them (means "
+      "over seeds)\n");
+  if (const auto path = args.get("out"))
+    write_evaluation(*path, rows,
+                     provenance_json(command_line("evaluate", raw), {{"", settings}}, 2));
+  if (unscored > 0)
+    std::printf(
+        "%zu estimates of frames filled inside gaps of the log had no ground truth and "
+        "were not scored\n",
+        unscored);
+  return 0;
+}
+
+}  // namespace opf::cli

@@ -1,0 +1,119 @@
+#include "sweep_command.h"
+
+#include "arguments.h"
+#include "cli/presets.h"
+#include "drivers/sweep_executor.h"
+#include "drivers/sweep_plan.h"
+#include "drivers/sweep_table.h"
+#include "opf/io/atomic_file.h"
+#include "opf/io/estimator_settings_yaml.h"
+#include "provenance.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+namespace opf::cli {
+namespace {
+
+std::vector<OptionSpec> specs() {
+  return {
+      {"out", "DIR",
+       "where the runs and the table go (default: results/sweeps/<sweep name>, or "
+       "results/sweeps/<sweep name>-paper with --preset paper)"},
+      {"preset", "NAME",
+       "default or paper: the settings every run starts from, the sweep's own on top (as "
+       "`opf run --preset`)"},
+      {"jobs", "N", "runs at once, each on one thread (default: the machine's cores)"},
+      {"list", "", "print the runs (and which are done) without running anything"},
+      {"plan", "", "print the runs as JSON (for experiments/Snakefile) without running anything"},
+      {"table-only", "", "write the table from the runs done so far, running nothing"},
+  };
+}
+
+constexpr const char* kSummary =
+    "Expands a sweep file (see experiments/sweeps/) into runs, one per experiment,\n"
+    "estimator, variant, grid point and seed, and runs each as `opf run` across the\n"
+    "machine's cores. Runs whose result files exist are skipped, so a stopped sweep\n"
+    "resumes. Writes <out>/<name>.csv, one row per run with its parameters and errors,\n"
+    "and prints the errors per configuration (mean +- std over seeds). Each run keeps\n"
+    "its settings.yaml, log.txt and `opf run` outputs under <out>/<experiment>/...\n"
+    "Exits 1 when a run failed (its log is named). --plan prints the runs as JSON\n"
+    "for workflow engines (experiments/Snakefile runs the same sweep on Snakemake).";
+
+// The runs execute this very program, even when its file is rebuilt or deleted during the sweep
+// (the kernel keeps the running binary's inode for /proc/self/exe).
+const std::filesystem::path kThisProgram = "/proc/self/exe";
+
+}  // namespace
+
+int sweep_command(const std::vector<std::string>& raw) {
+  const auto option_specs = specs();
+  const auto [options, positional] = split_positional(raw, option_specs);
+  const Arguments args(options, option_specs);
+  if (args.help()) {
+    std::cout << usage("sweep SWEEP.yaml", kSummary, option_specs);
+    return 0;
+  }
+  if (positional.size() != 1) throw UsageError{"expected one sweep file"};
+  const std::string preset = args.get("preset").value_or("default");
+  if (preset != "default" && preset != "paper")
+    throw UsageError{"option '--preset': expected default or paper, got \"" + preset + "\""};
+  const experiments::SweepSpec spec = experiments::load_sweep(positional[0]);
+  // A preset's runs go to their own directory: resuming must not mix them with the defaults'.
+  const std::string default_name = preset == "default" ? spec.name : spec.name + "-" + preset;
+  const std::filesystem::path out = args.get("out").value_or(
+      (std::filesystem::path("results") / "sweeps" / default_name).string());
+  const std::size_t jobs =
+      args.get_count("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
+  if (jobs == 0) throw UsageError{"option '--jobs' must be at least 1"};
+  std::vector<experiments::SweepRun> runs = experiments::expand_sweep(spec);
+  if (preset != "default")
+    for (auto& run : runs) run.preset = preset;
+
+  if (args.has("plan")) {
+    experiments::write_sweep_plan(std::cout, spec, runs, out);
+    return 0;
+  }
+  if (args.has("list")) {
+    for (const auto& run : runs)
+      std::cout << (std::filesystem::exists(out / run.result_file()) ? "done     " : "pending  ")
+                << run.directory.string() << "\n";
+    std::cout << runs.size() << " runs\n";
+    return 0;
+  }
+  experiments::SweepExecution execution;
+  if (args.has("table-only")) {
+    for (const auto& run : runs)
+      execution.skipped += std::filesystem::exists(out / run.result_file());
+  } else {
+    std::cerr << spec.name << ": " << runs.size() << " runs, " << jobs << " at a time, in "
+              << out.string() << "\n";
+    execution = experiments::execute_sweep(runs, out, kThisProgram, jobs, std::cerr,
+                                           isatty(STDERR_FILENO) != 0);
+  }
+  const std::filesystem::path table = out / (spec.name + ".csv");
+  const std::size_t ok = experiments::write_sweep_table(spec, runs, out, table);
+  // Beside the table, how it was made: each run's own summary.json carries its full settings
+  // (the preset's, the experiment's, the run's settings.yaml); these are the preset's.
+  EstimatorSettings base;
+  if (preset == "paper") base = parse_estimator_settings(kPaperPresetYaml, "preset paper");
+  write_file_atomically(out / (spec.name + ".provenance.json"), [&](std::ostream& os) {
+    os << provenance_json(command_line("sweep", raw), {{"", base}}) << "\n";
+  });
+  experiments::print_sweep_summary(std::cout, table);
+  std::cout << "\n"
+            << ok << " of " << runs.size() << " runs in " << table.string() << " ("
+            << execution.skipped << " were done before, " << execution.completed << " ran now)\n";
+  if (args.has("table-only")) return ok == runs.size() ? 0 : 1;
+  if (execution.failed.empty()) return 0;
+  std::cerr << execution.failed.size() << " runs failed; their logs:\n";
+  for (const auto& dir : execution.failed)
+    std::cerr << "  " << (out / dir / "log.txt").string() << "\n";
+  return 1;
+}
+
+}  // namespace opf::cli

@@ -1,0 +1,166 @@
+#include "track_command.h"
+
+#include "arguments.h"
+#include "estimator_arguments.h"
+#include "log_arguments.h"
+#include "opf/core/tracker.h"
+#include "opf/estimators/registry.h"
+#include "opf/io/atomic_file.h"
+#include "opf/io/estimate_csv.h"
+#include "opf/io/input_file.h"
+#include "opf/io/measurement_log.h"
+
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <set>
+
+namespace opf::cli {
+namespace {
+
+std::vector<OptionSpec> specs() {
+  std::vector<OptionSpec> s = {
+      {"in", "LOG.csv",
+       "measurement log: CSV with columns t,object,x,y,z,qx,qy,qz,qw (required); - reads "
+       "standard input as a stream"},
+      {"out", "EST.csv",
+       "estimates: t,object,x,y,z,qx,qy,qz,qw,trace,mode,... (required); - writes standard output"},
+      {"estimator", "NAME", "estimator to run: opf (default), pf, cvkf or oapf"},
+      {"stream", "",
+       "read --in as a stream (as for -): rows in time order, each frame written and flushed as "
+       "soon as the next frame's first row arrives"},
+      {"quiet", "", "no summary or warnings on stderr (errors still)"},
+  };
+  for (auto& spec : log_option_specs()) s.push_back(std::move(spec));
+  for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
+  return s;
+}
+
+constexpr const char* kSummary =
+    "Replays a log of pose detections (AprilTag, motion capture, a pose tracker) through one\n"
+    "estimator per object and writes one row per object and frame, from the object's first\n"
+    "detection on. Rows close in time form a frame (--frame-tolerance), frames missing inside\n"
+    "gaps are filled (--rate, --no-fill); an object with no row (or empty pose fields) in a\n"
+    "frame is unobserved there, and the mode column says what the estimator did instead\n"
+    "(predicted, dynamics, occluder, random_walk; +filled in a gap). The OPF treats every object\n"
+    "in the log as a possible occluder of every other. Further hypotheses (two equally likely\n"
+    "occluders) follow as extra rows with hypothesis >= 1; alert is 1 when trace(Q~) >=\n"
+    "epsilon_safe. A file is read whole (rows in any order) and the output written only when\n"
+    "the whole run succeeded; a stream (--in - or --stream) is answered frame by frame.";
+
+/// Steps the tracker through frames and writes their estimates, counting what it wrote.
+class EstimateWriter {
+ public:
+  EstimateWriter(Tracker& tracker, std::function<void(std::size_t objects)> on_objects)
+      : tracker_(tracker), on_objects_(std::move(on_objects)) {}
+
+  void write(std::ostream& out, const Frame& frame) {
+    for (const Detection& detection : frame.detections)
+      if (objects_.insert(detection.object).second) on_objects_(objects_.size());
+    for (Estimate estimate : tracker_.step(frame)) {
+      estimate.recovery.frame_filled = frame.filled;
+      write_estimate_row(out, estimate);
+      ++rows_;
+    }
+    // Further hypotheses (the OPF's virtual objects) follow as extra rows, hypothesis >= 1.
+    for (Estimate hypothesis : tracker_.hypotheses()) {
+      hypothesis.recovery.frame_filled = frame.filled;
+      write_estimate_row(out, hypothesis);
+      ++rows_;
+    }
+    ++frames_;
+  }
+  std::size_t rows() const { return rows_; }
+  std::size_t frames() const { return frames_; }
+  std::size_t objects() const { return objects_.size(); }
+
+ private:
+  Tracker& tracker_;
+  std::function<void(std::size_t)> on_objects_;
+  std::set<std::string> objects_;
+  std::size_t rows_ = 0;
+  std::size_t frames_ = 0;
+};
+
+}  // namespace
+
+int track_command(const std::vector<std::string>& raw) {
+  const auto option_specs = specs();
+  const Arguments args(raw, option_specs);
+  if (args.help()) {
+    std::cout << usage("track", kSummary, option_specs);
+    return 0;
+  }
+  const std::string in = args.require("in");
+  const std::string out = args.require("out");
+  const std::string estimator = args.get("estimator").value_or("opf");
+  const EstimatorSettings settings = settings_from(args);
+  require_camera_for_line_of_sight(settings);
+  const LogReadOptions log_options = log_options_from(args);
+  const bool stream = in == "-" || args.has("stream");
+  const bool quiet = args.has("quiet");
+  // With the estimates on standard output, everything else goes to standard error.
+  std::ostream& report = out == "-" ? std::cerr : std::cout;
+
+  const OccluderOptions& occluder = settings.opf.occluder;
+  const bool warn_camera = !quiet && estimator == "opf" && settings.opf.modules.occluder &&
+                           occluder.plane == OccluderPlane::kAuto && !occluder.camera_position;
+  Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args), threads_from(args));
+  EstimateWriter writer(tracker, [&](std::size_t objects) {
+    if (warn_camera && objects == 2)
+      std::cerr << "opf track: warning: no camera position (--camera X,Y,Z, or "
+                   "opf.occluder.camera_position): the occluder module takes the line of sight "
+                   "as straight down (-z)\n";
+  });
+
+  FrameAssemblyReport assembly;
+  if (stream) {
+    std::optional<std::ifstream> file;
+    if (in != "-") file = open_input_file(in, "measurement log");
+    std::istream& input = file ? static_cast<std::istream&>(*file) : std::cin;
+    MeasurementStream frames(input, in == "-" ? "<stdin>" : in, log_options);
+    std::optional<std::ofstream> out_file;
+    if (out != "-") {
+      out_file.emplace(out, std::ios::binary);
+      if (!*out_file) throw std::runtime_error("cannot write " + out);
+    }
+    std::ostream& output = out_file ? static_cast<std::ostream&>(*out_file) : std::cout;
+    write_estimate_header(output);
+    output.flush();
+    while (const std::optional<Frame> frame = frames.next()) {
+      writer.write(output, *frame);
+      output.flush();  // answered now, not when the input ends
+    }
+    assembly = frames.report();
+  } else {
+    const MeasurementLog log = read_measurement_log(in, log_options);
+    assembly = log.report;
+    const auto write_all = [&](std::ostream& os) {
+      write_estimate_header(os);
+      for (const Frame& frame : log.frames) writer.write(os, frame);
+    };
+    if (out == "-") {
+      write_all(std::cout);
+      std::cout.flush();
+    } else {
+      write_file_atomically(out, write_all);
+    }
+  }
+  if (quiet) return 0;
+  if (assembly.filled_frames > 0)
+    std::cerr << "opf track: " << assembly.filled_frames << " frames filled inside "
+              << assembly.gaps << (assembly.gaps == 1 ? " gap" : " gaps") << " of the log (at "
+              << 1.0 / assembly.frame_period << " Hz; mode +filled; --no-fill keeps only the "
+              << "log's frames)\n";
+  if (assembly.long_gaps > 0)
+    std::cerr << "opf track: warning: " << assembly.long_gaps
+              << " gaps longer than 10 s left unfilled (a clock jump or a pause)\n";
+  report << "opf track: " << estimator << " over " << writer.frames() << " frames, "
+         << writer.objects() << " objects: " << writer.rows() << " estimates written to " << out
+         << "\n";
+  return 0;
+}
+
+}  // namespace opf::cli
