@@ -11,7 +11,9 @@ repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-$repo/results/notebooks}"
 mkdir -p "$out"
 export PYDEVD_DISABLE_FILE_VALIDATION=1  # the kernel's debugger notes about frozen modules
-for notebook in reproduce_paper ablations particle_counts; do
+# python_tracker drives the estimators through the Python module of the build.
+export OPF_PYTHON="${OPF_PYTHON:-$repo/build/python}"
+for notebook in reproduce_paper ablations particle_counts python_tracker; do
   /usr/bin/jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=600 \
     --output-dir "$out" "$repo/notebooks/$notebook.ipynb"
 done

@@ -5,8 +5,9 @@
 # and keeps file:line in the reports; NDEBUG as in the release build, so the same code is
 # checked. Third-party findings are suppressed in scripts/ubsan.supp, each with its reason. The
 # workflow tests that only drive Python and TeX on `opf` output (small result sets, notebooks,
-# report), the install check (an uninstrumented project links the package) and the layer probes
-# (compile-only) are left to the regular build.
+# report), the install check (an uninstrumented project links the package), the layer probes
+# (compile-only) and the Python module (an instrumented module needs an instrumented
+# interpreter) are left to the regular build.
 #   bash scripts/run_sanitizers.sh [extra ctest arguments]
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -15,7 +16,7 @@ build="$repo/build-sanitize"
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer"
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" >/dev/null
+  -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DOPF_BUILD_PYTHON=OFF >/dev/null
 cmake --build "$build" -j 2
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$repo/scripts/ubsan.supp"

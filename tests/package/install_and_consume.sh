@@ -4,8 +4,9 @@
 #      through the gap (a `dynamics` frame), linking neither OpenCV nor OpenGL;
 #   2. the same source builds with pkg-config (opf.pc) alone;
 #   3. find_package(opf COMPONENTS vision sim mrpt_bridge) resolves the optional layers;
-#   4. CPack's .deb holds the same files under /usr;
-#   5. the installed `opf` runs from the prefix with its bundled data.
+#   4. the Python module imports from <prefix>/lib/python3/dist-packages;
+#   5. CPack's .deb holds the same files under /usr;
+#   6. the installed `opf` runs from the prefix with its bundled data.
 #   bash tests/package/install_and_consume.sh BUILD_DIR SCRATCH_DIR
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -58,6 +59,15 @@ CMAKE
 cmake -S "$components" -B "$components/build" -DCMAKE_PREFIX_PATH="$prefix" >"$scratch/components.log"
 echo "components: vision, sim and mrpt_bridge found"
 
+
+# The Python module from the prefix's Python path, with the system interpreter.
+if grep -q "^OPF_BUILD_PYTHON:BOOL=ON" "$build/CMakeCache.txt"; then
+  PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c '
+import opf
+e = opf.Tracker("cvkf", seed=1).step(0.0, {"cup": [0.1, 0.2, 0.3, 0, 0, 0, 1]})["cup"]
+assert abs(e.position[0] - 0.1) < 1e-9 and e.mode == "measured", e
+print("python: opf imported from", opf.__file__.rsplit("/opf/", 1)[0])'
+fi
 
 # CPack's .deb holds the same install under /usr.
 (cd "$build" && cpack -G DEB -B "$scratch/deb" >"$scratch/cpack.log")
