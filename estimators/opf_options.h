@@ -2,6 +2,7 @@
 // Options of the Object Permanence Filter (paper Sec. III): the particle filter it extends and
 // the four modules of its Object Permanence update, each switchable off for ablations.
 
+#include "opf/core/enum_names.h"
 #include "opf/fit/trajectory_fit.h"
 #include "opf/particles/particle_filter_options.h"
 #include "opf/permanence/covariance_inflation.h"
@@ -30,6 +31,8 @@ enum class DynamicsPredictor {
   /// fed as a virtual measurement with Q~ inflated by the uncertainty module.
   kPaper,
 };
+inline constexpr EnumNames<DynamicsPredictor, 2> kDynamicsPredictorNames = {
+    {{DynamicsPredictor::kSelected, "selected"}, {DynamicsPredictor::kPaper, "paper"}}};
 
 struct DynamicsOptions {
   DynamicsPredictor predictor = DynamicsPredictor::kSelected;

@@ -1,7 +1,8 @@
 #pragma once
 // What produced an estimate: the word written in the `mode` column of result files.
 
-#include <array>
+#include "opf/core/enum_names.h"
+
 #include <string_view>
 
 namespace opf {
@@ -14,25 +15,16 @@ enum class EstimateMode {
   kRandomWalk,  ///< occlusion-aware PF: occluded particles random-walk in a widening search
 };
 
-/// Every mode, for readers that map a word back to its mode.
-inline constexpr std::array<EstimateMode, 5> kEstimateModes = {
-    EstimateMode::kMeasured, EstimateMode::kPredicted, EstimateMode::kDynamics,
-    EstimateMode::kOccluder, EstimateMode::kRandomWalk};
+/// The words of the `mode` column, every mode once.
+inline constexpr EnumNames<EstimateMode, 5> kEstimateModeNames = {
+    {{EstimateMode::kMeasured, "measured"},
+     {EstimateMode::kPredicted, "predicted"},
+     {EstimateMode::kDynamics, "dynamics"},
+     {EstimateMode::kOccluder, "occluder"},
+     {EstimateMode::kRandomWalk, "random_walk"}}};
 
 constexpr std::string_view to_string(EstimateMode mode) {
-  switch (mode) {
-    case EstimateMode::kMeasured:
-      return "measured";
-    case EstimateMode::kPredicted:
-      return "predicted";
-    case EstimateMode::kDynamics:
-      return "dynamics";
-    case EstimateMode::kOccluder:
-      return "occluder";
-    case EstimateMode::kRandomWalk:
-      return "random_walk";
-  }
-  return "unknown";
+  return name_of(kEstimateModeNames, mode);
 }
 
 }  // namespace opf

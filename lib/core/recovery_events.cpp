@@ -30,13 +30,9 @@ std::optional<ModeColumn> parse_mode_column(std::string_view text) {
   const std::size_t plus = text.find('+');
   const std::string_view word = text.substr(0, plus);
   ModeColumn column;
-  bool known = false;
-  for (const EstimateMode mode : kEstimateModes) {
-    if (to_string(mode) != word) continue;
-    column.mode = mode;
-    known = true;
-  }
-  if (!known) return std::nullopt;
+  const std::optional<EstimateMode> mode = parse_name(kEstimateModeNames, word);
+  if (!mode) return std::nullopt;
+  column.mode = *mode;
   // Events follow in the written order, each at most once, so every column has one spelling.
   std::size_t next_event = 0;
   std::string_view rest = plus == std::string_view::npos ? "" : text.substr(plus);

@@ -3,6 +3,8 @@
 // robustly once, at occlusion onset, to the last H estimates, then extrapolated every frame as
 // virtual measurements.
 
+#include "opf/core/enum_names.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -20,6 +22,9 @@ struct TrajectorySample {
 };
 
 enum class RobustLoss { kSquared, kHuber, kCauchy };
+inline constexpr EnumNames<RobustLoss, 3> kRobustLossNames = {{{RobustLoss::kSquared, "squared"},
+                                                               {RobustLoss::kHuber, "huber"},
+                                                               {RobustLoss::kCauchy, "cauchy"}}};
 
 /// Options of fit_trajectory. The paper (Eq. 12) fits first-order polynomials with a squared loss;
 /// the robust loss and the higher orders are this toolkit's extensions.

@@ -4,7 +4,6 @@
 #include "opf/io/input_error.h"
 #include "opf/io/input_file.h"
 #include "opf/io/yaml_reader.h"
-#include "opf/particles/resampling_scheme_names.h"
 
 #include <cmath>
 #include <fstream>
@@ -16,14 +15,7 @@ namespace opf {
 namespace {
 
 void read_resampling(YamlReader& yaml, ResamplingOptions& options) {
-  std::string scheme(to_string(options.scheme));
-  yaml.get("scheme", scheme);
-  try {
-    options.scheme = parse_resampling_scheme(scheme);
-  } catch (const std::invalid_argument&) {
-    yaml.fail("scheme",
-              "expected multinomial, residual, stratified or systematic, got \"" + scheme + "\"");
-  }
+  yaml.get("scheme", kResamplingSchemeNames, options.scheme);
   yaml.get("every_frame", options.every_frame);
   yaml.get("ess_threshold", options.ess_threshold);
   yaml.require("ess_threshold", options.ess_threshold > 0.0 && options.ess_threshold <= 1.0,
@@ -66,30 +58,6 @@ void read_oapf(YamlReader& yaml, OcclusionAwarePfOptions& options) {
   yaml.require("spread_growth", options.spread_growth >= 0.0, "a number >= 0");
 }
 
-RobustLoss parse_loss(YamlReader& yaml, RobustLoss loss) {
-  std::string name = loss == RobustLoss::kSquared ? "squared"
-                     : loss == RobustLoss::kHuber ? "huber"
-                                                  : "cauchy";
-  yaml.get("loss", name);
-  if (name == "squared") return RobustLoss::kSquared;
-  if (name == "huber") return RobustLoss::kHuber;
-  if (name == "cauchy") return RobustLoss::kCauchy;
-  yaml.fail("loss", "expected squared, huber or cauchy, got \"" + name + "\"");
-}
-
-OccluderPlane parse_plane(YamlReader& yaml, OccluderPlane plane) {
-  std::string name = plane == OccluderPlane::kAuto          ? "auto"
-                     : plane == OccluderPlane::kLineOfSight ? "line_of_sight"
-                     : plane == OccluderPlane::kXY          ? "xy"
-                                                            : "3d";
-  yaml.get("plane", name);
-  if (name == "auto") return OccluderPlane::kAuto;
-  if (name == "line_of_sight") return OccluderPlane::kLineOfSight;
-  if (name == "xy") return OccluderPlane::kXY;
-  if (name == "3d") return OccluderPlane::k3D;
-  yaml.fail("plane", "expected auto, line_of_sight, xy or 3d, got \"" + name + "\"");
-}
-
 void read_order(YamlReader& yaml, std::string_view key, int& order) {
   std::size_t value = static_cast<std::size_t>(order);
   yaml.get(key, value);
@@ -98,14 +66,7 @@ void read_order(YamlReader& yaml, std::string_view key, int& order) {
 }
 
 void read_dynamics(YamlReader& yaml, DynamicsOptions& options) {
-  std::string predictor = options.predictor == DynamicsPredictor::kSelected ? "selected" : "paper";
-  yaml.get("predictor", predictor);
-  if (predictor == "selected")
-    options.predictor = DynamicsPredictor::kSelected;
-  else if (predictor == "paper")
-    options.predictor = DynamicsPredictor::kPaper;
-  else
-    yaml.fail("predictor", "expected selected or paper, got \"" + predictor + "\"");
+  yaml.get("predictor", kDynamicsPredictorNames, options.predictor);
   MotionPredictionOptions& selection = options.selection;
   yaml.get_positive("history_window", selection.history_window);
   std::vector<std::string> windows;
@@ -175,20 +136,12 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   motion.require("translation", options.motion.translation >= 0.0, "a distance in m >= 0");
   motion.get("rotation", options.motion.rotation);
   motion.require("rotation", options.motion.rotation >= 0.0, "an angle in rad >= 0");
-  std::string test =
-      options.motion.test == MotionTest::kMaxPairwise ? "max_pairwise" : "fitted_displacement";
-  motion.get("test", test);
-  if (test == "max_pairwise")
-    options.motion.test = MotionTest::kMaxPairwise;
-  else if (test == "fitted_displacement")
-    options.motion.test = MotionTest::kFittedDisplacement;
-  else
-    motion.fail("test", "expected max_pairwise or fitted_displacement, got \"" + test + "\"");
+  motion.get("test", kMotionTestNames, options.motion.test);
 
   YamlReader& trajectory = yaml.child("trajectory");
   read_order(trajectory, "translation_order", options.trajectory.translation_order);
   read_order(trajectory, "rotation_order", options.trajectory.rotation_order);
-  options.trajectory.loss = parse_loss(trajectory, options.trajectory.loss);
+  trajectory.get("loss", kRobustLossNames, options.trajectory.loss);
   trajectory.get_positive("translation_loss_scale", options.trajectory.translation_loss_scale);
   trajectory.get_positive("rotation_loss_scale", options.trajectory.rotation_loss_scale);
   std::size_t iterations = static_cast<std::size_t>(options.trajectory.max_iterations);
@@ -199,7 +152,7 @@ void read_opf(YamlReader& yaml, OpfOptions& options) {
   YamlReader& occluder = yaml.child("occluder");
   occluder.get("epsilon_occ", options.occluder.epsilon_occ);
   occluder.require("epsilon_occ", options.occluder.epsilon_occ >= 0.0, "a number >= 0");
-  options.occluder.plane = parse_plane(occluder, options.occluder.plane);
+  occluder.get("plane", kOccluderPlaneNames, options.occluder.plane);
   std::vector<double> camera;
   if (const auto& position = options.occluder.camera_position)
     camera = {position->x(), position->y(), position->z()};

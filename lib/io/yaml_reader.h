@@ -2,6 +2,8 @@
 // Reads a YAML mapping into an options struct with precise errors: wrong types, out-of-range values
 // and misspelt keys are reported with the full key path, the line and a suggestion.
 
+#include "opf/core/enum_names.h"
+
 #include <yaml-cpp/yaml.h>
 
 #include <cstddef>
@@ -32,6 +34,17 @@ class YamlReader {
   void get(std::string_view key, std::size_t& out);
   void get(std::string_view key, bool& out);
   void get(std::string_view key, std::string& out);
+  /// An enum spelled by its table's words (core/enum_names.h); `out`'s word is the default, and
+  /// any other word fails with "expected a, b or c, got "word"".
+  template <class Enum, std::size_t N>
+  void get(std::string_view key, const EnumNames<Enum, N>& names, Enum& out) {
+    std::string word(name_of(names, out));
+    get(key, word);
+    if (const auto value = parse_name(names, word))
+      out = *value;
+    else
+      fail(key, "expected " + name_list(names) + ", got \"" + word + "\"");
+  }
   /// A sequence of exactly `size` finite numbers, e.g. `camera_position: [0.55, 0, 0.49]`.
   void get(std::string_view key, std::vector<double>& out, std::size_t size);
 

@@ -3,6 +3,8 @@
 // translation and one for rotation, a random-walk motion model with Gaussian noise R and the
 // Gaussian likelihood of Eq. 5 with observation covariance Q.
 
+#include "opf/core/enum_names.h"
+
 #include <mrpt/bayes/CParticleFilter.h>
 
 #include <cstddef>
@@ -10,6 +12,14 @@
 namespace opf {
 
 using ResamplingScheme = mrpt::bayes::CParticleFilter::TParticleResamplingAlgorithm;
+
+/// MRPT's four schemes as settings files spell them.
+inline constexpr EnumNames<ResamplingScheme, 4> kResamplingSchemeNames = {{
+    {mrpt::bayes::CParticleFilter::prMultinomial, "multinomial"},
+    {mrpt::bayes::CParticleFilter::prResidual, "residual"},
+    {mrpt::bayes::CParticleFilter::prStratified, "stratified"},
+    {mrpt::bayes::CParticleFilter::prSystematic, "systematic"},
+}};
 
 struct ResamplingOptions {
   /// Systematic by default: lowest variance of the four for the same cost.

@@ -2,6 +2,7 @@
 // The dynamics module's first question (paper Sec. III-B.1, Eq. 10-11): was the object moving or
 // static over its last H states before the measurement went missing?
 
+#include "opf/core/enum_names.h"
 #include "opf/fit/trajectory_fit.h"
 
 #include <span>
@@ -19,6 +20,9 @@ enum class MotionTest {
   /// noise and a few biased samples averaged out (Huber). Our option, not the paper's.
   kFittedDisplacement,
 };
+inline constexpr EnumNames<MotionTest, 2> kMotionTestNames = {
+    {{MotionTest::kMaxPairwise, "max_pairwise"},
+     {MotionTest::kFittedDisplacement, "fitted_displacement"}}};
 
 struct MotionThresholds {
   double translation = 0.01;  ///< m

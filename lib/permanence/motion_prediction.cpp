@@ -403,21 +403,11 @@ Eigen::Vector3d noise_variance(const Eigen::Matrix3Xd& values) {
 }  // namespace
 
 std::string_view to_string(TranslationModel model) {
-  switch (model) {
-    case TranslationModel::kConstantPosition:
-      return "cp";
-    case TranslationModel::kConstantVelocity:
-      return "cv";
-    case TranslationModel::kConstantAcceleration:
-      return "ca";
-    case TranslationModel::kBallistic:
-      return "ballistic";
-  }
-  return "?";
+  return name_of(kTranslationModelNames, model);
 }
 
 std::string_view to_string(RotationModel model) {
-  return model == RotationModel::kConstantOrientation ? "co" : "cw";
+  return name_of(kRotationModelNames, model);
 }
 
 MotionPrediction continued(const MotionPrediction& prediction, double t_last,

@@ -16,6 +16,8 @@
 // predicts well dominates. The combination's validation errors, against the time they were
 // predicted ahead, give the growth of the prediction's variance.
 
+#include "opf/core/enum_names.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -39,6 +41,14 @@ enum class TranslationModel {
   kBallistic
 };
 enum class RotationModel { kConstantOrientation, kConstantAngularVelocity };
+/// The words of the `model` column of estimate files.
+inline constexpr EnumNames<TranslationModel, 4> kTranslationModelNames = {
+    {{TranslationModel::kConstantPosition, "cp"},
+     {TranslationModel::kConstantVelocity, "cv"},
+     {TranslationModel::kConstantAcceleration, "ca"},
+     {TranslationModel::kBallistic, "ballistic"}}};
+inline constexpr EnumNames<RotationModel, 2> kRotationModelNames = {
+    {{RotationModel::kConstantOrientation, "co"}, {RotationModel::kConstantAngularVelocity, "cw"}}};
 
 inline constexpr int kTranslationModelCount = 4;
 inline constexpr int kRotationModelCount = 2;

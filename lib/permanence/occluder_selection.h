@@ -3,6 +3,8 @@
 // static, unobserved object, by the Bhattacharyya distance between their position clouds, and
 // whether two candidates are too close to call (then the OPF follows both).
 
+#include "opf/core/enum_names.h"
+
 #include <Eigen/Core>
 
 #include <limits>
@@ -19,6 +21,11 @@ namespace opf {
 /// (the ray is -z: the paper's scenes), which `opf track` warns about for a log of several
 /// objects.
 enum class OccluderPlane { kAuto, kLineOfSight, kXY, k3D };
+inline constexpr EnumNames<OccluderPlane, 4> kOccluderPlaneNames = {
+    {{OccluderPlane::kAuto, "auto"},
+     {OccluderPlane::kLineOfSight, "line_of_sight"},
+     {OccluderPlane::kXY, "xy"},
+     {OccluderPlane::k3D, "3d"}}};
 
 struct OccluderOptions {
   /// m (paper Sec. III-B.2, "based on the size of the tested object"): two candidates tie when

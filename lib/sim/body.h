@@ -2,6 +2,8 @@
 // The simulator's vocabulary: a rigid body of the scene (shape, size, colour) and a snapshot of
 // every body's pose at one instant, which the renderer draws and the experiments score against.
 
+#include "opf/core/enum_names.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -13,6 +15,8 @@ namespace opf::sim {
 
 /// Every shape's origin is its geometric centre; the cylinder's axis is its local z.
 enum class Shape { kSphere, kCylinder, kBox };
+inline constexpr EnumNames<Shape, 3> kShapeNames = {
+    {{Shape::kSphere, "sphere"}, {Shape::kCylinder, "cylinder"}, {Shape::kBox, "box"}}};
 
 struct Colour {
   std::uint8_t r = 0, g = 0, b = 0;

@@ -30,10 +30,8 @@ Colour colour(YamlReader& yaml) {
 Shape shape(YamlReader& yaml) {
   std::string name;
   yaml.get("shape", name);
-  if (name == "sphere") return Shape::kSphere;
-  if (name == "cylinder") return Shape::kCylinder;
-  if (name == "box") return Shape::kBox;
-  yaml.fail("shape", "expected sphere, cylinder or box, got \"" + name + "\"");
+  if (const auto value = parse_name(kShapeNames, name)) return *value;
+  yaml.fail("shape", "expected " + name_list(kShapeNames) + ", got \"" + name + "\"");
 }
 
 Eigen::Vector3d size(YamlReader& yaml, Shape s) {
@@ -140,12 +138,7 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
 
   std::vector<std::string> names;
   for (const auto& b : config.bodies) names.push_back(b.body.name);
-  std::string sensor = "camera";
-  yaml.get("sensor", sensor);
-  if (sensor == "motion_capture")
-    config.sensor = SensorKind::kMotionCapture;
-  else if (sensor != "camera")
-    yaml.fail("sensor", "expected camera or motion_capture, got \"" + sensor + "\"");
+  yaml.get("sensor", kSensorKindNames, config.sensor);
   for (YamlReader* d : yaml.sequence("dropouts")) {
     Dropout dropout;
     d->get("from", dropout.from);

@@ -67,6 +67,8 @@ struct Dropout {
 };
 
 enum class SensorKind { kCamera, kMotionCapture };
+inline constexpr EnumNames<SensorKind, 2> kSensorKindNames = {
+    {{SensorKind::kCamera, "camera"}, {SensorKind::kMotionCapture, "motion_capture"}}};
 
 struct ExperimentConfig {
   std::string name;

@@ -5,6 +5,8 @@
 // the one nearest the object's previous position) with the further large fragments near it merged
 // in, since a hand or a post in front of the object can cut it in two.
 
+#include "opf/core/enum_names.h"
+
 #include <opencv2/core.hpp>
 #include <opencv2/video/background_segm.hpp>
 
@@ -20,6 +22,12 @@ enum class SegmentationMethod {
   kLight,       ///< grey level >= threshold
   kBackground,  ///< foreground of cv::BackgroundSubtractorMOG2, nearest-neighbour association
 };
+/// The keys a segmentation spec names its method with.
+inline constexpr EnumNames<SegmentationMethod, 4> kSegmentationMethodNames = {
+    {{SegmentationMethod::kHsv, "hsv"},
+     {SegmentationMethod::kDark, "dark"},
+     {SegmentationMethod::kLight, "light"},
+     {SegmentationMethod::kBackground, "background"}}};
 
 /// OpenCV's 8-bit HSV: hue 0-179 (degrees / 2), saturation and value 0-255, bounds inclusive. A
 /// range whose low hue is above its high hue wraps around red (e.g. 170..10).

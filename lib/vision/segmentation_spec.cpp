@@ -15,7 +15,6 @@ namespace opf::vision {
 namespace {
 
 constexpr auto kKey = InputError::FieldKind::kKey;
-constexpr std::array<const char*, 4> kMethods = {"hsv", "dark", "light", "background"};
 
 std::string list(const std::vector<double>& values) {
   std::string text = "[";
@@ -128,29 +127,25 @@ ObjectSpec read_object(YamlReader& yaml, const std::string& name, const std::str
   SegmenterOptions& s = object.segmentation;
 
   std::string method;
-  for (const char* key : kMethods) {
+  for (const auto& [value, key] : kSegmentationMethodNames) {
     if (!yaml.has_key(key)) continue;
     if (!method.empty())
-      yaml.fail(key,
-                "give one segmentation per object, not both '" + method + "' and '" + key + "'");
+      yaml.fail(key, "give one segmentation per object, not both '" + method + "' and '" +
+                         std::string(key) + "'");
     method = key;
+    s.method = value;
   }
   if (method.empty())
     throw InputError(yaml.source(), line, path,
-                     "object '" + name +
-                         "' has no segmentation; expected one of the keys hsv, dark, light or "
-                         "background",
+                     "object '" + name + "' has no segmentation; expected one of the keys " +
+                         name_list(kSegmentationMethodNames),
                      kKey);
-  if (method == "hsv") {
-    s.method = SegmentationMethod::kHsv;
+  if (s.method == SegmentationMethod::kHsv)
     read_hsv_range(yaml.child("hsv"), s.hsv);
-  } else if (method == "dark" || method == "light") {
-    s.method = method == "dark" ? SegmentationMethod::kDark : SegmentationMethod::kLight;
-    s.grey_threshold = read_grey_level(yaml, method);
-  } else {
-    s.method = SegmentationMethod::kBackground;
+  else if (s.method == SegmentationMethod::kBackground)
     read_background(yaml.child("background"), s.background);
-  }
+  else
+    s.grey_threshold = read_grey_level(yaml, method);
 
   read_morphology(yaml.child("morphology"), s);
   YamlReader& fragments = yaml.child("fragments");

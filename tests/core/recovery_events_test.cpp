@@ -18,7 +18,8 @@ TEST(RecoveryEvents, ModeColumnIsTheModeWordThenEachEventInOrder) {
 }
 
 TEST(RecoveryEvents, EveryWrittenColumnParsesBackToWhatWasWritten) {
-  for (const EstimateMode mode : kEstimateModes) {
+  for (const auto& entry : kEstimateModeNames) {
+    const EstimateMode mode = entry.value;
     for (int bits = 0; bits < 8; ++bits) {
       const RecoveryEvents events{.sensor_reset = (bits & 1) != 0,
                                   .weights_underflow = (bits & 2) != 0,
