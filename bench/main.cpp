@@ -2,7 +2,7 @@
 // the JSON report needs next to the machine facts it records anyway (CPU, caches, load).
 
 #include "opf/core/heap_policy.h"
-#include "opf/particles/particle_kernels.h"
+#include "opf/particles/instruction_set.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,7 @@
 #include "opf/particles/gaussian_likelihood.h"
 
+#include "opf/particles/likelihood_kernels.h"
+
 namespace opf {
 
 double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,

@@ -1,5 +1,7 @@
 #include "opf/particles/log_weights.h"
 
+#include "opf/particles/weight_kernels.h"
+
 #include <algorithm>
 #include <cmath>
 

@@ -2,7 +2,7 @@
 // Particle weights kept in the log domain, normalised with log-sum-exp so that products of
 // thousands of small likelihoods never underflow.
 
-#include "opf/particles/particle_kernels.h"
+#include "opf/particles/normalised_weights.h"
 
 #include <Eigen/Core>
 

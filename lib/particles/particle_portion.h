@@ -8,7 +8,6 @@
 // Log-weights are double for both.
 
 #include "opf/particles/log_weights.h"
-#include "opf/particles/particle_kernels.h"
 
 #include <Eigen/Core>
 
@@ -35,28 +34,16 @@ struct ParticlePortion {
 
   /// Replaces the particles by the ones at `indices` (which may repeat) and makes the weights
   /// uniform: the resampled set represents the posterior by its density alone.
-  void resample(const std::vector<std::size_t>& indices) {
-    if (!indices.empty() && kernels::largest_index(indices.data(), indices.size()) >= size())
-      throw std::out_of_range("ParticlePortion::resample: bad index");
-    // A fresh matrix rather than a kept spare: freed and allocated again step after step, the
-    // same memory serves every filter on a thread and stays in cache across an ensemble.
-    States next(Dim, Eigen::Index(indices.size()));
-    kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(), next.data());
-    states = std::move(next);
-    weights = LogWeights(indices.size());
-  }
+  void resample(const std::vector<std::size_t>& indices);
 
   /// Systematic resampling from relative weights (any positive total) with uniform position
   /// `offset` in [0, 1), in one pass over the particles (kernels::systematic_resample).
-  void resample_systematic(const std::vector<float>& relative, double offset) {
-    if (relative.size() != size())
-      throw std::invalid_argument("ParticlePortion::resample_systematic: one weight per particle");
-    States next(Dim, states.cols());
-    kernels::systematic_resample(relative.data(), size(), offset, states.data(), Dim, next.data());
-    states = std::move(next);
-    weights.reset();
-  }
+  void resample_systematic(const std::vector<float>& relative, double offset);
 };
+
+// Both portions are compiled once, in particle_portion.cpp (beside the kernels they call).
+extern template struct ParticlePortion<3>;
+extern template struct ParticlePortion<4>;
 
 using TranslationParticles = ParticlePortion<3>;
 using RotationParticles = ParticlePortion<4>;

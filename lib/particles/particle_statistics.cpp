@@ -1,5 +1,7 @@
 #include "opf/particles/particle_statistics.h"
 
+#include "opf/particles/statistics_kernels.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <array>

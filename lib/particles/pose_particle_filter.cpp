@@ -4,6 +4,7 @@
 #include "opf/particles/gaussian_likelihood.h"
 #include "opf/particles/random_walk_model.h"
 #include "opf/particles/resampling.h"
+#include "opf/particles/weight_kernels.h"
 
 #include <cmath>
 #include <stdexcept>

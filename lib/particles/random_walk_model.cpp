@@ -1,5 +1,7 @@
 #include "opf/particles/random_walk_model.h"
 
+#include "opf/particles/motion_kernels.h"
+
 #include <algorithm>
 #include <array>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 #include "opf/particles/resampling.h"
 
-#include "opf/particles/particle_kernels.h"
+#include "opf/particles/resampling_kernels.h"
 
 #include <algorithm>
 #include <cmath>

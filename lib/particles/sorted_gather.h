@@ -1,6 +1,6 @@
 #pragma once
 // The copy at the end of systematic resampling: slot k takes particle p_k, the running maximum of
-// `marks` up to k (particle_kernels.cpp's end marks), so p_k never decreases and advances by one
+// `marks` up to k (resampling_kernels.cpp's end marks), so p_k never decreases and advances by one
 // slot per particle on average. Sixteen slots then almost always draw from a window of 32
 // consecutive particles, and on a CPU with AVX-512 each row of such a block is two loads, one
 // two-source permute and one store instead of sixteen scalar copies (the scalar copy was a

@@ -23,6 +23,11 @@ for f in include/opf/opf.h include/opf/core/tracker.h lib/cmake/opf/opfConfig.cm
   [ -e "$prefix/$f" ] || { echo "install: $prefix/$f missing" >&2; exit 1; }
 done
 
+# The kernels' headers are private: not installed, and no installed header needs them.
+for f in include/opf/particles/motion_kernels.h include/opf/particles/kernel_support.h; do
+  [ ! -e "$prefix/$f" ] || { echo "install: private header $prefix/$f installed" >&2; exit 1; }
+done
+
 example="$scratch/example"
 cmake -S "$repo/examples/track_frames" -B "$example" -G Ninja -DCMAKE_PREFIX_PATH="$prefix" \
   >"$scratch/example_configure.log"

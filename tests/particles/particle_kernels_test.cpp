@@ -1,4 +1,8 @@
-#include "opf/particles/particle_kernels.h"
+#include "opf/particles/likelihood_kernels.h"
+#include "opf/particles/motion_kernels.h"
+#include "opf/particles/resampling_kernels.h"
+#include "opf/particles/statistics_kernels.h"
+#include "opf/particles/weight_kernels.h"
 
 #include "opf/core/random.h"
 #include "opf/core/so3.h"
