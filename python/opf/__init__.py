@@ -8,7 +8,7 @@
     columns = opf.track_log("log.csv", estimator="opf")   # a pandas DataFrame if pandas is there
 
 The log format, the settings file and the estimate columns are those of the `opf` program
-(docs/formats.md).
+(docs/logs.md, experiments/configs/estimators.yaml, docs/library.md).
 """
 
 from ._opf import Estimate, InputError, Tracker, estimators
