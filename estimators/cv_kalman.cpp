@@ -15,14 +15,6 @@ namespace {
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 using Vector6 = Eigen::Matrix<double, 6, 1>;
 
-void require_positive(double value, const char* field) {
-  if (std::isfinite(value) && value > 0.0) return;
-  std::ostringstream msg;
-  msg << "ConstantVelocityKalman: option " << field << " must be positive and finite, got "
-      << value;
-  throw std::invalid_argument(msg.str());
-}
-
 // Exact discretisation of continuous white-noise acceleration of density q^2 per axis over dt:
 // the covariance the (value, rate) pair accumulates when the rate random-walks in between.
 Matrix6 white_noise_acceleration(double q, double dt) {
@@ -69,12 +61,7 @@ Matrix6 initial_covariance(double value_std, double rate_std) {
 }  // namespace
 
 ConstantVelocityKalman::ConstantVelocityKalman(const CvKalmanOptions& options) : options_(options) {
-  require_positive(options.acceleration_noise, "acceleration_noise");
-  require_positive(options.angular_acceleration_noise, "angular_acceleration_noise");
-  require_positive(options.observation_noise_translation, "observation_noise_translation");
-  require_positive(options.observation_noise_rotation, "observation_noise_rotation");
-  require_positive(options.initial_velocity_std, "initial_velocity_std");
-  require_positive(options.initial_angular_velocity_std, "initial_angular_velocity_std");
+  check_options(options_, "cvkf");
 }
 
 Estimate ConstantVelocityKalman::initialise(double t,

@@ -1,6 +1,8 @@
 #pragma once
 // Options of the constant-velocity Kalman filter baseline.
 
+#include "opf/core/option_schema.h"
+
 namespace opf {
 
 struct CvKalmanOptions {
@@ -15,5 +17,18 @@ struct CvKalmanOptions {
   double initial_velocity_std = 0.5;
   double initial_angular_velocity_std = 1.0;
 };
+
+/// The settings file's `cvkf:` section (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, CvKalmanOptions& o) {
+  v.number("acceleration_noise", o.acceleration_noise, positive());
+  v.number("angular_acceleration_noise", o.angular_acceleration_noise, positive());
+  v.section("observation_noise", [&] {
+    v.number("translation", o.observation_noise_translation, positive("a positive number (m)"));
+    v.number("rotation", o.observation_noise_rotation, positive("a positive number (rad)"));
+  });
+  v.number("initial_velocity_std", o.initial_velocity_std, positive());
+  v.number("initial_angular_velocity_std", o.initial_angular_velocity_std, positive());
+}
 
 }  // namespace opf

@@ -18,4 +18,14 @@ struct EstimatorSettings {
   OcclusionAwarePfOptions oapf;  ///< random-walk occlusion-aware PF baseline
 };
 
+/// The settings file (experiments/configs/estimators.yaml documents it with the defaults): its
+/// sections in the order `opf config --dump` writes them (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, EstimatorSettings& s) {
+  v.section("pf", [&] { describe_options(v, s.pf); });
+  v.section("cvkf", [&] { describe_options(v, s.cvkf); });
+  v.section("opf", [&] { describe_options(v, s.opf); });
+  v.section("oapf", [&] { describe_options(v, s.oapf); });
+}
+
 }  // namespace opf

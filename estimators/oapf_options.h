@@ -2,6 +2,7 @@
 // Options of the random-walk occlusion-aware particle filter baseline (Meshgi et al., CVIU 2016),
 // adapted to the 6-DoF two-portion particle filter: occlusion chain, likelihoods, search growth.
 
+#include "opf/core/option_schema.h"
 #include "opf/particles/particle_filter_options.h"
 
 namespace opf {
@@ -52,5 +53,16 @@ struct OcclusionAwarePfOptions {
   /// standard PF's). Must be >= 0.
   double spread_growth = 2.0;
 };
+
+/// The settings file's `oapf:` section (core/option_schema.h). `particles` is not in it: the
+/// registry copies `pf:` over it, so both particle baselines run the same filter.
+template <class Visitor>
+void describe_options(Visitor& v, OcclusionAwarePfOptions& o) {
+  v.number("occlusion_rate", o.occlusion_rate, positive("a positive number (1/s)"));
+  v.number("reappearance_rate", o.reappearance_rate, positive("a positive number (1/s)"));
+  v.number("miss_probability", o.miss_probability, unit_fraction());
+  v.number("occluded_likelihood_sigmas", o.occluded_likelihood_sigmas, positive());
+  v.number("spread_growth", o.spread_growth, non_negative("a number >= 0 (1/s)"));
+}
 
 }  // namespace opf

@@ -28,35 +28,11 @@ Eigen::Matrix3d translation_covariance(const Estimate& estimate) {
 
 void validate(const OpfOptions& options) {
   validate(options.particles);
-  validate(options.uncertainty);
-  if (options.history_length < 2)
-    throw std::invalid_argument("OPF option history_length (H) must be at least 2");
-  if (!(options.history_reset_gap >= 0.0))
-    throw std::invalid_argument("OPF option history_reset_gap must be >= 0");
-  if (!(options.motion.translation >= 0.0) || !(options.motion.rotation >= 0.0))
-    throw std::invalid_argument("OPF motion thresholds must be >= 0");
-  if (!(options.occluder.epsilon_occ >= 0.0))
-    throw std::invalid_argument("OPF option occluder.epsilon_occ must be >= 0");
-  if (!(options.occluder.reach >= 0.0) || !std::isfinite(options.occluder.reach) ||
-      !(options.occluder.gate_sigmas >= 0.0) || !std::isfinite(options.occluder.gate_sigmas))
-    throw std::invalid_argument("OPF options occluder.reach and occluder.gate_sigmas must be >= 0");
+  check_options(options, "OPF");
   if (options.occluder.plane == OccluderPlane::kLineOfSight && !options.occluder.camera_position)
     throw std::invalid_argument(
         "OPF option occluder.plane is line_of_sight but no camera position is given "
         "(opf.occluder.camera_position, or --camera X,Y,Z); plane auto takes a top-down camera");
-  if (!(options.occluder.departure_margin >= 0.0) ||
-      !std::isfinite(options.occluder.departure_margin))
-    throw std::invalid_argument("OPF option occluder.departure_margin must be >= 0 m");
-  if (!(options.feedback.epsilon_safe > 0.0))
-    throw std::invalid_argument("OPF option feedback.epsilon_safe must be > 0");
-  if (options.trajectory.translation_order < 0 || options.trajectory.translation_order > 5 ||
-      options.trajectory.rotation_order < 0 || options.trajectory.rotation_order > 5)
-    throw std::invalid_argument("OPF trajectory polynomial orders must be in [0, 5]");
-  if (!(options.velocity_window > 0.0) || !std::isfinite(options.velocity_window))
-    throw std::invalid_argument("OPF option velocity_window must be a positive number of s");
-  if (!(options.hold_after > 0.0) || std::isnan(options.hold_after))
-    throw std::invalid_argument("OPF option hold_after must be a positive number of s");
-  validate(options.dynamics.selection);
 }
 
 ObjectPermanenceFilter::ObjectPermanenceFilter(const OpfOptions& options, std::string object,

@@ -3,6 +3,7 @@
 // the four modules of its Object Permanence update, each switchable off for ablations.
 
 #include "opf/core/enum_names.h"
+#include "opf/core/option_schema.h"
 #include "opf/fit/trajectory_fit.h"
 #include "opf/particles/particle_filter_options.h"
 #include "opf/permanence/covariance_inflation.h"
@@ -80,7 +81,35 @@ struct OpfOptions {
   FeedbackOptions feedback;
 };
 
-/// Throws std::invalid_argument naming the first option out of range.
+/// The settings file's `opf:` section (core/option_schema.h). `particles` is not in it: the
+/// registry copies `pf:` over it, so the OPF and the standard PF run the same filter.
+template <class Visitor>
+void describe_options(Visitor& v, OpfOptions& o) {
+  v.section("modules", [&] {
+    v.flag("dynamics", o.modules.dynamics);
+    v.flag("occluder", o.modules.occluder);
+    v.flag("uncertainty", o.modules.uncertainty);
+  });
+  v.integer("history_length", o.history_length, at_least(2, "an integer H >= 2"));
+  v.number("history_reset_gap", o.history_reset_gap, non_negative("a number of seconds >= 0"));
+  v.flag("carry_particles", o.carry_particles);
+  v.flag("velocity_drift", o.velocity_drift);
+  v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
+  v.number("velocity_window", o.velocity_window, positive("a positive number of s"));
+  v.number("hold_after", o.hold_after, positive("a positive number of s"));
+  v.section("dynamics", [&] {
+    v.choice("predictor", kDynamicsPredictorNames, o.dynamics.predictor);
+    describe_options(v, o.dynamics.selection);
+  });
+  v.section("motion_thresholds", [&] { describe_options(v, o.motion); });
+  v.section("trajectory", [&] { describe_options(v, o.trajectory); });
+  v.section("occluder", [&] { describe_options(v, o.occluder); });
+  v.section("uncertainty", [&] { describe_options(v, o.uncertainty); });
+  v.section("feedback", [&] { describe_options(v, o.feedback); });
+}
+
+/// Throws std::invalid_argument naming the first option out of range ("OPF option
+/// uncertainty.kappa must be ..."), or a line-of-sight plane without a camera.
 void validate(const OpfOptions& options);
 
 }  // namespace opf

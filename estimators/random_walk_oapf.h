@@ -16,15 +16,10 @@
 
 namespace opf {
 
-/// A particle portion whose particles each carry an occlusion flag and the time (s) they have been
-/// occluded, kept in the same order as the states so resampling moves all three together.
-template <int Dim>
-struct OccludablePortion {
-  ParticlePortion<Dim> particles;
-  std::vector<std::uint8_t> occluded;  ///< 1 = occluded
-  Eigen::VectorXd time_occluded;       ///< 0 for visible particles
-};
-
+/// Runs on the pose particle filter (particles/pose_particle_filter.h) with three columns per
+/// portion, which resampling moves with the states: the occlusion flag, the time occluded and the
+/// flag's posterior probability.
+///
 /// Model per portion (translation, rotation), per particle i with flag o_i and time occluded tau_i:
 ///  - motion: a random walk of spread process noise * sqrt(dt), times (1 + growth * tau_i) while
 ///    the particle is occluded;
@@ -51,9 +46,17 @@ class OcclusionAwareParticleFilter final : public Estimator {
   Estimate step(double t, const mrpt::poses::CPose3D* measurement,
                 const EnsembleView& ensemble) override;
 
+  /// The portions' columns.
+  enum Column : Eigen::Index {
+    kOccluded = 0,           ///< 1 = occluded, 0 = visible
+    kTimeOccluded = 1,       ///< s; 0 for a visible particle
+    kOccludedPosterior = 2,  ///< the flag's posterior probability of occlusion at the last step
+    kColumns = 3
+  };
+
   const OcclusionAwarePfOptions& options() const { return options_; }
-  const OccludablePortion<3>& translation() const { return translation_; }
-  const OccludablePortion<4>& rotation() const { return rotation_; }
+  const TranslationParticles& translation() const { return filter_.translation(); }
+  const RotationParticles& rotation() const { return filter_.rotation(); }
   /// Weighted fraction of occluded particles after the last step, per portion: the weights times
   /// each particle's posterior probability of occlusion rather than its drawn flag, which has the
   /// same expectation without the draw's noise.
@@ -66,10 +69,7 @@ class OcclusionAwareParticleFilter final : public Estimator {
   Estimate make_estimate(double t, EstimateMode mode, RecoveryEvents recovery = {}) const;
 
   OcclusionAwarePfOptions options_;
-  Random random_;          ///< flag and resampling draws
-  GaussianSampler noise_;  ///< motion and initialisation noise, in bulk
-  OccludablePortion<3> translation_;
-  OccludablePortion<4> rotation_;
+  PoseParticleFilter filter_;  ///< its generator also draws the flags
   double translation_occlusion_ = 0.0;
   double rotation_occlusion_ = 0.0;
   ResampleReport last_report_;

@@ -99,17 +99,7 @@ void require(bool condition, const Parts&... parts) {
 }
 
 void validate(std::span<const TrajectorySample> samples, const TrajectoryFitOptions& options) {
-  require(options.translation_order >= 0 && options.translation_order <= kMaxTrajectoryOrder,
-          "translation_order must be in [0, ", kMaxTrajectoryOrder, "], got ",
-          options.translation_order);
-  require(options.rotation_order >= 0 && options.rotation_order <= kMaxTrajectoryOrder,
-          "rotation_order must be in [0, ", kMaxTrajectoryOrder, "], got ", options.rotation_order);
-  require(options.translation_loss_scale > 0.0, "translation_loss_scale must be positive, got ",
-          options.translation_loss_scale);
-  require(options.rotation_loss_scale > 0.0, "rotation_loss_scale must be positive, got ",
-          options.rotation_loss_scale);
-  require(options.max_iterations >= 1, "max_iterations must be at least 1, got ",
-          options.max_iterations);
+  check_options(options, "fit_trajectory: trajectory");
   const std::size_t needed =
       static_cast<std::size_t>(std::max(options.translation_order, options.rotation_order)) + 1;
   require(samples.size() >= needed, "orders ", options.translation_order, " (translation) and ",

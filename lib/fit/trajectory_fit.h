@@ -4,6 +4,7 @@
 // virtual measurements.
 
 #include "opf/core/enum_names.h"
+#include "opf/core/option_schema.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -36,6 +37,18 @@ struct TrajectoryFitOptions {
   double rotation_loss_scale = 0.05;     ///< rad
   int max_iterations = 50;               ///< per solve (translation and rotation are separate)
 };
+
+/// The settings file's `opf.trajectory:` section (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, TrajectoryFitOptions& o) {
+  constexpr Bounds order = between(0, kMaxTrajectoryOrder, "a polynomial order from 0 to 5");
+  v.integer("translation_order", o.translation_order, order);
+  v.integer("rotation_order", o.rotation_order, order);
+  v.choice("loss", kRobustLossNames, o.loss);
+  v.number("translation_loss_scale", o.translation_loss_scale, positive("a positive number (m)"));
+  v.number("rotation_loss_scale", o.rotation_loss_scale, positive("a positive number (rad)"));
+  v.integer("max_iterations", o.max_iterations, between(1, 10000, "an integer from 1 to 10000"));
+}
 
 /// What one Ceres solve did (the cost is Ceres': 1/2 sum of rho(|r_k|^2)).
 struct FitSummary {

@@ -1,31 +1,9 @@
 #pragma once
 // Reads EstimatorSettings from a YAML file: every key is optional and overrides the default in the
-// option structs; unknown keys, wrong types and out-of-range values are errors.
-//
-// The full format, with the default values:
-//
-//   pf:
-//     translation_particles: 5000        # >= 1
-//     rotation_particles: 5000           # >= 1
-//     process_noise: {translation: 0.05, rotation: 0.1}        # > 0, m/sqrt(s), rad/sqrt(s)
-//     observation_noise: {translation: 0.01, rotation: 0.05}   # > 0, m, rad
-//     resampling: {scheme: systematic, every_frame: true, ess_threshold: 0.5}
-//   cvkf:
-//     acceleration_noise: 0.5                                  # > 0
-//     angular_acceleration_noise: 1.0                          # > 0
-//     observation_noise: {translation: 0.01, rotation: 0.05}   # > 0
-//     initial_velocity_std: 0.5                                # > 0
-//     initial_angular_velocity_std: 1.0                        # > 0
-//   oapf:
-//     particles: {...}                   # the keys of pf:, same defaults
-//     occlusion_rate: 0.5                # > 0, 1/s, visible -> occluded
-//     reappearance_rate: 1.0             # > 0, 1/s, occluded -> visible
-//     miss_probability: 0.1              # in (0, 1]
-//     occluded_likelihood_sigmas: 6.0    # > 0
-//     spread_growth: 2.0                 # >= 0, 1/s
-//
-// scheme is one of multinomial, residual, stratified, systematic; ess_threshold is in (0, 1]. An
-// empty file gives all defaults.
+// option structs; unknown keys, wrong types and out-of-range values are errors. The keys, their
+// ranges and their order are the structs' describe_options() (estimators/estimator_settings.h);
+// experiments/configs/estimators.yaml lists every key with its default and meaning (a test keeps
+// it equal to the description). An empty file gives all defaults.
 
 #include "opf/estimators/estimator_settings.h"
 

@@ -4,6 +4,7 @@
 // Gaussian likelihood of Eq. 5 with observation covariance Q.
 
 #include "opf/core/enum_names.h"
+#include "opf/core/option_schema.h"
 
 #include <mrpt/bayes/CParticleFilter.h>
 
@@ -50,5 +51,29 @@ struct PoseParticleFilterOptions {
   /// there by random walk over many frames. 0 disables it.
   double reset_gate = 5.0;
 };
+
+/// The settings file's `pf:` section (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, ResamplingOptions& o) {
+  v.choice("scheme", kResamplingSchemeNames, o.scheme);
+  v.flag("every_frame", o.every_frame);
+  v.number("ess_threshold", o.ess_threshold, unit_fraction());
+}
+
+template <class Visitor>
+void describe_options(Visitor& v, PoseParticleFilterOptions& o) {
+  v.integer("translation_particles", o.translation_particles, at_least(1, "a positive integer"));
+  v.integer("rotation_particles", o.rotation_particles, at_least(1, "a positive integer"));
+  v.section("process_noise", [&] {
+    v.number("translation", o.process_noise_translation, positive("a positive number (m/sqrt(s))"));
+    v.number("rotation", o.process_noise_rotation, positive("a positive number (rad/sqrt(s))"));
+  });
+  v.section("observation_noise", [&] {
+    v.number("translation", o.observation_noise_translation, positive("a positive number (m)"));
+    v.number("rotation", o.observation_noise_rotation, positive("a positive number (rad)"));
+  });
+  v.section("resampling", [&] { describe_options(v, o.resampling); });
+  v.number("reset_gate", o.reset_gate, non_negative("a number of sigmas >= 0 (0 disables)"));
+}
 
 }  // namespace opf

@@ -15,6 +15,12 @@ void ParticlePortion<Dim, Scalar>::resample(const std::vector<std::size_t>& indi
   // same memory serves every filter on a thread and stays in cache across an ensemble.
   States next(Dim, Eigen::Index(indices.size()));
   kernels::gather_rows(states.data(), size(), Dim, indices.data(), indices.size(), next.data());
+  if (columns.rows() > 0) {
+    Columns moved(columns.rows(), Eigen::Index(indices.size()));
+    kernels::gather_rows(columns.data(), size(), std::size_t(columns.rows()), indices.data(),
+                         indices.size(), moved.data());
+    columns = std::move(moved);
+  }
   states = std::move(next);
   weights = LogWeights(indices.size());
 }
@@ -24,6 +30,8 @@ void ParticlePortion<Dim, Scalar>::resample_systematic(const std::vector<float>&
                                                        double offset) {
   if (relative.size() != size())
     throw std::invalid_argument("ParticlePortion::resample_systematic: one weight per particle");
+  if (columns.rows() > 0)
+    throw std::logic_error("ParticlePortion::resample_systematic: the columns need resample()");
   States next(Dim, states.cols());
   kernels::systematic_resample(relative.data(), size(), offset, states.data(), Dim, next.data());
   states = std::move(next);

@@ -14,23 +14,21 @@
 namespace opf {
 namespace {
 
-void require_positive(double value, const char* name) {
-  if (!(value > 0.0) || !std::isfinite(value))
-    throw std::invalid_argument(std::string("particle filter option ") + name +
-                                " must be a positive number, got " + std::to_string(value));
-}
-
 // The weight buffers are allocated per call rather than kept by the filter: freed and allocated
 // again step after step, the same memory serves every filter on a thread and stays in cache.
 template <int Dim>
 bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted,
                                   const ResamplingOptions& options, Random& random, double& ess,
-                                  bool& resampled) {
+                                  bool& resampled, Eigen::VectorXd& column_means) {
   resampled = false;
   ess = 1.0;
-  if (portion.weights.uniform()) return true;
+  if (portion.weights.uniform()) {
+    if (portion.columns.rows() > 0) column_means = portion.columns.rowwise().mean();
+    return true;
+  }
   const std::size_t n = portion.size();
-  if (reweighted && options.every_frame &&
+  // A portion with columns takes the general path, whose indices move the columns too.
+  if (reweighted && options.every_frame && portion.columns.rows() == 0 &&
       options.scheme == mrpt::bayes::CParticleFilter::prSystematic) {
     // Resampling follows at once (the paper's default): relative weights in single precision
     // are all it needs, and normalising the log-weights first would be undone by the reset.
@@ -49,6 +47,7 @@ bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted
   Eigen::VectorXd linear;
   const kernels::NormalisedWeights normalised = portion.weights.normalise(linear);
   if (normalised.usable) ess = normalised.ess_fraction;
+  if (portion.columns.rows() > 0) column_means = portion.columns * linear;
   if (reweighted && should_resample(options, ess)) {
     portion.resample(resample_indices(linear, n, options.scheme, random));
     resampled = true;
@@ -59,17 +58,7 @@ bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted
 }  // namespace
 
 void validate(const PoseParticleFilterOptions& options) {
-  if (options.translation_particles == 0 || options.rotation_particles == 0)
-    throw std::invalid_argument("particle filter options: particle counts must be at least 1");
-  require_positive(options.process_noise_translation, "process_noise.translation");
-  require_positive(options.process_noise_rotation, "process_noise.rotation");
-  require_positive(options.observation_noise_translation, "observation_noise.translation");
-  require_positive(options.observation_noise_rotation, "observation_noise.rotation");
-  if (!(options.reset_gate >= 0.0))
-    throw std::invalid_argument("particle filter option reset_gate must be >= 0 (0 disables it)");
-  if (!(options.resampling.ess_threshold > 0.0 && options.resampling.ess_threshold <= 1.0))
-    throw std::invalid_argument(
-        "particle filter option resampling.ess_threshold must be in (0, 1]");
+  check_options(options, "particle filter");
 }
 
 PoseParticleFilter::PoseParticleFilter(const PoseParticleFilterOptions& options, std::uint64_t seed)
@@ -111,8 +100,14 @@ void PoseParticleFilter::predict_rotation(double dt) {
 }
 
 void PoseParticleFilter::set_rotation_likelihood_noise(double sigma) {
-  require_positive(sigma, "observation_noise.rotation");
+  OptionChecker("particle filter").number("observation_noise.rotation", sigma, positive());
   rotation_likelihood_noise_ = sigma;
+}
+
+void PoseParticleFilter::predict_per_particle(const Eigen::VectorXd& translation_sigmas,
+                                              const Eigen::VectorXd& rotation_sigmas) {
+  predict_random_walk(translation_, translation_sigmas, noise_);
+  predict_random_walk(rotation_, rotation_sigmas, noise_);
 }
 
 void PoseParticleFilter::predict(double dt, const Eigen::Vector3d& translation,
@@ -173,35 +168,70 @@ void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation
       rotation_underflow_ || !(rotation_best_exponent_ >= kLikelihoodUnderflowExponent);
 }
 
+Eigen::VectorXd PoseParticleFilter::translation_exponents(const Eigen::Vector3d& position) const {
+  const double sigma = options_.observation_noise_translation;
+  Eigen::VectorXd exponents;
+  gaussian_exponents(translation_, position, sigma * sigma, exponents);
+  return exponents;
+}
+
+Eigen::VectorXd PoseParticleFilter::rotation_exponents(
+    const Eigen::Quaterniond& orientation) const {
+  const double sigma = rotation_likelihood_noise_;
+  Eigen::VectorXd exponents;
+  gaussian_exponents(rotation_, orientation, sigma * sigma, exponents);
+  return exponents;
+}
+
+void PoseParticleFilter::reweight_translation_by(const Eigen::VectorXd& log_likelihood) {
+  translation_.weights.add(log_likelihood);
+  translation_reweighted_ = true;
+}
+
+void PoseParticleFilter::reweight_rotation_by(const Eigen::VectorXd& log_likelihood) {
+  rotation_.weights.add(log_likelihood);
+  rotation_reweighted_ = true;
+}
+
 bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position,
                                                  const Eigen::Quaterniond& orientation) {
   reweight(position, orientation);
-  translation_reset_ = false;
-  if (!(options_.reset_gate > 0.0)) return false;
-  // The best exponent is -d^2/2 in sigmas for the particle nearest the measurement.
+  const PortionsReset reset =
+      reset_unreached(position, orientation, translation_best_exponent_, rotation_best_exponent_);
+  translation_reset_ = reset.translation;
+  return reset.any();
+}
+
+PortionsReset PoseParticleFilter::reset_unreached(const Eigen::Vector3d& position,
+                                                  const Eigen::Quaterniond& orientation,
+                                                  double translation_best_exponent,
+                                                  double rotation_best_exponent) {
+  PortionsReset reset;
+  if (!(options_.reset_gate > 0.0)) return reset;
   const double threshold = -0.5 * options_.reset_gate * options_.reset_gate;
-  bool reset = false;
-  if (translation_best_exponent_ < threshold) {
+  if (translation_best_exponent < threshold) {
     scatter_around(translation_, position, options_.observation_noise_translation, noise_);
+    translation_.columns.setZero();
     translation_reweighted_ = translation_underflow_ = false;  // the reset replaced the weights
-    translation_reset_ = reset = true;
+    reset.translation = true;
   }
-  if (rotation_best_exponent_ < threshold) {
+  if (rotation_best_exponent < threshold) {
     scatter_around(rotation_, orientation, rotation_likelihood_noise_, noise_);
+    rotation_.columns.setZero();
     rotation_reweighted_ = rotation_underflow_ = false;
-    reset = true;
+    reset.rotation = true;
   }
   return reset;
 }
 
 ResampleReport PoseParticleFilter::normalise_and_resample() {
   ResampleReport report;
-  const bool translation_ok =
-      normalise_and_maybe_resample(translation_, translation_reweighted_, options_.resampling,
-                                   random_, report.ess_translation, report.resampled_translation);
-  const bool rotation_ok =
-      normalise_and_maybe_resample(rotation_, rotation_reweighted_, options_.resampling, random_,
-                                   report.ess_rotation, report.resampled_rotation);
+  const bool translation_ok = normalise_and_maybe_resample(
+      translation_, translation_reweighted_, options_.resampling, random_, report.ess_translation,
+      report.resampled_translation, report.translation_column_means);
+  const bool rotation_ok = normalise_and_maybe_resample(
+      rotation_, rotation_reweighted_, options_.resampling, random_, report.ess_rotation,
+      report.resampled_rotation, report.rotation_column_means);
   report.weights_recovered = !translation_ok || !rotation_ok;
   report.likelihood_underflow = translation_underflow_ || rotation_underflow_;
   translation_underflow_ = rotation_underflow_ = false;
@@ -217,9 +247,7 @@ mrpt::poses::CPose3DPDFGaussian PoseParticleFilter::estimate() const {
 }
 
 double PoseParticleFilter::translation_log_evidence(const Eigen::Vector3d& position) const {
-  const double sigma = options_.observation_noise_translation;
-  Eigen::VectorXd log_terms;
-  gaussian_exponents(translation_, position, sigma * sigma, log_terms);
+  Eigen::VectorXd log_terms = translation_exponents(position);
   log_terms += translation_.weights.log();
   const double max_term = log_terms.maxCoeff();
   return max_term + std::log((log_terms.array() - max_term).exp().sum());

@@ -1,7 +1,9 @@
 #pragma once
 // The 6-DoF pose particle filter of paper Sec. III-A, as composable steps (predict, reweight,
 // normalise and resample, moments): a translation portion and a rotation portion, each with its
-// own particles and weights, one seeded generator. Estimators (standard PF, OPF) drive the steps.
+// own particles and weights, one seeded generator. Estimators (standard PF, OPF, occlusion-aware
+// PF) drive the steps; one with a per-particle state of its own keeps it in the portions' columns
+// (particle_portion.h) and its own likelihood in reweight_*_by().
 
 #include "opf/core/random.h"
 #include "opf/particles/gaussian_sampler.h"
@@ -33,8 +35,21 @@ struct ResampleReport {
   /// kept the weights' ratios. Not set for a portion that sensor resetting then re-scattered.
   bool likelihood_underflow = false;
 
+  /// Per portion with columns (particle_portion.h), each column's weighted mean under the
+  /// normalised weights, taken before resampling: an estimator's per-particle state summarised
+  /// without the resampling draw's noise. Empty for a portion without columns.
+  Eigen::VectorXd translation_column_means;
+  Eigen::VectorXd rotation_column_means;
+
   /// Either way the weights of a portion had to be rescued from underflow.
   bool weights_underflow() const { return weights_recovered || likelihood_underflow; }
+};
+
+/// Which portions sensor resetting re-scattered.
+struct PortionsReset {
+  bool translation = false;
+  bool rotation = false;
+  bool any() const { return translation || rotation; }
 };
 
 /// exp(x) is below the smallest normal double for x under log(DBL_MIN) = -708.4: a Gaussian
@@ -58,6 +73,11 @@ class PoseParticleFilter {
   /// value (the uncertainty module's Q and the alert are the sensor's declared noise). Throws
   /// std::invalid_argument unless it is positive and finite.
   void set_rotation_likelihood_noise(double sigma);
+
+  /// A random walk with a spread of its own per particle (m, rad): an estimator whose particles
+  /// move differently by their own state (the occlusion-aware PF's widening search).
+  void predict_per_particle(const Eigen::VectorXd& translation_sigmas,
+                            const Eigen::VectorXd& rotation_sigmas);
 
   /// shift(translation, rotation), then predict(dt), in one pass over the particles.
   void predict(double dt, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
@@ -84,11 +104,26 @@ class PoseParticleFilter {
   void reweight_translation(const Eigen::Vector3d& position, double covariance_scale = 1.0);
   void reweight_rotation(const Eigen::Quaterniond& orientation, double covariance_scale = 1.0);
 
+  /// The exponents of Eq. 5 (Q unscaled) per particle, without reweighting: for an estimator
+  /// whose likelihood is built on them (reweight_*_by).
+  Eigen::VectorXd translation_exponents(const Eigen::Vector3d& position) const;
+  Eigen::VectorXd rotation_exponents(const Eigen::Quaterniond& orientation) const;
+  /// Multiplies a portion's weights by likelihoods an estimator computed itself, in the log
+  /// domain (one per particle).
+  void reweight_translation_by(const Eigen::VectorXd& log_likelihood);
+  void reweight_rotation_by(const Eigen::VectorXd& log_likelihood);
+
   /// The update with a REAL measurement (Q unscaled): reweight, or, for a portion with no
   /// particle within options().reset_gate sigmas of it, scatter that portion around it (sensor
   /// resetting). Returns whether any portion was reset.
   bool update_with_measurement(const Eigen::Vector3d& position,
                                const Eigen::Quaterniond& orientation);
+  /// Sensor resetting alone, given the best exponent of each portion (-d^2/2 for the particle
+  /// nearest the measurement, in sigmas): a portion whose best is below -reset_gate^2/2 is
+  /// scattered around the measurement with uniform weights and its columns at 0.
+  PortionsReset reset_unreached(const Eigen::Vector3d& position,
+                                const Eigen::Quaterniond& orientation,
+                                double translation_best_exponent, double rotation_best_exponent);
   /// Whether the last update_with_measurement reset the translation portion (the object was
   /// somewhere the cloud did not reach), as opposed to only the rotation portion.
   bool translation_was_reset() const { return translation_reset_; }
@@ -108,11 +143,15 @@ class PoseParticleFilter {
 
   /// Restarts the generators (a copied filter must not replay its original's random draws).
   void reseed(std::uint64_t seed);
+  /// The generator of resampling draws, for an estimator's own draws (occlusion flags): one
+  /// seeded stream per filter.
+  Random& random() { return random_; }
 
   /// trace(covariance_scale * Q) for the 6-DoF observation covariance Q (paper Eq. 15).
   double observation_trace(double covariance_scale = 1.0) const;
 
   const PoseParticleFilterOptions& options() const { return options_; }
+  /// Read-write: an estimator adds its columns and moves its particles through these.
   TranslationParticles& translation() { return translation_; }
   const TranslationParticles& translation() const { return translation_; }
   RotationParticles& rotation() { return rotation_; }

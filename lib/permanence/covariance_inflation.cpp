@@ -7,16 +7,7 @@
 namespace opf {
 
 void validate(const UncertaintyOptions& options) {
-  if (!(options.kappa > 1.0) || !std::isfinite(options.kappa))
-    throw std::invalid_argument("uncertainty option kappa must be greater than 1");
-  if (!(options.reference_speed > 0.0) || !std::isfinite(options.reference_speed))
-    throw std::invalid_argument("uncertainty option reference_speed must be positive");
-  if (!(options.reference_period > 0.0) || !std::isfinite(options.reference_period))
-    throw std::invalid_argument("uncertainty option reference_period must be positive");
-  if (!(options.speed_window >= 0.0))
-    throw std::invalid_argument("uncertainty option speed_window must be >= 0");
-  if (!(options.max_scale >= 1.0))
-    throw std::invalid_argument("uncertainty option max_scale must be at least 1");
+  check_options(options, "uncertainty");
 }
 
 CovarianceInflation::CovarianceInflation(const UncertaintyOptions& options) : options_(options) {

@@ -3,6 +3,8 @@
 // observation covariance grows as Q~_k = alpha_k Q~_{k-1}, alpha_k = kappa^v, and returns to Q
 // when a real measurement arrives.
 
+#include "opf/core/option_schema.h"
+
 namespace opf {
 
 /// How v is measured (the paper leaves it open): v = max(1, speed / reference_speed), where speed
@@ -21,6 +23,16 @@ struct UncertaintyOptions {
   /// finite instead of overflowing.
   double max_scale = 1e6;
 };
+
+/// The settings file's `opf.uncertainty:` section (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, UncertaintyOptions& o) {
+  v.number("kappa", o.kappa, greater_than(1.0, "a number kappa > 1"));
+  v.number("reference_speed", o.reference_speed, positive("a positive speed (m/s)"));
+  v.number("reference_period", o.reference_period, positive("a positive period (s)"));
+  v.number("speed_window", o.speed_window, non_negative("seconds >= 0"));
+  v.number("max_scale", o.max_scale, at_least(1.0, "a number >= 1"));
+}
 
 class CovarianceInflation {
  public:

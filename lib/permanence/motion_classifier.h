@@ -3,6 +3,7 @@
 // static over its last H states before the measurement went missing?
 
 #include "opf/core/enum_names.h"
+#include "opf/core/option_schema.h"
 #include "opf/fit/trajectory_fit.h"
 
 #include <span>
@@ -29,6 +30,14 @@ struct MotionThresholds {
   double rotation = 0.5;      ///< rad, geodesic
   MotionTest test = MotionTest::kMaxPairwise;
 };
+
+/// The settings file's `opf.motion_thresholds:` section (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, MotionThresholds& o) {
+  v.number("translation", o.translation, non_negative("a distance in m >= 0"));
+  v.number("rotation", o.rotation, non_negative("an angle in rad >= 0"));
+  v.choice("test", kMotionTestNames, o.test);
+}
 
 enum class Motion { kStatic, kMoving };
 

@@ -430,29 +430,7 @@ std::string describe(const MotionPrediction& prediction) {
 }
 
 void validate(const MotionPredictionOptions& options) {
-  auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
-  if (!positive(options.history_window))
-    throw std::invalid_argument("dynamics option history_window must be a positive number of s");
-  if (options.fit_windows.empty())
-    throw std::invalid_argument("dynamics option fit_windows must list at least one window");
-  for (const double w : options.fit_windows)
-    if (!positive(w))
-      throw std::invalid_argument("dynamics option fit_windows must be positive numbers of s");
-  if (!positive(options.validation_horizon))
-    throw std::invalid_argument("dynamics option validation_horizon must be positive");
-  if (!(options.gravity >= 0.0) || !std::isfinite(options.gravity))
-    throw std::invalid_argument("dynamics option gravity must be >= 0");
-  if (!(options.up.norm() > 0.0) || !options.up.allFinite())
-    throw std::invalid_argument("dynamics option up must be a non-zero vector");
-  if (!positive(options.uncertainty_scale))
-    throw std::invalid_argument("dynamics option uncertainty_scale must be positive");
-  if (!(options.settle_time >= 0.0) || !(options.onset_guard >= 0.0) ||
-      !std::isfinite(options.settle_time) || !std::isfinite(options.onset_guard))
-    throw std::invalid_argument("dynamics options settle_time and onset_guard must be >= 0");
-  if (!(options.validation_memory >= 0.0) || !std::isfinite(options.validation_memory))
-    throw std::invalid_argument("dynamics option validation_memory must be >= 0 s");
-  if (options.robust_iterations < 0 || options.robust_iterations > 20)
-    throw std::invalid_argument("dynamics option robust_iterations must be in [0, 20]");
+  check_options(options, "dynamics");
 }
 
 Eigen::Vector3d MotionPrediction::position(double h) const {

@@ -17,6 +17,7 @@
 // predicted ahead, give the growth of the prediction's variance.
 
 #include "opf/core/enum_names.h"
+#include "opf/core/option_schema.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -94,6 +95,24 @@ struct MotionPredictionOptions {
   double onset_guard = 0.0;
   int robust_iterations = 3;  ///< Huber reweightings per fit; 0: plain least squares
 };
+
+/// The settings file's `opf.dynamics:` keys of the selected predictor (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, MotionPredictionOptions& o) {
+  v.number("history_window", o.history_window, positive("a positive number of s"));
+  v.numbers("fit_windows", o.fit_windows, positive("positive numbers of s"));
+  v.number("validation_horizon", o.validation_horizon, positive("a positive number of s"));
+  v.number("validation_memory", o.validation_memory,
+           non_negative("seconds >= 0 (0: every validation origin alike)"));
+  v.flag("ballistic", o.ballistic);
+  v.flag("constant_acceleration", o.constant_acceleration);
+  v.number("gravity", o.gravity, non_negative("m/s^2 >= 0"));
+  v.vector3("up", o.up);
+  v.number("uncertainty_scale", o.uncertainty_scale, positive());
+  v.number("settle_time", o.settle_time, non_negative("seconds >= 0"));
+  v.number("onset_guard", o.onset_guard, non_negative("seconds >= 0"));
+  v.integer("robust_iterations", o.robust_iterations, between(0, 20, "an integer from 0 to 20"));
+}
 
 /// One frame of an object's history: its measurement and the filter's estimate after it.
 struct MotionSample {

@@ -4,6 +4,7 @@
 // whether two candidates are too close to call (then the OPF follows both).
 
 #include "opf/core/enum_names.h"
+#include "opf/core/option_schema.h"
 
 #include <Eigen/Core>
 
@@ -74,6 +75,22 @@ struct OccluderOptions {
   double reach = 0.15;
   double gate_sigmas = 3.0;
 };
+
+/// The settings file's `opf.occluder:` section (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, OccluderOptions& o) {
+  v.number("epsilon_occ", o.epsilon_occ, non_negative());
+  v.choice("plane", kOccluderPlaneNames, o.plane);
+  v.optional_vector3("camera_position", o.camera_position);
+  v.flag("keep_offset", o.keep_offset);
+  v.flag("keep_depth", o.keep_depth);
+  v.flag("carry_from_departure", o.carry_from_departure);
+  v.flag("orientation_from_estimate", o.orientation_from_estimate);
+  v.number("departure_margin", o.departure_margin, non_negative("metres >= 0"));
+  v.flag("gate", o.gate);
+  v.number("reach", o.reach, non_negative("metres >= 0"));
+  v.number("gate_sigmas", o.gate_sigmas, non_negative());
+}
 
 /// A candidate occluder: another object's position estimate.
 struct OccluderCandidate {

@@ -2,6 +2,8 @@
 // The feedback module's human-intervention signal (paper Sec. III-C.1, Eq. 15): the uncertainty
 // U = trace(Q~) and the alert raised when it reaches the safety threshold.
 
+#include "opf/core/option_schema.h"
+
 namespace opf {
 
 struct FeedbackOptions {
@@ -9,6 +11,12 @@ struct FeedbackOptions {
   /// noise (3 * 0.01^2 + 3 * 0.05^2 = 0.0078), i.e. alert after Q~ grew by an order of magnitude.
   double epsilon_safe = 0.1;
 };
+
+/// The settings file's `opf.feedback:` section (core/option_schema.h).
+template <class Visitor>
+void describe_options(Visitor& v, FeedbackOptions& o) {
+  v.number("epsilon_safe", o.epsilon_safe, positive());
+}
 
 /// U >= epsilon_safe: the robot should stop, fall back to a safe mode or alert the operator.
 inline bool safety_alert(double uncertainty, const FeedbackOptions& options) {

@@ -527,8 +527,8 @@ TEST(ConstantVelocityKalman, InvalidOptionsThrowNamingTheField) {
   const Field fields[] = {
       {&CvKalmanOptions::acceleration_noise, "acceleration_noise"},
       {&CvKalmanOptions::angular_acceleration_noise, "angular_acceleration_noise"},
-      {&CvKalmanOptions::observation_noise_translation, "observation_noise_translation"},
-      {&CvKalmanOptions::observation_noise_rotation, "observation_noise_rotation"},
+      {&CvKalmanOptions::observation_noise_translation, "observation_noise.translation"},
+      {&CvKalmanOptions::observation_noise_rotation, "observation_noise.rotation"},
       {&CvKalmanOptions::initial_velocity_std, "initial_velocity_std"},
       {&CvKalmanOptions::initial_angular_velocity_std, "initial_angular_velocity_std"},
   };

@@ -163,10 +163,10 @@ TEST(OcclusionAwareParticleFilter, OcclusionProbabilityRisesThroughAGapAndFallsO
     previous = p;
     // Resampling moved the flags and times occluded with the states: only occluded particles have
     // been hiding, and none longer than the gap.
-    const auto& portion = oapf.translation();
-    for (std::size_t i = 0; i < n; ++i) {
-      const double tau = portion.time_occluded[Eigen::Index(i)];
-      if (portion.occluded[i])
+    const auto& columns = oapf.translation().columns;
+    for (Eigen::Index i = 0; i < Eigen::Index(n); ++i) {
+      const double tau = columns(OcclusionAwareParticleFilter::kTimeOccluded, i);
+      if (columns(OcclusionAwareParticleFilter::kOccluded, i) != 0.0)
         ASSERT_TRUE(tau > 0.0 && tau <= j * kDt + 1e-12) << "particle " << i << " tau " << tau;
       else
         ASSERT_EQ(tau, 0.0) << "particle " << i;

@@ -56,6 +56,8 @@ TEST(EstimatorSettingsDump, HoldsEveryOptionOfTheShippedSettingsFile) {
   key_paths(shipped, "", documented);
   key_paths(YAML::Load(dump_estimator_settings(EstimatorSettings{})), "", dumped);
   for (const std::string& key : documented) EXPECT_TRUE(dumped.count(key)) << key;
+  // ... and documents every option: a key added to a description must be explained there.
+  for (const std::string& key : dumped) EXPECT_TRUE(documented.count(key)) << key;
   // The defaults file and the dump of the defaults are the same settings.
   const EstimatorSettings from_file =
       parse_estimator_settings(YAML::Dump(shipped), "estimators.yaml");

@@ -1,0 +1,57 @@
+#pragma once
+// Reads a settings file's mapping into an options struct by walking its description
+// (core/option_schema.h): each key present is parsed and checked against the field's Bounds, and
+// an error names the file, the line and the key path. The ranges are those validate() enforces,
+// from the same description.
+
+#include "opf/core/option_schema.h"
+#include "opf/io/yaml_reader.h"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace opf {
+
+class YamlOptionReader {
+ public:
+  explicit YamlOptionReader(YamlReader& yaml) : stack_{&yaml} {}
+
+  void number(std::string_view key, double& out, const Bounds& bounds) {
+    yaml().get(key, out);
+    yaml().require(key, bounds.admits(out), std::string(bounds.expectation));
+  }
+  void integer(std::string_view key, std::size_t& out, const Bounds& bounds) {
+    yaml().get(key, out);
+    yaml().require(key, bounds.admits(static_cast<double>(out)), std::string(bounds.expectation));
+  }
+  void integer(std::string_view key, int& out, const Bounds& bounds) {
+    std::size_t value = static_cast<std::size_t>(out);
+    integer(key, value, bounds);
+    out = static_cast<int>(value);
+  }
+  void flag(std::string_view key, bool& out) { yaml().get(key, out); }
+  template <class Enum, std::size_t N>
+  void choice(std::string_view key, const EnumNames<Enum, N>& names, Enum& out) {
+    yaml().get(key, names, out);
+  }
+  void numbers(std::string_view key, std::vector<double>& out, const Bounds& bounds);
+  void vector3(std::string_view key, Eigen::Vector3d& out);
+  void optional_vector3(std::string_view key, std::optional<Eigen::Vector3d>& out);
+  template <class Describe>
+  void section(std::string_view key, Describe&& describe) {
+    stack_.push_back(&yaml().child(key));
+    describe();
+    stack_.pop_back();
+  }
+
+ private:
+  YamlReader& yaml() { return *stack_.back(); }
+  std::vector<YamlReader*> stack_;
+};
+
+}  // namespace opf

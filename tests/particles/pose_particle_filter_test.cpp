@@ -1,0 +1,94 @@
+// The pose particle filter's steps for estimators with a per-particle state of their own:
+// columns carried through normalise-and-resample and summarised before it, sensor resetting on
+// given exponents, per-particle spreads, the estimator's own likelihood.
+
+#include "opf/particles/pose_particle_filter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace opf {
+namespace {
+
+PoseParticleFilter small_filter(std::size_t n) {
+  PoseParticleFilterOptions options;
+  options.translation_particles = n;
+  options.rotation_particles = n;
+  PoseParticleFilter filter(options, 7);
+  filter.initialise(Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Quaterniond::Identity());
+  return filter;
+}
+
+TEST(PoseParticleFilter, ColumnMeansAreTakenUnderTheWeightsBeforeResampling) {
+  PoseParticleFilter filter = small_filter(4);
+  TranslationParticles& portion = filter.translation();
+  portion.columns.resize(1, 4);
+  portion.columns << 0.0, 1.0, 0.0, 1.0;
+  const TranslationParticles::States before = portion.states;
+  filter.reweight_translation_by(Eigen::Vector4d(0.1, 0.2, 0.3, 0.4).array().log().matrix());
+  const ResampleReport report = filter.normalise_and_resample();
+  ASSERT_EQ(report.translation_column_means.size(), 1);
+  EXPECT_NEAR(report.translation_column_means[0], 0.2 + 0.4, 1e-15);
+  EXPECT_EQ(report.rotation_column_means.size(), 0);  // no columns, no means
+  ASSERT_TRUE(report.resampled_translation);
+  // Each resampled particle kept its own column: its state names the particle it came from.
+  for (Eigen::Index k = 0; k < 4; ++k) {
+    Eigen::Index origin = -1;
+    for (Eigen::Index i = 0; i < 4; ++i)
+      if (before.col(i) == portion.states.col(k)) origin = i;
+    ASSERT_GE(origin, 0) << "particle " << k;
+    EXPECT_EQ(portion.columns(0, k), origin % 2 == 1 ? 1.0 : 0.0) << "particle " << k;
+  }
+}
+
+TEST(PoseParticleFilter, ResetUnreachedScattersOnlyThePortionBeyondTheGate) {
+  PoseParticleFilter filter = small_filter(500);
+  filter.translation().columns.setConstant(1, 500, 7.0);
+  filter.rotation().columns.setConstant(1, 500, 7.0);
+  const RotationParticles::States rotation_before = filter.rotation().states;
+  const Eigen::Vector3d far(2.0, 0.0, 0.0);
+  // Gate 5 sigmas: -12.5 is the threshold; the translation's best is beyond, the rotation's not.
+  const PortionsReset reset =
+      filter.reset_unreached(far, Eigen::Quaterniond::Identity(), -12.6, -12.4);
+  EXPECT_TRUE(reset.translation);
+  EXPECT_FALSE(reset.rotation);
+  const double sigma = filter.options().observation_noise_translation;
+  // Scattered about the measurement: the mean within 5 standard errors of a 3-D mean of 500.
+  EXPECT_LT((filter.translation_moments().mean - far).norm(),
+            5.0 * std::sqrt(3.0) * sigma / std::sqrt(500.0));
+  EXPECT_EQ(filter.translation().columns.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_TRUE(filter.translation().weights.uniform());
+  EXPECT_EQ(filter.rotation().states, rotation_before);
+  EXPECT_EQ(filter.rotation().columns.minCoeff(), 7.0);
+}
+
+TEST(PoseParticleFilter, PerParticleSpreadsMoveEachParticleByItsOwn) {
+  PoseParticleFilter filter = small_filter(4);
+  const TranslationParticles::States before = filter.translation().states;
+  const RotationParticles::States rotation_before = filter.rotation().states;
+  filter.predict_per_particle(Eigen::Vector4d(0.0, 0.0, 0.5, 0.5), Eigen::Vector4d::Zero());
+  EXPECT_EQ(filter.translation().states.col(0), before.col(0));
+  EXPECT_EQ(filter.translation().states.col(1), before.col(1));
+  EXPECT_NE(filter.translation().states.col(2), before.col(2));
+  EXPECT_NE(filter.translation().states.col(3), before.col(3));
+  // A zero rotation step leaves the quaternions but for float rounding.
+  EXPECT_TRUE(filter.rotation().states.isApprox(rotation_before, 1e-6f));
+}
+
+TEST(PoseParticleFilter, ExponentsAreTheUpdatesOwn) {
+  // reweight() adds exactly translation_exponents(): an estimator building its likelihood on them
+  // scores a particle as the standard PF does.
+  PoseParticleFilter a = small_filter(64), b = small_filter(64);
+  const Eigen::Vector3d z(0.11, 0.19, 0.31);
+  a.reweight_translation(z);
+  b.reweight_translation_by(b.translation_exponents(z));
+  // The same weights (reweight() skips uniform weights' common offset, log N).
+  const Eigen::VectorXd wa = a.translation().weights.linear(),
+                        wb = b.translation().weights.linear();
+  EXPECT_LT((wa - wb).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_GT(wa.maxCoeff(), 2.0 * wa.minCoeff());  // and the measurement did weigh the particles
+}
+
+}  // namespace
+}  // namespace opf
