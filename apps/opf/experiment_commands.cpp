@@ -85,7 +85,8 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
       all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
                                                  threads, first_seed));
       if (with_figures)
-        for (auto& figure : experiments::write_figures(out, config, {}, all.back()))
+        for (auto& figure : experiments::write_figures(out, config, {}, all.back(),
+                                                       settings.opf.feedback.epsilon_safe))
           figures.push_back(std::move(figure));
       continue;
     }
@@ -93,7 +94,8 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     all.push_back(experiments::run_open_loop(config, observation, names, settings, seeds, seed,
                                              progress, threads, first_seed));
     if (with_figures)
-      for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
+      for (auto& figure : experiments::write_figures(out, config, observation, all.back(),
+                                                     settings.opf.feedback.epsilon_safe))
         figures.push_back(std::move(figure));
   }
   if (show_progress) std::cerr << "\r\033[K";

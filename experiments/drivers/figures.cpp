@@ -4,6 +4,7 @@
 #include "drivers/observe_experiment.h"
 #include "opf/core/metrics.h"
 #include "opf/core/pose_conversion.h"
+#include "opf/io/csv.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -12,19 +13,53 @@
 #include <array>
 #include <map>
 #include <stdexcept>
+#include <utility>
 
 namespace opf::experiments {
 namespace {
 
-// The paper's colours: OPF red, PF blue; the other baselines green and orange.
-std::array<std::uint8_t, 3> colour_of(const std::string& estimator) {
-  static const std::map<std::string, std::array<std::uint8_t, 3>> colours = {
-      {"opf", {220, 30, 30}},
-      {"pf", {30, 60, 220}},
-      {"cvkf", {30, 160, 60}},
-      {"oapf", {240, 140, 0}}};
-  const auto it = colours.find(estimator);
-  return it == colours.end() ? std::array<std::uint8_t, 3>{90, 90, 90} : it->second;
+/// How an estimator is drawn in every figure: the paper's colours (OPF red, PF blue; the other
+/// baselines green and orange), and a line style and marker of its own so that curves on the same
+/// values, grey print and colour-blind readers still tell them apart. The notebooks and the report
+/// use the same colours (notebooks/opf_results.py, paper/make_report.py).
+struct EstimatorStyle {
+  std::array<std::uint8_t, 3> rgb;
+  LineStyle line;
+  int width;
+  int marker;  ///< cv::MarkerTypes, in the snapshot
+};
+
+EstimatorStyle style_of(const std::string& estimator) {
+  static const std::map<std::string, EstimatorStyle> styles = {
+      {"opf", {{220, 30, 30}, LineStyle::kSolid, 2, cv::MARKER_DIAMOND}},
+      {"pf", {{30, 60, 220}, LineStyle::kDashed, 4, cv::MARKER_SQUARE}},
+      {"cvkf", {{30, 160, 60}, LineStyle::kDashDot, 2, cv::MARKER_TRIANGLE_UP}},
+      {"oapf", {{240, 140, 0}, LineStyle::kDotted, 3, cv::MARKER_TILTED_CROSS}}};
+  const auto it = styles.find(estimator);
+  return it == styles.end() ? EstimatorStyle{{90, 90, 90}, LineStyle::kSolid, 1, cv::MARKER_CROSS}
+                            : it->second;
+}
+
+ChartSeries series_of(const std::string& label, const std::string& estimator) {
+  const EstimatorStyle style = style_of(estimator);
+  ChartSeries series;
+  series.label = label;
+  series.r = style.rgb[0];
+  series.g = style.rgb[1];
+  series.b = style.rgb[2];
+  series.style = style.line;
+  series.width = style.width;
+  return series;
+}
+
+LineChart time_chart(const std::string& title, const std::string& y_label, bool log_y) {
+  LineChart chart;
+  chart.title = title;
+  chart.x_label = "t [s]";
+  chart.y_label = y_label;
+  chart.log_y = log_y;
+  chart.band_label = "hidden";
+  return chart;
 }
 
 }  // namespace
@@ -32,46 +67,50 @@ std::array<std::uint8_t, 3> colour_of(const std::string& estimator) {
 std::vector<std::filesystem::path> write_figures(const std::filesystem::path& dir,
                                                  const sim::ExperimentConfig& config,
                                                  const Observation& observation,
-                                                 const ExperimentResults& results) {
+                                                 const ExperimentResults& results,
+                                                 double epsilon_safe) {
   std::vector<std::filesystem::path> written;
+  // The seed as the per-frame CSV's seed column names it.
+  const std::string seed = " (seed " + std::to_string(results.first_seed) + ")";
   for (const std::string& object : config.objects_of_interest) {
-    const std::string seed = " (seed " + std::to_string(results.first_seed + 1) + ")";
-    LineChart translation{config.name + ": " + object + " translation error" + seed,
-                          "frame",
-                          "m",
-                          {},
-                          false,
-                          900,
-                          420};
-    LineChart rotation{config.name + ": " + object + " rotation error, geodesic" + seed,
-                       "frame",
-                       "rad",
-                       {},
-                       false,
-                       900,
-                       420};
-    LineChart trace{config.name + ": " + object + " trace of Q~" + seed,
-                    "frame",
-                    "m^2 + rad^2",
-                    {},
-                    true,
-                    900,
-                    420};
+    LineChart translation =
+        time_chart(config.name + ": " + object + ", translation error" + seed, "error [m]", false);
+    LineChart rotation = time_chart(
+        config.name + ": " + object + ", rotation error (geodesic)" + seed, "error [rad]", false);
+    LineChart trace = time_chart(config.name + ": " + object + ", uncertainty trace(Q~)" + seed,
+                                 "trace(Q~) [m^2 + rad^2]", true);
+    trace.references.push_back({epsilon_safe, "alert (" + csv::format_double(epsilon_safe) + ")"});
+    // Hidden frames, from the measurements (the same for every estimator): each frame's interval
+    // reaches halfway to its neighbours.
+    std::vector<std::pair<double, bool>> frames;  // t, visible
+    for (const FrameRecord& record : results.records)
+      if (record.seed_index == results.first_seed && record.estimate.object == object &&
+          record.estimate.hypothesis == 0 && record.estimator == results.estimators.front())
+        frames.emplace_back(record.estimate.t, record.visible);
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      if (frames[i].second) continue;
+      const double from = i > 0 ? 0.5 * (frames[i - 1].first + frames[i].first) : frames[i].first;
+      const double to =
+          i + 1 < frames.size() ? 0.5 * (frames[i].first + frames[i + 1].first) : frames[i].first;
+      if (!translation.bands.empty() && translation.bands.back().to >= from)
+        translation.bands.back().to = to;
+      else
+        translation.bands.push_back({from, to});
+    }
+    rotation.bands = trace.bands = translation.bands;
     for (const std::string& estimator : results.estimators) {
-      const auto [r, g, b] = colour_of(estimator);
-      ChartSeries t{estimator, {}, {}, r, g, b}, q{estimator, {}, {}, r, g, b},
-          u{estimator, {}, {}, r, g, b};
+      ChartSeries t = series_of(estimator, estimator), q = t, u = t;
       for (const FrameRecord& record : results.records) {
         if (record.seed_index != results.first_seed || record.estimator != estimator ||
             record.estimate.object != object || record.estimate.hypothesis != 0)
           continue;
         const auto truth = make_pose(record.truth.position, record.truth.orientation);
-        const double frame = record.frame;
-        t.x.push_back(frame);
+        const double time = record.estimate.t;
+        t.x.push_back(time);
         t.y.push_back(translation_error(record.estimate.pose.mean, truth));
-        q.x.push_back(frame);
+        q.x.push_back(time);
         q.y.push_back(rotation_error_geodesic(record.estimate.pose.mean, truth));
-        u.x.push_back(frame);
+        u.x.push_back(time);
         u.y.push_back(record.estimate.observation_trace);
       }
       translation.series.push_back(std::move(t));
@@ -92,18 +131,18 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
     for (const std::string& estimator : results.estimators) {
       std::map<int, ChartSeries> tracks;
       ChartSeries truth{"truth", {}, {}, 0, 0, 0};
+      truth.width = 4;
       for (const FrameRecord& record : results.records) {
         if (record.seed_index != results.first_seed || record.estimator != estimator ||
             record.estimate.object != object)
           continue;
         const int h = record.estimate.hypothesis;
         if (!tracks.count(h)) {
-          // The main hypothesis in the estimator's colour, the others in grey shades.
-          const auto [r, g, b] = colour_of(estimator);
+          // The main hypothesis in the estimator's style, the others dashed in grey shades.
           const auto shade = static_cast<std::uint8_t>(std::min(200, 60 + 50 * h));
-          tracks[h] = h == 0
-                          ? ChartSeries{"main", {}, {}, r, g, b}
-                          : ChartSeries{"hyp. " + std::to_string(h), {}, {}, shade, shade, shade};
+          ChartSeries further{"hyp. " + std::to_string(h), {}, {}, shade, shade, shade};
+          further.style = LineStyle::kDashed;
+          tracks[h] = h == 0 ? series_of("main", estimator) : further;
         }
         const Eigen::Vector3d p = translation_of(record.estimate.pose.mean);
         tracks[h].x.push_back(p.x());
@@ -114,15 +153,11 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
         }
       }
       if (tracks.size() < 2) continue;
-      LineChart top{config.name + ": " + object + ", " + estimator +
-                        " hypotheses, top view (seed " + std::to_string(results.first_seed + 1) +
-                        ")",
-                    "x [m]",
-                    "y [m]",
-                    {},
-                    false,
-                    900,
-                    560};
+      LineChart top;
+      top.title = config.name + ": " + object + ", " + estimator + " hypotheses, top view" + seed;
+      top.x_label = "x [m]";
+      top.y_label = "y [m]";
+      top.height = 560;
       top.series.push_back(std::move(truth));
       for (auto& [h, series] : tracks) top.series.push_back(std::move(series));
       written.push_back(dir / (config.name + "_" + object + "_" + estimator + "_hypotheses.png"));
@@ -137,9 +172,16 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
     const sim::CameraModel camera = camera_of(config);
     const int k = observation.snapshot_frame;
     int legend_y = 20;
+    // Each estimate as its estimator's marker, ringed in white and black so that it stands out
+    // on a body of its own colour.
+    const auto draw_estimate = [&](cv::Point2d at, const EstimatorStyle& style) {
+      const cv::Scalar colour(style.rgb[2], style.rgb[1], style.rgb[0]);
+      cv::drawMarker(image, at, cv::Scalar(0, 0, 0), style.marker, 19, 6, cv::LINE_AA);
+      cv::drawMarker(image, at, cv::Scalar(255, 255, 255), style.marker, 17, 4, cv::LINE_AA);
+      cv::drawMarker(image, at, colour, style.marker, 15, 2, cv::LINE_AA);
+    };
     for (const std::string& estimator : results.estimators) {
-      const auto [r, g, b] = colour_of(estimator);
-      const cv::Scalar colour(b, g, r);
+      const EstimatorStyle style = style_of(estimator);
       for (const FrameRecord& record : results.records) {
         if (record.frame != k || record.seed_index != results.first_seed ||
             record.estimator != estimator)
@@ -148,16 +190,14 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
                       record.estimate.object) == config.objects_of_interest.end())
           continue;
         const auto pixel = camera.project(translation_of(record.estimate.pose.mean));
-        if (pixel)
-          cv::circle(image, cv::Point2d(pixel->x(), pixel->y()), 7, colour, cv::FILLED,
-                     cv::LINE_AA);
+        if (pixel) draw_estimate(cv::Point2d(pixel->x(), pixel->y()), style);
         const auto truth = camera.project(record.truth.position);
         if (truth)
           cv::drawMarker(image, cv::Point2d(truth->x(), truth->y()), cv::Scalar(0, 0, 0),
                          cv::MARKER_CROSS, 16, 2);
       }
-      cv::circle(image, {15, legend_y - 4}, 6, colour, cv::FILLED, cv::LINE_AA);
-      cv::putText(image, estimator, {28, legend_y}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
+      draw_estimate(cv::Point2d(15, legend_y - 4), style);
+      cv::putText(image, estimator, {30, legend_y}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
                   cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
       legend_y += 20;
     }
