@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Prints the performance targets of issue 5 against a Google Benchmark JSON report written by
-bench/run_benchmarks.sh (medians of the repetitions). Standard library only.
+"""Prints the performance targets (docs/performance.md) against a Google Benchmark JSON report
+written by bench/run_benchmarks.sh (medians of the repetitions). Standard library only.
 
     /usr/bin/python3 bench/summarise.py bench/results/HOST-DATE.json
 """

@@ -1,7 +1,7 @@
 #!/bin/bash
 # Times `opf track` as a user runs it (whole process: start-up, reading the log, tracking, writing
 # the estimates) on a 3-object, 2000-frame log at 5000 + 5000 particles, and reports its peak
-# memory. Issue 5's targets: under 1 s and under 100 MB on this kind of machine.
+# memory. The targets: under 1 s and under 100 MB on this kind of machine.
 #   bash bench/time_track.sh [BUILD_DIR]          (default build)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,6 +1,7 @@
 #include "config_command.h"
 
 #include "arguments.h"
+#include "command_help.h"
 #include "estimator_arguments.h"
 #include "opf/io/estimator_settings_yaml.h"
 
@@ -25,11 +26,15 @@ constexpr const char* kSummary =
 
 }  // namespace
 
+CommandHelp config_help() {
+  return {"config", kSummary, specs()};
+}
+
 int config_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
   const Arguments args(raw, option_specs);
   if (args.help()) {
-    std::cout << usage("config", kSummary, option_specs);
+    std::cout << usage(config_help());
     return 0;
   }
   if (!args.has("dump")) throw UsageError{"nothing to do: pass --dump"};

@@ -1,6 +1,7 @@
 #include "detect_command.h"
 
 #include "arguments.h"
+#include "command_help.h"
 #include "opf/io/atomic_file.h"
 #include "opf/vision/detection_overlay.h"
 #include "opf/vision/frame_source.h"
@@ -79,11 +80,15 @@ std::string range_text(double low, double high) {
 
 }  // namespace
 
+CommandHelp detect_help() {
+  return {"detect", kSummary, specs()};
+}
+
 int detect_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
   const Arguments args(raw, option_specs);
   if (args.help()) {
-    std::cout << usage("detect", kSummary, option_specs);
+    std::cout << usage(detect_help());
     return 0;
   }
   const std::filesystem::path video = args.require("video");

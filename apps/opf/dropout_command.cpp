@@ -1,6 +1,7 @@
 #include "dropout_command.h"
 
 #include "arguments.h"
+#include "command_help.h"
 #include "opf/io/atomic_file.h"
 #include "opf/io/input_file.h"
 #include "opf/io/measurement_dropout.h"
@@ -33,11 +34,15 @@ constexpr const char* kSummary =
 
 }  // namespace
 
+CommandHelp dropout_help() {
+  return {"dropout", kSummary, specs()};
+}
+
 int dropout_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
   const Arguments args(raw, option_specs);
   if (args.help()) {
-    std::cout << usage("dropout", kSummary, option_specs);
+    std::cout << usage(dropout_help());
     return 0;
   }
   const std::string in = args.require("in");

@@ -1,6 +1,7 @@
 #include "evaluate_command.h"
 
 #include "arguments.h"
+#include "command_help.h"
 #include "drivers/data_directory.h"
 #include "estimator_arguments.h"
 #include "log_arguments.h"
@@ -193,11 +194,15 @@ void write_evaluation(const std::filesystem::path& path, const std::vector<Row>&
 
 }  // namespace
 
+CommandHelp evaluate_help() {
+  return {"evaluate", kSummary, specs()};
+}
+
 int evaluate_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
   const Arguments args(raw, option_specs);
   if (args.help()) {
-    std::cout << usage("evaluate", kSummary, option_specs);
+    std::cout << usage(evaluate_help());
     return 0;
   }
   const std::string data = (experiments::bundled_experiments() / "data").string() + "/";

@@ -1,6 +1,7 @@
 #include "experiment_commands.h"
 
 #include "arguments.h"
+#include "command_help.h"
 #include "drivers/closed_loop_run.h"
 #include "drivers/data_directory.h"
 #include "drivers/figures.h"
@@ -112,19 +113,34 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   return 0;
 }
 
+constexpr const char* kRunSummary =
+    "Runs one experiment file (see experiments/general_op.yaml): renders the\n"
+    "scripted scene with the simulated camera, then runs every estimator over\n"
+    "the seeds on the same measurement stream and prints the errors of the\n"
+    "experiment's objects of interest.";
+
+constexpr const char* kReproduceSummary =
+    "Reproduces the paper's simulated experiments (Table I: general_op and\n"
+    "sugar_drop) and its baseball throw (motion capture, 0.5 s dropout) on the\n"
+    "bundled experiment files: every estimator, 5 seeds, 5000 + 5000 particles\n"
+    "by default. Prints the table with the paper's numbers beside ours and writes\n"
+    "per-frame CSVs and summary.json.";
+
 }  // namespace
+
+CommandHelp run_help() {
+  return {"run EXPERIMENT.yaml", kRunSummary, specs(false)};
+}
+CommandHelp reproduce_help() {
+  return {"reproduce", kReproduceSummary, specs(true)};
+}
 
 int run_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs(false);
   const auto [options, positional] = split_positional(raw, option_specs);
   const Arguments args(options, option_specs);
   if (args.help()) {
-    std::cout << usage("run EXPERIMENT.yaml",
-                       "Runs one experiment file (see experiments/general_op.yaml): renders the\n"
-                       "scripted scene with the simulated camera, then runs every estimator over\n"
-                       "the seeds on the same measurement stream and prints the errors of the\n"
-                       "experiment's objects of interest.",
-                       option_specs);
+    std::cout << usage(run_help());
     return 0;
   }
   if (positional.size() != 1) throw UsageError{"expected one experiment file"};
@@ -138,14 +154,7 @@ int reproduce_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs(true);
   const Arguments args(raw, option_specs);
   if (args.help()) {
-    std::cout << usage(
-        "reproduce",
-        "Reproduces the paper's simulated experiments (Table I: general_op and\n"
-        "sugar_drop) and its baseball throw (motion capture, 0.5 s dropout) on the\n"
-        "bundled experiment files: every estimator, 5 seeds, 5000 + 5000 particles\n"
-        "by default. Prints the table with the paper's numbers beside ours and writes\n"
-        "per-frame CSVs and summary.json.",
-        option_specs);
+    std::cout << usage(reproduce_help());
     return 0;
   }
   const std::string dir = experiments::bundled_experiments().string() + "/";

@@ -1,6 +1,7 @@
 #include "render_command.h"
 
 #include "arguments.h"
+#include "command_help.h"
 #include "drivers/observe_experiment.h"
 #include "opf/sim/camera_sensor.h"
 #include "opf/sim/scripted_scene.h"
@@ -27,12 +28,16 @@ constexpr const char* kSummary =
 
 }  // namespace
 
+CommandHelp render_help() {
+  return {"render EXPERIMENT.yaml", kSummary, specs()};
+}
+
 int render_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
   const auto [options, positional] = split_positional(raw, option_specs);
   const Arguments args(options, option_specs);
   if (args.help()) {
-    std::cout << usage("render EXPERIMENT.yaml", kSummary, option_specs);
+    std::cout << usage(render_help());
     return 0;
   }
   if (positional.size() != 1) throw UsageError{"expected one experiment file"};

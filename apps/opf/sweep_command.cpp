@@ -2,6 +2,7 @@
 
 #include "arguments.h"
 #include "cli/presets.h"
+#include "command_help.h"
 #include "drivers/sweep_executor.h"
 #include "drivers/sweep_plan.h"
 #include "drivers/sweep_table.h"
@@ -50,12 +51,16 @@ const std::filesystem::path kThisProgram = "/proc/self/exe";
 
 }  // namespace
 
+CommandHelp sweep_help() {
+  return {"sweep SWEEP.yaml", kSummary, specs()};
+}
+
 int sweep_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
   const auto [options, positional] = split_positional(raw, option_specs);
   const Arguments args(options, option_specs);
   if (args.help()) {
-    std::cout << usage("sweep SWEEP.yaml", kSummary, option_specs);
+    std::cout << usage(sweep_help());
     return 0;
   }
   if (positional.size() != 1) throw UsageError{"expected one sweep file"};

@@ -1,6 +1,7 @@
 #include "track_command.h"
 
 #include "arguments.h"
+#include "command_help.h"
 #include "estimator_arguments.h"
 #include "log_arguments.h"
 #include "opf/core/tracker.h"
@@ -86,11 +87,15 @@ class EstimateWriter {
 
 }  // namespace
 
+CommandHelp track_help() {
+  return {"track", kSummary, specs()};
+}
+
 int track_command(const std::vector<std::string>& raw) {
   const auto option_specs = specs();
   const Arguments args(raw, option_specs);
   if (args.help()) {
-    std::cout << usage("track", kSummary, option_specs);
+    std::cout << usage(track_help());
     return 0;
   }
   const std::string in = args.require("in");

@@ -19,7 +19,8 @@ prefix="$scratch/prefix"
 cmake --install "$build" --prefix "$prefix" >"$scratch/install.log"
 for f in include/opf/opf.h include/opf/core/tracker.h lib/cmake/opf/opfConfig.cmake \
   lib/cmake/opf/opfConfigVersion.cmake lib/pkgconfig/opf.pc bin/opf \
-  share/opf/experiments/general_op.yaml share/opf/experiments/data/example_log.csv; do
+  share/opf/experiments/general_op.yaml share/opf/experiments/data/example_log.csv \
+  share/bash-completion/completions/opf share/man/man1/opf.1; do
   [ -e "$prefix/$f" ] || { echo "install: $prefix/$f missing" >&2; exit 1; }
 done
 
@@ -79,10 +80,11 @@ fi
 deb="$(ls "$scratch"/deb/opf-toolkit_*.deb)"
 contents="$(dpkg-deb -c "$deb")"
 for f in ./usr/bin/opf ./usr/include/opf/opf.h ./usr/lib/cmake/opf/opfConfig.cmake \
-  ./usr/lib/pkgconfig/opf.pc ./usr/share/opf/experiments/general_op.yaml; do
+  ./usr/lib/pkgconfig/opf.pc ./usr/share/opf/experiments/general_op.yaml \
+  ./usr/share/bash-completion/completions/opf ./usr/share/man/man1/opf.1; do
   grep -q " $f\$" <<<"$contents" || { echo "deb: $f missing from $deb" >&2; exit 1; }
 done
-echo "deb: $(basename "$deb") holds the program, headers, package config and data"
+echo "deb: $(basename "$deb") holds the program, headers, package config, data, completion and man page"
 
 OPF_DATA_DIR="" "$prefix/bin/opf" evaluate --seeds 1 --estimators cvkf >"$scratch/evaluate.out"
 grep -q "cvkf" "$scratch/evaluate.out"
