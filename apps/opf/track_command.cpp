@@ -49,7 +49,8 @@ constexpr const char* kSummary =
     "in the log as a possible occluder of every other. Further hypotheses (two equally likely\n"
     "occluders) follow as extra rows with hypothesis >= 1; alert is 1 when trace(Q~) >=\n"
     "epsilon_safe. A file is read whole (rows in any order) and the output written only when\n"
-    "the whole run succeeded; a stream (--in - or --stream) is answered frame by frame.";
+    "the whole run succeeded; a stream (--in - or --stream) is answered frame by frame.\n"
+    "The log, estimate and settings formats: docs/formats.md.";
 
 /// Steps the tracker through frames and writes their estimates, counting what it wrote.
 class EstimateWriter {

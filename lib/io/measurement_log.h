@@ -1,26 +1,10 @@
 #pragma once
 // The measurement-log contract: how users replay their detections (AprilTag, mocap, any pose
-// tracker) through the estimators. A CSV file, one row per detection, read into Frames.
-//
-// Format. A header line naming at least the columns
-//   t,object,x,y,z,qx,qy,qz,qw
-// in any order (other columns are ignored; LogReadOptions::columns maps other names), then one row
-// per detection: t in seconds, the object's name, its position in metres and its orientation as a
-// unit quaternion (x, y, z, w). For example
-//   t,object,x,y,z,qx,qy,qz,qw
-//   0.000000,ball,0.400000,-0.200000,0.020000,0.000000000,0.000000000,0.000000000,1.000000000
-//   0.033333,ball,,,,,,,
-// Frames. Rows close in time form one frame: within the frame tolerance (by default a quarter of
-// the median interval between one object's detections, so that sensors stamping their own
-// detections a fraction of a millisecond apart still share a frame), at the mean of its rows'
-// times; equal times always share one. An object is unobserved in a frame when it has no row
-// there or a row with all seven pose fields empty (the frame exists either way). Frames missing
-// inside a gap (no row for more than 1.5 frame periods) are inserted, empty and marked filled.
-// A whole file may list its rows in any order; a stream must be in time order.
-// Quaternions within 0.01 of unit norm are normalised; the rest are rejected. A UTF-8 BOM, CRLF
-// line ends, blank lines, whitespace around fields and double-quoted fields are accepted. Times
-// that cannot be seconds and positions that cannot be metres are refused unless their unit is
-// given (LogReadOptions).
+// tracker) through the estimators. A CSV file, one row per detection (t,object,x,y,z,qx,qy,qz,qw),
+// read into Frames: rows close in time form one frame, an object without a row (or with empty pose
+// fields) is unobserved there, frames missing inside a gap are inserted, empty and marked filled.
+// The format is documented in one place, docs/formats.md; frames, units, gaps and streams from
+// real systems in docs/logs.md.
 
 #include "opf/core/frame.h"
 #include "opf/io/frame_assembler.h"
