@@ -33,13 +33,28 @@ def number(value, digits=4):
         else f"{value:.{digits}f}"
 
 
+def absent(value):
+    return value is None or (isinstance(value, float) and math.isnan(value))
+
+
 def pm(mean, spread, digits=4):
-    return f"{number(mean, digits)} $\\pm$ {number(spread, digits)}"
+    """Mean and spread; a single dash where there is no value (the paper gives none)."""
+    if absent(mean):
+        return "--"
+    return number(mean, digits) if absent(spread) else \
+        f"{number(mean, digits)} $\\pm$ {number(spread, digits)}"
 
 
 def not_run(what, command):
     missing.append(f"{what}: {command}")
     return f"\\emph{{Not in this build: {tex_escape(what)}. Run \\texttt{{{tex_escape(command)}}}.}}\n"
+
+
+def figure(environment, body, caption, label):
+    """A float holding `body`; absent results get a one-line note in the text instead (an empty
+    float would leave a near-blank page)."""
+    return (f"\\begin{{{environment}}}[t]\n\\centering\n{body}"
+            f"\\caption{{{caption}}}\n\\label{{{label}}}\n\\end{{{environment}}}\n")
 
 
 def write(out, name, text):
@@ -106,10 +121,13 @@ def figure_three(out, results):
             fig.savefig(os.path.join(out, f"fig3_{experiment}.pdf"))
             plt.close(fig)
             made.append(experiment)
-    text = "".join(
+    body = "".join(
         f"\\includegraphics[width=\\columnwidth]{{fig3_{e}.pdf}}\\\\[2pt]\n" for e in made)
-    write(out, "figure_three.tex",
-          text or not_run("Fig. 3", "bash scripts/run_main.sh"))
+    caption = (r"Translation error and $\mathrm{trace}(\tilde Q)$ of the object of interest over "
+               r"time, as in the paper's Fig.~3 (seed 0, as in the CSV; hidden frames shaded; "
+               r"dashed: the alert threshold $\epsilon_{safe}$).")
+    write(out, "figure_three.tex", figure("figure", body, caption, "fig:three") if made
+          else not_run("the Fig. 3 curves", "bash scripts/run_main.sh"))
 
 
 def sweep_rows(sweeps, name):
@@ -152,7 +170,7 @@ SWEEPS = [("kappa", "opf.uncertainty.kappa", r"$\kappa$"),
 def parameter_sweeps(out, sweeps):
     present = [(n, p, label, sweep_rows(sweeps, n)) for n, p, label in SWEEPS]
     present = [s for s in present if s[3] is not None]
-    absent = [n for n, _, _ in SWEEPS if n not in {s[0] for s in present}]
+    missing_sweeps = [n for n, _, _ in SWEEPS if n not in {s[0] for s in present}]
     text = ""
     if present:
         columns = 2
@@ -171,9 +189,13 @@ def parameter_sweeps(out, sweeps):
         fig.tight_layout()
         fig.savefig(os.path.join(out, "sweeps.pdf"))
         plt.close(fig)
-        text = "\\includegraphics[width=\\textwidth]{sweeps.pdf}\n"
-    for name in absent:
-        text += not_run(f"the {name} sweep", f"build/bin/opf sweep experiments/sweeps/{name}.yaml")
+        text = figure("figure*", "\\includegraphics[width=\\textwidth]{sweeps.pdf}\n",
+                      "Parameter sweeps: translation error of the object of interest against each "
+                      "parameter (95\\% intervals over seeds).", "fig:sweeps")
+    if missing_sweeps:
+        names = ", ".join(missing_sweeps)
+        text += not_run(f"the {names} sweep{'s' if len(missing_sweeps) > 1 else ''}",
+                        "build/bin/opf sweep experiments/sweeps/NAME.yaml")
     write(out, "sweeps.tex", text)
 
 
@@ -208,8 +230,11 @@ def particle_counts(out, sweeps, bench):
             lines.append(f"{n} & {cell(summary, 'opf')} & {cell(rotation, 'opf')} & "
                          f"{cell(summary, 'pf')} & {step} \\\\")
         lines += [r"\bottomrule", r"\end{tabular}"]
-        write(out, "particles.tex", "\\includegraphics[width=\\columnwidth]{particles.pdf}\n\n"
-              "\\resizebox{\\columnwidth}{!}{" + "\n".join(lines) + "}\n")
+        body = ("\\includegraphics[width=\\columnwidth]{particles.pdf}\n\n"
+                "\\resizebox{\\columnwidth}{!}{" + "\n".join(lines) + "}\n")
+        write(out, "particles.tex", figure(
+            "figure", body, "Accuracy against the particle count (95\\% intervals over seeds) "
+            "and the OPF's time per step from the benchmark report.", "fig:particles"))
 
 
 def benchmarks(out, bench):
