@@ -2,17 +2,28 @@
 
 Everything here reads files that `opf reproduce`, `opf run`, `opf sweep` and the benchmarks
 wrote; nothing is recomputed but means, spreads and errors over frames.
+
+The notebooks import it as `import opf_results as results` (`opf` is the toolkit's own Python
+module). A result file that is not there is skipped with a note naming it and the command that
+makes it: the `*_or_skip` functions return None after showing that note.
 """
 
 import json
 import math
 import os
+import sys
 
 import matplotlib
 
-matplotlib.use("Agg")  # headless: nbconvert and the report script have no display
+if "ipykernel" not in sys.modules:
+    matplotlib.use("Agg")  # headless: the report script has no display (notebooks draw inline)
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as ticker  # noqa: E402
+import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
+
+REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
 # Table I of the paper: 5 runs, mean and std, metres and radians (PAPER_NOTES.md).
 PAPER_TABLE_I = pd.DataFrame(
@@ -28,10 +39,42 @@ PAPER_TABLE_I = pd.DataFrame(
 
 # The object each experiment scores (objects_of_interest in experiments/<name>.yaml).
 OBJECT_OF_INTEREST = {"general_op": "ball", "sugar_drop": "mug", "baseball": "baseball",
-                      "cups_game": "ball"}
+                      "cups_game": "ball", "twin_mugs": "ball"}
 
-ESTIMATOR_COLOURS = {"opf": "tab:blue", "pf": "tab:red", "cvkf": "tab:green",
-                     "oapf": "tab:orange"}
+# How each estimator is drawn, the same as the PNG charts of `opf run`/`reproduce`
+# (style_of in experiments/drivers/figures.cpp): the paper's colours (OPF red, PF blue; the other
+# baselines green and orange) and a line style of its own, so that curves on the same values and
+# grey print still tell them apart. Wider lines are drawn first, narrower ones on top of them.
+# This is the one definition for the notebooks (and paper/make_report.py, which draws with
+# plot_sweep and figure_three).
+ESTIMATOR_COLOURS = {"opf": "#dc1e1e", "pf": "#1e3cdc", "cvkf": "#1ea03c", "oapf": "#f08c00"}
+OTHER_COLOUR = "#5a5a5a"
+ESTIMATOR_STYLES = {
+    "opf": dict(linestyle="-", linewidth=1.5, marker="D"),
+    "pf": dict(linestyle="--", linewidth=2.6, marker="s"),
+    "cvkf": dict(linestyle="-.", linewidth=1.5, marker="^"),
+    "oapf": dict(linestyle=":", linewidth=2.25, marker="X"),
+}
+UNSEEN_COLOUR = "0.88"  # the shading of the frames in which the object had no measurement
+EPSILON_SAFE_DEFAULT = 0.1  # opf.feedback.epsilon_safe in experiments/configs/estimators.yaml
+TRACE_LABEL = r"$\mathrm{tr}(\tilde{Q})$ [m$^2$ + rad$^2$]"
+
+# Axis labels of the swept parameters.
+PARAMETER_LABELS = {
+    "opf.uncertainty.kappa": r"$\kappa$ (covariance inflation)",
+    "opf.history_length": r"$H$ (fitted history) [frames]",
+    "opf.occluder.epsilon_occ": r"$\epsilon_\mathrm{occ}$ (occluder tie gap) [m]",
+    "opf.trajectory.translation_order": "polynomial order of the fit",
+    "opf.occluder.plane": "occluder plane",
+    "pf.resampling.scheme": "resampler",
+    "particles": "particles per portion",
+}
+METRIC_LABELS = {
+    "translation_error": "translation error [m]",
+    "rotation_error_geodesic": "rotation error (geodesic) [rad]",
+    "rotation_error_paper": "rotation error (paper's) [rad]",
+    "translation_error_unobserved": "translation error while hidden [m]",
+}
 
 # Two-sided 95% Student t quantiles by degrees of freedom (no scipy on a bare Debian).
 _T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306,
@@ -51,8 +94,110 @@ def t95(dof):
 def directory_from_env(variable, default):
     """A result directory from the environment (how CI points the notebooks at small result
     sets), else `default` relative to the repository."""
-    here = os.path.dirname(os.path.abspath(__file__))
-    return os.environ.get(variable, os.path.join(here, "..", default))
+    return os.environ.get(variable, os.path.join(REPO, default))
+
+
+def benchmark_from_env(default="bench/results/amd-epyc-2cpu-2026-11-22.json"):
+    """The benchmark report: OPF_BENCH, else the one under bench/results/."""
+    return os.environ.get("OPF_BENCH", os.path.join(REPO, default))
+
+
+# ---------------------------------------------------------------------------------------------
+# Load or skip: one place for what a missing input looks like in a notebook.
+
+
+class Skipped:
+    """A note that an input is missing: Markdown in a notebook (and its HTML copy), plain text
+    elsewhere."""
+
+    def __init__(self, what, path, command):
+        self.what, self.path, self.command = what, path, command
+
+    def _repr_markdown_(self):
+        return (f"**Skipped {self.what}:** `{self.path}` is not there. "
+                f"Make it with `{self.command}`.")
+
+    def __repr__(self):
+        return f"skipped {self.what}: {self.path} is not there; make it with: {self.command}"
+
+
+def skip(what, path, command):
+    """Shows the note that `what` (the file `path`) is missing and `command` makes it; returns
+    None."""
+    note = Skipped(what, _shown_path(path), command)
+    try:
+        from IPython import get_ipython
+        from IPython.display import display
+        if get_ipython() is not None:
+            display(note)
+            return None
+    except ImportError:
+        pass
+    print(repr(note))
+    return None
+
+
+def load_or_skip(path, what, command, loader=None):
+    """`loader(path)` (or `path` itself without a loader) when `path` exists, else None after the
+    note that names `what` and the `command` that makes it."""
+    if not os.path.exists(path):
+        return skip(what, path, command)
+    return loader(path) if loader is not None else path
+
+
+def _shown_path(path):
+    """`path` relative to the repository when it lies inside it (shorter notes)."""
+    full = os.path.abspath(path)
+    return os.path.relpath(full, REPO) if full.startswith(REPO + os.sep) else full
+
+
+def results_command(results):
+    """The command that writes the result files of `opf reproduce` into `results`."""
+    if os.path.abspath(results) == os.path.join(REPO, "results"):
+        return "bash scripts/run_main.sh"
+    return f"build/bin/opf reproduce --out {_shown_path(results)}"
+
+
+def sweep_command(sweeps, name):
+    """The command that runs the sweep `name` into `sweeps/name`."""
+    command = f"build/bin/opf sweep experiments/sweeps/{name}.yaml"
+    if os.path.abspath(sweeps) != os.path.join(REPO, "results", "sweeps"):
+        command += f" --out {_shown_path(os.path.join(sweeps, name))}"
+    return command
+
+
+def runs_or_skip(results, experiment):
+    """`<experiment>_runs.csv` (load_runs), or None with a note."""
+    return load_or_skip(os.path.join(results, experiment + "_runs.csv"),
+                        f"{experiment} (runs)", results_command(results),
+                        lambda path: pd.read_csv(path))
+
+
+def frames_or_skip(results, experiment):
+    """`<experiment>_frames.csv` (load_frames), or None with a note."""
+    return load_or_skip(os.path.join(results, experiment + "_frames.csv"),
+                        f"{experiment} (per-frame results)", results_command(results),
+                        lambda path: load_frames(results, experiment))
+
+
+def sweep_or_skip(sweeps, name):
+    """The finished runs of the sweep `name` (load_sweep), or None with a note (also when no
+    run of it has finished)."""
+    path = os.path.join(sweeps, name, name + ".csv")
+    rows = load_or_skip(path, f"the {name} sweep", sweep_command(sweeps, name), load_sweep)
+    if rows is not None and rows.empty:
+        return skip(f"the {name} sweep (no finished runs)", path, sweep_command(sweeps, name))
+    return rows
+
+
+def benchmark_or_skip(path):
+    """The estimator steps of a benchmark report (load_benchmark), or None with a note."""
+    return load_or_skip(path, "the benchmark report", "bash bench/run_benchmarks.sh",
+                        load_benchmark)
+
+
+# ---------------------------------------------------------------------------------------------
+# Result files.
 
 
 def load_runs(results, experiment):
@@ -69,8 +214,21 @@ def load_frames(results, experiment):
         + (frames.z - frames.true_z) ** 2) ** 0.5
     dot = (frames.qx * frames.true_qx + frames.qy * frames.true_qy + frames.qz * frames.true_qz
            + frames.qw * frames.true_qw).abs().clip(upper=1.0)
-    frames["rotation_error"] = 2.0 * dot.apply(math.acos)
+    frames["rotation_error"] = 2.0 * np.arccos(dot)
     return frames
+
+
+def epsilon_safe(results, experiment):
+    """The OPF's alert threshold epsilon_safe of `experiment` from the settings recorded in
+    `results/summary.json` (provenance), else the default 0.1. Returns (value, where from)."""
+    path = os.path.join(results, "summary.json")
+    try:
+        with open(path) as f:
+            settings = json.load(f)["provenance"]["settings"]
+        settings = settings.get(experiment, settings)  # per experiment, or one run's settings
+        return float(settings["opf"]["feedback"]["epsilon_safe"]), "summary.json"
+    except (OSError, ValueError, KeyError, TypeError):
+        return EPSILON_SAFE_DEFAULT, "default"
 
 
 def table_one(results, experiments=("general_op", "sugar_drop")):
@@ -98,33 +256,162 @@ def table_one(results, experiments=("general_op", "sugar_drop")):
     return ours.merge(paper, on=["experiment", "estimator"], how="left")
 
 
-def plot_over_frames(frames, experiment, column, ylabel, ax, seed=0):
-    """`column` of the object of interest over frames, one line per estimator, for one seed (the
-    main hypothesis), with the frames the object was unseen shaded."""
+# ---------------------------------------------------------------------------------------------
+# Drawing.
+
+
+# Markers that tell experiments apart where one figure has an estimator's lines for several
+# ("opf general_op", "opf sugar_drop"): the colour and line style stay the estimator's.
+EXPERIMENT_MARKERS = {"general_op": "o", "sugar_drop": "s", "baseball": "^", "cups_game": "v",
+                      "twin_mugs": "D", "rolling_ball": "P"}
+
+
+def estimator_style(name, with_marker=False):
+    """Keyword arguments for plot/errorbar that draw estimator `name` as everywhere else: its
+    colour, line style and width, drawn under narrower lines. "ESTIMATOR EXPERIMENT" names get the
+    estimator's style with the experiment's marker. Names that are not estimators get no colour
+    (matplotlib's cycle)."""
+    estimator, _, experiment = str(name).partition(" ")
+    if estimator not in ESTIMATOR_STYLES:
+        return {}
+    style = dict(ESTIMATOR_STYLES[estimator], color=ESTIMATOR_COLOURS[estimator])
+    style["zorder"] = 3 + 1.0 / style["linewidth"]  # narrower on top
+    if experiment:
+        style["marker"] = EXPERIMENT_MARKERS.get(experiment, "o")
+    if not with_marker:
+        style.pop("marker")
+    return style
+
+
+def legend(ax, *args, **kwargs):
+    """A legend with handles long enough to show each line style's pattern."""
+    kwargs.setdefault("fontsize", 8)
+    kwargs.setdefault("handlelength", 3.5)
+    return ax.legend(*args, **kwargs)
+
+
+def drawing_order(names):
+    """`names` in drawing order: wider lines first."""
+    return sorted(names, key=lambda n: -ESTIMATOR_STYLES.get(str(n).partition(" ")[0],
+                                                        {"linewidth": 0})["linewidth"])
+
+
+def _plain_number(value, _position=None):
+    """A tick label in plain decimals: 0.01, 0.2, 5, 300, 10000."""
+    if value == 0 or not math.isfinite(value):
+        return "0"
+    if abs(value) >= 1:
+        return f"{value:.0f}" if float(value).is_integer() else f"{value:g}"
+    return np.format_float_positional(value, precision=6, trim="-")
+
+
+def plain_log_axis(axis):
+    """Log-scale ticks at 1, 2 and 5 (or fewer over many decades) times a power of ten, written
+    as plain decimals instead of 2e-01 or 10^3."""
+    low, high = sorted(axis.get_view_interval())
+    decades = math.log10(high / low) if low > 0 and high > 0 else 3.0
+    subs = (1.0, 2.0, 3.0, 5.0) if decades <= 1.2 else (1.0, 2.0, 5.0) if decades <= 3.2 \
+        else (1.0,)
+    axis.set_major_locator(ticker.LogLocator(base=10.0, subs=subs, numticks=30))
+    axis.set_major_formatter(ticker.FuncFormatter(_plain_number))
+    axis.set_minor_locator(ticker.LogLocator(base=10.0, subs=np.arange(1, 10), numticks=30))
+    axis.set_minor_formatter(ticker.NullFormatter())
+
+
+def plain_axis(axis):
+    """Linear ticks written as plain decimals (no offset or 1e-2 factor)."""
+    formatter = ticker.ScalarFormatter(useOffset=False)
+    formatter.set_scientific(False)
+    axis.set_major_formatter(formatter)
+
+
+def unseen_intervals(t, visible):
+    """Time intervals in which the object had no measurement: each unseen frame's interval
+    reaches halfway to its neighbours (as the PNG charts shade them). `t` ascending."""
+    t = np.asarray(t, dtype=float)
+    visible = np.asarray(visible).astype(bool)
+    intervals = []
+    for i in np.flatnonzero(~visible):
+        start = 0.5 * (t[i - 1] + t[i]) if i > 0 else t[i]
+        end = 0.5 * (t[i] + t[i + 1]) if i + 1 < len(t) else t[i]
+        if intervals and intervals[-1][1] >= start - 1e-12:
+            intervals[-1][1] = end
+        else:
+            intervals.append([start, end])
+    return intervals
+
+
+def shade_unseen(ax, t, visible, label="object not visible"):
+    """Shades the intervals in which the object was not visible; returns a legend handle (None
+    when it was always visible)."""
+    intervals = unseen_intervals(t, visible)
+    for start, end in intervals:
+        ax.axvspan(start, end, color=UNSEEN_COLOUR, lw=0, zorder=0)
+    return Patch(color=UNSEEN_COLOUR, label=label) if intervals else None
+
+
+def first_seed(frames):
+    """The first seed of a frames table, as its seed column names it."""
+    return int(frames.seed.min())
+
+
+def plot_over_time(frames, experiment, column, ylabel, ax, seed=None, with_legend=True):
+    """`column` of the object of interest over time, one line per estimator, for one seed (the
+    first by default) and the main hypothesis, with the intervals the object was not visible
+    shaded. Returns the legend handles."""
     obj = OBJECT_OF_INTEREST.get(experiment)
+    seed = first_seed(frames) if seed is None else seed
     mine = frames[(frames.object == obj) & (frames.seed == seed) & (frames.hypothesis == 0)]
-    for estimator, rows in mine.groupby("estimator", sort=False):
-        ax.plot(rows.frame, rows[column], label=estimator,
-                color=ESTIMATOR_COLOURS.get(estimator))
-    unseen = mine[mine.visible == 0].frame.unique()
-    for frame in unseen:
-        ax.axvspan(frame - 0.5, frame + 0.5, color="0.9", lw=0, zorder=0)
-    ax.set_xlabel("frame")
+    time = "t" if "t" in mine.columns else "frame"
+    handles = []
+    estimators = list(mine.estimator.unique())
+    for estimator in drawing_order(estimators):
+        rows = mine[mine.estimator == estimator].sort_values(time)
+        handles.append(ax.plot(rows[time], rows[column], label=estimator,
+                               **estimator_style(estimator))[0])
+    handles.sort(key=lambda h: estimators.index(h.get_label()))  # legend in the file's order
+    if len(mine):
+        one = mine[mine.estimator == estimators[0]].sort_values(time)
+        shaded = shade_unseen(ax, one[time], one.visible)
+        if shaded is not None:
+            handles.append(shaded)
+        ax.set_xlim(one[time].min(), one[time].max())
+    ax.set_xlabel("time [s]" if time == "t" else "frame")
     ax.set_ylabel(ylabel)
-    ax.set_title(f"{experiment}: {obj}")
-    ax.legend()
-    return ax
+    ax.set_title(f"{experiment}: {obj}, seed {seed}")
+    if with_legend:
+        legend(ax, handles=handles, loc="upper left")
+    return handles
 
 
-def figure_three(results, experiment="general_op", estimators=("opf", "pf")):
-    """The paper's Fig. 3 from our files: translation error and trace of Q~ over frames for the
-    OPF and the PF (seed 0; unseen frames shaded)."""
-    frames = load_frames(results, experiment)
+def figure_three(results, experiment="general_op", estimators=("opf", "pf"), seed=None,
+                 frames=None):
+    """The paper's Fig. 3 from our files: translation error and trace of Q~ over time for the
+    OPF and the PF (one seed, the first by default; intervals without a measurement of the
+    object shaded; the alert threshold epsilon_safe drawn on the trace). `frames` is
+    load_frames(results, experiment) when already loaded."""
+    frames = load_frames(results, experiment) if frames is None else frames
     frames = frames[frames.estimator.isin(estimators)]
+    if seed is None:
+        seed = first_seed(frames) if len(frames) else 0
     fig, axes = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
-    plot_over_frames(frames, experiment, "translation_error", "translation error [m]", axes[0])
-    plot_over_frames(frames, experiment, "trace", "trace of Q~ [m^2 + rad^2]", axes[1])
+    handles = plot_over_time(frames, experiment, "translation_error", "translation error [m]",
+                             axes[0], seed=seed)
+    axes[0].set_xlabel("")  # the axes share time, labelled below
+    axes[0].set_ylim(bottom=0)
+    plain_axis(axes[0].yaxis)
+    plot_over_time(frames, experiment, "trace", TRACE_LABEL, axes[1], seed=seed,
+                   with_legend=False)
+    axes[1].set_title("")
+    value, _ = epsilon_safe(results, experiment)
+    line = axes[1].axhline(value, color="black", lw=1.0, ls=(0, (5, 3)), zorder=2,
+                           label=rf"alert: $\epsilon_\mathrm{{safe}}$ = {_plain_number(value)}")
     axes[1].set_yscale("log")
+    low, high = axes[1].get_ylim()
+    axes[1].set_ylim(min(low, value / 1.5), max(high, value * 1.5))
+    plain_log_axis(axes[1].yaxis)
+    legend(axes[1], handles=[h for h in handles if not isinstance(h, Patch)] + [line],
+           loc="upper left")
     fig.tight_layout()
     return fig
 
@@ -146,17 +433,27 @@ def summarise(rows, by, metric="translation_error"):
 
 def plot_sweep(rows, parameter, metric, ax, series="estimator", log_x=False):
     """`metric` against `parameter` (a column of the sweep table), one line per `series` value,
-    with 95% confidence intervals over seeds."""
+    with 95% confidence intervals over seeds (clipped at zero for errors)."""
     summary = summarise(rows, [series, parameter], metric)
-    for name, group in summary.groupby(series, sort=False):
-        ax.errorbar(group[parameter].astype(str) if not log_x else group[parameter],
-                    group["mean"], yerr=group["ci95"], marker="o", capsize=3, label=str(name),
-                    color=ESTIMATOR_COLOURS.get(name))
+    names = list(summary[series].unique())
+    for name in drawing_order(names):
+        group = summary[summary[series] == name]
+        x = group[parameter] if log_x else group[parameter].astype(str)  # one step per value
+        ax.errorbar(x, group["mean"], yerr=group["ci95"], capsize=3, elinewidth=1.2,
+                    label=str(name),
+                    **(estimator_style(name, with_marker=True) or dict(marker="o")))
+    handles, labels = ax.get_legend_handles_labels()
+    order = sorted(range(len(labels)), key=lambda i: names.index(labels[i])
+                   if labels[i] in names else len(names))
     if log_x:
         ax.set_xscale("log")
-    ax.set_xlabel(parameter)
-    ax.set_ylabel(metric.replace("_", " "))
-    ax.legend()
+        plain_log_axis(ax.xaxis)
+    if metric.endswith("error") or "error_" in metric:
+        ax.set_ylim(bottom=0)
+    plain_axis(ax.yaxis)
+    ax.set_xlabel(PARAMETER_LABELS.get(parameter, parameter))
+    ax.set_ylabel(METRIC_LABELS.get(metric, metric.replace("_", " ")))
+    legend(ax, [handles[i] for i in order], [labels[i] for i in order])
     return ax
 
 

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Executes the notebooks headless with Debian's Jupyter against result files and writes the
-# executed copies to OUT (the notebooks in the repository stay without outputs).
+# executed copies to OUT, each as .ipynb and as a self-contained .html (outputs and figures
+# embedded; made offline, readable in any browser without a network). The notebooks in the
+# repository stay without outputs. Inputs that are not there are skipped inside the notebooks
+# with a note naming the command that makes them, so this runs on whatever results exist.
 #   bash notebooks/run_notebooks.sh [OUT]          # reads results/ (scripts/run_main.sh) and
 #                                                  # results/sweeps/ (opf sweep); OUT defaults to
 #                                                  # results/notebooks
@@ -16,5 +19,6 @@ export OPF_PYTHON="${OPF_PYTHON:-$repo/build/python}"
 for notebook in reproduce_paper ablations particle_counts python_tracker; do
   /usr/bin/jupyter nbconvert --to notebook --execute --ExecutePreprocessor.timeout=600 \
     --output-dir "$out" "$repo/notebooks/$notebook.ipynb"
+  /usr/bin/jupyter nbconvert --to html --output-dir "$out" "$out/$notebook.ipynb"
 done
-echo "executed notebooks in $out"
+echo "executed notebooks in $out (.ipynb and .html)"

@@ -173,9 +173,10 @@ def parameter_sweeps(out, sweeps):
     missing_sweeps = [n for n, _, _ in SWEEPS if n not in {s[0] for s in present}]
     text = ""
     if present:
-        columns = 2
+        columns = 2 if len(present) > 1 else 1  # one sweep fits a column
         rows_n = math.ceil(len(present) / columns)
-        fig, axes = plt.subplots(rows_n, columns, figsize=(7, 2.6 * rows_n), squeeze=False)
+        fig, axes = plt.subplots(rows_n, columns, figsize=(3.5 * columns, 2.6 * rows_n),
+                                 squeeze=False)
         for ax, (name, parameter, label, rows) in zip(axes.flat, present):
             for experiment in rows.experiment.unique():
                 mine = rows[rows.experiment == experiment].copy()
@@ -189,7 +190,9 @@ def parameter_sweeps(out, sweeps):
         fig.tight_layout()
         fig.savefig(os.path.join(out, "sweeps.pdf"))
         plt.close(fig)
-        text = figure("figure*", "\\includegraphics[width=\\textwidth]{sweeps.pdf}\n",
+        wide = columns > 1
+        text = figure("figure*" if wide else "figure",
+                      f"\\includegraphics[width=\\{'textwidth' if wide else 'columnwidth'}]{{sweeps.pdf}}\n",
                       "Parameter sweeps: translation error of the object of interest against each "
                       "parameter (95\\% intervals over seeds).", "fig:sweeps")
     if missing_sweeps:

@@ -2,7 +2,9 @@
 # Quick-start command 1: set up, then run the main job: reproduce the paper's simulated
 # experiments (every estimator, 5 seeds, 5000 + 5000 particles), print Table I beside the paper's
 # numbers and write per-frame CSVs, summary.json and figures under results/; then the real-video
-# benchmark (OpenCV's sample clips through `opf detect`, with dropouts) into results/real_video/.
+# benchmark (OpenCV's sample clips through `opf detect`, with dropouts) into results/real_video/;
+# last, the notebooks executed against these results into results/notebooks/ (.ipynb and .html;
+# about 30 s; the sweeps, not run here, are skipped there with the command that runs them).
 # Extra arguments go to `opf reproduce` (see `build/bin/opf reproduce --help`).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -16,3 +18,5 @@ echo
 OPF="$repo/build/bin/opf" bash "$repo/experiments/real_video/run_real_video.sh" \
   "$repo/results/real_video"
 cat "$repo/results/real_video/table.md"
+echo
+bash "$repo/notebooks/run_notebooks.sh" "$repo/results/notebooks"

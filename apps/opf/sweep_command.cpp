@@ -30,7 +30,7 @@ std::vector<OptionSpec> specs() {
        "`opf run --preset`)"},
       {"jobs", "N", "runs at once, each on one thread (default: the machine's cores)"},
       {"list", "", "print the runs (and which are done) without running anything"},
-      {"plan", "", "print the runs as JSON (for experiments/Snakefile) without running anything"},
+      {"plan", "", "print the runs as JSON (for workflow/Snakefile) without running anything"},
       {"table-only", "", "write the table from the runs done so far, running nothing"},
   };
 }
@@ -43,7 +43,7 @@ constexpr const char* kSummary =
     "and prints the errors per configuration (mean +- std over seeds). Each run keeps\n"
     "its settings.yaml, log.txt and `opf run` outputs under <out>/<experiment>/...\n"
     "Exits 1 when a run failed (its log is named). --plan prints the runs as JSON\n"
-    "for workflow engines (experiments/Snakefile runs the same sweep on Snakemake).";
+    "for workflow engines (workflow/Snakefile runs the same sweep on Snakemake).";
 
 // The runs execute this very program, even when its file is rebuilt or deleted during the sweep
 // (the kernel keeps the running binary's inode for /proc/self/exe).

@@ -1,5 +1,5 @@
 #pragma once
-// A sweep's runs as JSON, for workflow engines (experiments/Snakefile): what each run writes, its
+// A sweep's runs as JSON, for workflow engines (workflow/Snakefile): what each run writes, its
 // settings and the `opf` arguments that run it, so the expansion lives in one place.
 
 #include "drivers/sweep_runs.h"

@@ -138,7 +138,7 @@ TEST_F(OpfSweep, SnakemakeWorkflowWritesTheSameTable) {
   const fs::path sweep = write_sweep(tiny_sweep("frames: 40\n"));
   ASSERT_EQ(run("sweep " + sweep.string() + " --out " + (dir_ / "direct").string()), 0) << err();
   const std::string command = "snakemake -s " + std::string(OPF_SOURCE_DIR) +
-                              "/experiments/Snakefile -d " + dir_.string() +
+                              "/workflow/Snakefile -d " + dir_.string() +
                               " --cores 2 --quiet --config sweep=" + sweep.string() +
                               " out=" + (dir_ / "workflow").string() + " opf=" + kOpf + " >" +
                               (dir_ / "snakemake.log").string() + " 2>&1";
