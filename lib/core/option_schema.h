@@ -2,7 +2,7 @@
 // The one description of an options struct. Beside each struct, a describe_options(visitor,
 // options) names every field by its settings-file key, with the values it admits, once; visitors
 // walk that description to check a struct (check_options below, behind every validate()), to read
-// a settings file (io/option_reader.h), to dump the effective settings and to list the fields
+// a settings file (io/yaml_option_reader.h), to dump the effective settings and to list the fields
 // (tests). A range is therefore written in one place, and the reader, the constructors and the
 // shipped settings file cannot disagree about it.
 //
