@@ -170,7 +170,7 @@ def runs_or_skip(results, experiment):
     """`<experiment>_runs.csv` (load_runs), or None with a note."""
     return load_or_skip(os.path.join(results, experiment + "_runs.csv"),
                         f"{experiment} (runs)", results_command(results),
-                        lambda path: pd.read_csv(path))
+                        lambda path: load_runs(results, experiment))
 
 
 def frames_or_skip(results, experiment):

@@ -213,9 +213,8 @@ void write_line_chart(const std::filesystem::path& path, const LineChart& chart)
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return chart.series[a].width > chart.series[b].width;
   });
-  cv::Mat lines = image(plot).clone();  // lines are clipped to the plot
-  cv::Mat canvas(image.size(), image.type(), cv::Scalar(255, 255, 255));
-  lines.copyTo(canvas(plot));
+  // Drawn on a copy of which only the plot goes back: the lines are clipped to the plot.
+  cv::Mat canvas = image.clone();
   for (const std::size_t k : order) {
     const ChartSeries& s = chart.series[k];
     const cv::Scalar colour(s.b, s.g, s.r);
