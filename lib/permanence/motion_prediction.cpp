@@ -522,7 +522,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   prediction.measured_orientation = history.back().measured_orientation.normalized();
 
   // Translation, axis by axis (a pedestrian walks across the image while the depth read from its
-  // size only jitters): each model's best window on that axis, then the inverse-error weights.
+  // size only jitters): every model and window scored on that axis, then the inverse-error
+  // weights.
   struct Scored {
     TranslationModel model;
     Candidate candidate;
@@ -542,15 +543,25 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     for (int axis = 0; axis < 3; ++axis) {
       // Off the gravity's axes ballistic flight is constant velocity: not a model of its own.
       if (candidate.ballistic && gravity_of(options)(axis) == 0.0) continue;
+      auto& on_axis = scored[static_cast<std::size_t>(axis)];
+      // Every window of a model joins the combination: picking one window by a score over a few
+      // origins chases noise (on real hand-held motion the pick swung between 0.2 and 1.6 s from
+      // one occlusion to the next), while weighting them all by their scores does not. Ballistic
+      // flight, all or nothing, keeps its best window only.
+      if (!candidate.ballistic) {
+        for (std::size_t w = 0; w < by_window.size(); ++w)
+          if (by_window[w].valid)
+            on_axis.push_back({model, candidate, options.fit_windows[w], by_window[w]});
+        continue;
+      }
       std::size_t best = by_window.size();
       for (std::size_t w = 0; w < by_window.size(); ++w)
         if (by_window[w].valid &&
             (best == by_window.size() ||
              by_window[w].mean_squared(axis) < by_window[best].mean_squared(axis)))
           best = w;
-      if (best == by_window.size()) continue;
-      scored[static_cast<std::size_t>(axis)].push_back(
-          {model, candidate, options.fit_windows[best], by_window[best]});
+      if (best != by_window.size())
+        on_axis.push_back({model, candidate, options.fit_windows[best], by_window[best]});
     }
   }
   // The kept fits, one per (model, window): the robust fit reweights each axis on its own, so one
@@ -633,7 +644,9 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       prediction.translation_models.begin(), prediction.translation_models.end(),
       [](TranslationModel a, TranslationModel b) { return complexity(a) < complexity(b); });
 
-  // Rotation: constant orientation and constant angular velocity, combined the same way.
+  // Rotation: constant orientation and constant angular velocity, each with its best window (its
+  // windows averaged instead lost 10-30% of the hidden rotation error on the real clips), combined
+  // the same way.
   std::vector<Scored> rotation_scored;
   for (const int order : {0, 1}) {
     std::size_t best = options.fit_windows.size();

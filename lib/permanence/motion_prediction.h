@@ -10,11 +10,12 @@
 // about the recent axis (a rotation vector growing linearly in the body frame). Each candidate is
 // scored the way it will be used: fitted on the history up to an earlier origin, anchored at the
 // filter's estimate there, and asked to predict the measurements up to a horizon after it, from
-// origins spread over the last second (rolling-origin validation). Each model's best window is
-// refitted at the onset, and the models are combined with weights inversely proportional to
-// their validation errors (Bates and Granger): no single lucky score decides, and a model that
-// predicts well dominates. The combination's validation errors, against the time they were
-// predicted ahead, give the growth of the prediction's variance.
+// origins spread over the last second (rolling-origin validation). Every fit of a translation
+// model (ballistic flight: its best window; rotation: each model's best window) is refitted at
+// the onset, and they are combined with weights inversely proportional to their validation errors
+// (Bates and Granger): no single lucky score decides, and a model that predicts well dominates. The
+// combination's validation errors, against the time they were predicted ahead, give the growth of
+// the prediction's variance.
 
 #include "opf/core/enum_names.h"
 #include "opf/core/option_schema.h"
