@@ -573,8 +573,10 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   };
   std::vector<Fitted> fitted;
   const auto fit_of = [&](const Scored& m) -> const LocalPolynomial* {
+    // Holding still predicts the same from every window (it does not settle onto its fit): one
+    // fit serves them all.
     for (const Fitted& f : fitted)
-      if (f.model == m.model && f.window == m.window) return &f.fit;
+      if (f.model == m.model && (f.window == m.window || m.candidate.order == 0)) return &f.fit;
     LocalPolynomial fit;
     const Eigen::Vector3d acceleration =
         m.candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
@@ -626,7 +628,10 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     // half-covered object), so they join the errors the growth is fitted to.
     for (std::size_t k = kept; k < all.size(); ++k) {
       double predicted = 0.0;
-      for (const WeightedFit& m : fits) predicted += m.weight * m.fit.value(all[k].t)(axis);
+      // As position() moves the estimate: a fitted motion along its track, holding still not
+      // at all (not to its window's mean).
+      for (const WeightedFit& m : fits)
+        predicted += m.weight * m.fit.value(m.settles ? all[k].t : s.t.back())(axis);
       Eigen::Vector3d error = Eigen::Vector3d::Zero();
       error(axis) =
           history.back().measured_position(axis) + predicted - all[k].measured_position(axis);

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The real-video benchmark script on one clip (box.mp4 from opencv-doc), one seed, three
+# placements of the dropout windows: the detections, both dropped logs, one phases.csv row per
+# dropout, placement and estimator, the first placement equal to the main table's run (same
+# windows, same seed), the other placements shifted by period / 3, and the placements' table.
+#   bash tests/real_video/benchmark_script.sh SOURCE_DIR OPF
+set -euo pipefail
+source_dir="$1"
+opf="$2"
+out="$(mktemp -d)"
+trap 'rm -rf "$out"' EXIT
+OPF="$opf" CLIPS=box SEEDS=1 ESTIMATORS=opf,cvkf PHASES=3 \
+  bash "$source_dir/experiments/real_video/run_real_video.sh" "$out" >"$out/run.log" 2>&1 ||
+  { cat "$out/run.log" >&2; exit 1; }
+fail() { echo "benchmark script: $*" >&2; exit 1; }
+for f in box.csv box_0.3.csv box_0.6.csv phases.csv table.md; do
+  [ -s "$out/$f" ] || fail "no $f"
+done
+rows="$(($(wc -l <"$out/phases.csv") - 1))"
+[ "$rows" -eq 12 ] || fail "phases.csv has $rows rows, expected 2 dropouts x 3 placements x 2 estimators"
+# The placements start 1 s after the track begins, then every 2 s / 3 later.
+starts="$(awk -F, 'NR > 1 && $5 == "opf" && $2 == "0.3" { printf "%s ", $4 }' "$out/phases.csv")"
+t0="$(awk -F, 'NR == 2 { print $1; exit }' "$out/box.csv")"
+expected="$(awk -v t="$t0" 'BEGIN { for (k = 0; k < 3; k++) printf "%.9g ", t + 1 + k * 2 / 3 }')"
+[ "$starts" = "$expected" ] || fail "placements start at '$starts', expected '$expected'"
+# The first placement is the main table's run: the same hidden error, printed to 5 decimals.
+for estimator in opf cvkf; do
+  main="$(awk -v e="$estimator" '$1 == e && NF == 7 { print $2 }' "$out/box_0.3.txt")"
+  phase0="$(awk -F, -v e="$estimator" 'NR > 1 && $2 == "0.3" && $3 == 0 && $5 == e {
+    printf "%.5f", $6 }' "$out/phases.csv")"
+  [ -n "$main" ] && [ "$main" = "$phase0" ] ||
+    fail "$estimator: first placement $phase0, main table $main"
+done
+grep -q '^## Hidden translation error \[m\] over 3 placements' "$out/table.md" ||
+  fail "no placements table in table.md"
+grep -Eq '^\| box \| 0\.6 s \| [0-9.]+ \| [0-9.]+ \| [0-3] of 3 \|$' "$out/table.md" ||
+  fail "no box 0.6 s row in the placements table"
+echo "real-video benchmark script: $rows placement rows, first placement = main run"
