@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -598,10 +599,13 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     Validation combined = candidates.front().validation;
     for (auto& e : combined.errors) e.setZero();
     const double noise = position_noise(axis);
-    double floor = 0.0, heaviest = -1.0;
+    double floor = 0.0;
+    // The reported model: the one whose windows together weigh the most.
+    std::map<TranslationModel, double> model_weights;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
       if (!(weights[c] > 0.0)) continue;
       const Scored& m = candidates[c];
+      model_weights[m.model] += weights[c];
       WeightedFit wf;
       wf.weight = weights[c];
       wf.window = m.window;
@@ -614,12 +618,13 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       if (m.candidate.order >= 1 || m.candidate.ballistic)
         floor += weights[c] *
                  velocity_variance_floor(wf.fit.residual_variance(axis), wf.fit.samples, m.window);
-      if (weights[c] > heaviest) {
-        heaviest = weights[c];
-        prediction.translation_models[static_cast<std::size_t>(axis)] = m.model;
-      }
       fits.push_back(std::move(wf));
     }
+    const auto heaviest =
+        std::max_element(model_weights.begin(), model_weights.end(),
+                         [](const auto& a, const auto& b) { return a.second < b.second; });
+    if (heaviest != model_weights.end())
+      prediction.translation_models[static_cast<std::size_t>(axis)] = heaviest->first;
     double sum = 0.0;
     for (const auto& e : combined.errors) sum += e(axis) * e(axis);
     squared_score += sum / static_cast<double>(std::max<std::size_t>(combined.errors.size(), 1));

@@ -143,8 +143,8 @@ struct MotionPrediction {
   std::array<std::vector<WeightedFit>, 3> translation;
   /// Rotation vectors in the body frame of the last measured orientation.
   std::vector<WeightedFit> rotation;
-  /// The models with the largest weights: per axis, the most elaborate of those, and for
-  /// rotation (for reports).
+  /// For reports: per axis the model whose windows weigh the most, the most elaborate of the
+  /// three, and the rotation model with the largest weight.
   std::array<TranslationModel, 3> translation_models{};
   TranslationModel translation_model = TranslationModel::kConstantPosition;
   RotationModel rotation_model = RotationModel::kConstantOrientation;
