@@ -137,7 +137,7 @@ out, seeds, phases, period = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3]
 dropouts = sys.argv[5:]
 clips = os.environ["CLIPS_RAN"].split()
 lines = ["# Real-video benchmark", "",
-         f"Dropouts every 2 s, the first 1 s after the track begins; {seeds} seeds; "
+         f"Dropouts every {period} s, the first 1 s after the track begins; {seeds} seeds; "
          "ground truth = the detections themselves (the log before the dropouts).", "",
          "```", *out.joinpath("summary.txt").read_text().splitlines(), "```", ""]
 cell_start = re.compile(r"(?:^|(?<=\s\s))\S")

@@ -537,10 +537,21 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   const Eigen::Vector3d position_wander = wander_intensity(s.t, s.position);
   const double rotation_wander = wander_intensity(s.t, s.rotation).mean();
   for (const auto& [model, candidate] : translation_candidates) {
+    // Holding still predicts the same from every window it can be fitted on (it does not settle
+    // onto its fit): a window at least as long as one already validated reuses that validation.
+    // It is still counted once per window, as every other model is.
     std::vector<Validation> by_window;
-    for (const double window : options.fit_windows)
+    std::optional<std::size_t> still;  // the first window holding still was validated on
+    for (std::size_t w = 0; w < options.fit_windows.size(); ++w) {
+      const double window = options.fit_windows[w];
+      if (candidate.order == 0 && still && window >= options.fit_windows[*still]) {
+        by_window.push_back(by_window[*still]);
+        continue;
+      }
       by_window.push_back(
           validate_translation(thinned, coarse, origins, horizon, candidate, window, options));
+      if (candidate.order == 0 && !still && by_window.back().valid) still = w;
+    }
     for (int axis = 0; axis < 3; ++axis) {
       // Off the gravity's axes ballistic flight is constant velocity: not a model of its own.
       if (candidate.ballistic && gravity_of(options)(axis) == 0.0) continue;
@@ -574,8 +585,7 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   };
   std::vector<Fitted> fitted;
   const auto fit_of = [&](const Scored& m) -> const LocalPolynomial* {
-    // Holding still predicts the same from every window (it does not settle onto its fit): one
-    // fit serves them all.
+    // Holding still: one fit serves every window (see the validation above).
     for (const Fitted& f : fitted)
       if (f.model == m.model && (f.window == m.window || m.candidate.order == 0)) return &f.fit;
     LocalPolynomial fit;
