@@ -36,9 +36,11 @@ std::vector<MotionSample> history(double rate, double seconds) {
   return samples;
 }
 
+// Second argument: the wandering velocity's filters on (the default) or off, to see their cost.
 void BM_PredictMotion(benchmark::State& state) {
   const auto samples = history(static_cast<double>(state.range(0)), 2.0);
-  const MotionPredictionOptions options;
+  MotionPredictionOptions options;
+  options.wandering_velocity = state.range(1) != 0;
   for (auto _ : state) {
     auto prediction = predict_motion(samples, options);
     benchmark::DoNotOptimize(prediction);
@@ -46,10 +48,8 @@ void BM_PredictMotion(benchmark::State& state) {
   state.counters["samples"] = static_cast<double>(samples.size());
 }
 BENCHMARK(BM_PredictMotion)
-    ->ArgName("rate_hz")
-    ->Arg(10)
-    ->Arg(30)
-    ->Arg(100)
+    ->ArgNames({"rate_hz", "wandering"})
+    ->ArgsProduct({{10, 30, 100}, {1, 0}})
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "opf/permanence/motion_prediction.h"
 
 #include "opf/core/so3.h"
+#include "opf/fit/wandering_velocity.h"
 #include "opf/permanence/second_difference_noise.h"
 
 #include <Eigen/Cholesky>
@@ -9,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -49,6 +51,7 @@ constexpr double kValidationPeriod = 1.0 / 30.0;  // s: the validation's thinned
 struct Candidate {
   int order = 0;
   bool ballistic = false;
+  bool wandering = false;  ///< a constant-velocity Kalman filter, not a fitted polynomial
 };
 
 // Times, positions relative to the last measurement, and body-frame rotation vectors relative to
@@ -141,7 +144,8 @@ Eigen::Vector3d gravity_of(const MotionPredictionOptions& options) {
 Validation validate_translation(std::span<const MotionSample> history, const Series& s,
                                 std::span<const std::size_t> origins, double horizon,
                                 const Candidate& candidate, double window,
-                                const MotionPredictionOptions& options) {
+                                const MotionPredictionOptions& options,
+                                std::span<const WanderingVelocityState> wandering = {}) {
   Validation v;
   v.reserve(origins, s.t, horizon);
   const Eigen::Vector3d acceleration =
@@ -150,11 +154,16 @@ Validation validate_translation(std::span<const MotionSample> history, const Ser
   for (const std::size_t o : origins) {
     LocalPolynomial fit;
     const double t_o = s.t[o];
-    if (!fit_local_polynomial(s.t, s.position, t_o - window, t_o, candidate.order, acceleration,
-                              std::min(options.robust_iterations, kValidationRobustIterations),
-                              fit))
-      return v;
-    shrink_rate(fit, window);
+    if (candidate.wandering) {
+      if (o < 2) return v;  // the filter's velocity needs a correction behind it
+      fit = wandering[o].line;
+    } else {
+      if (!fit_local_polynomial(s.t, s.position, t_o - window, t_o, candidate.order, acceleration,
+                                std::min(options.robust_iterations, kValidationRobustIterations),
+                                fit))
+        return v;
+      shrink_rate(fit, window);
+    }
     // Anchored at the filter's estimate at the origin and settling onto the fit, as the
     // prediction is at onset.
     const Eigen::Vector3d anchor = history[o].estimated_position - last;
@@ -315,16 +324,20 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
        lag = lag < kEveryWanderLag ? lag + 1 : std::max(lag + 1, (5 * lag + 2) / 4))
     ladder.push_back(lag);
   ladder.push_back(lags);
+  // On a log faster than 30 Hz, a lag of `stride` frames or more takes every stride-th centre
+  // only: its neighbouring differences share most of their samples (they say little more), and
+  // each lag's two medians are the cost that grows with the rate.
+  const Eigen::Index stride = std::max<Eigen::Index>(1, std::lround(kValidationPeriod / period));
   for (int axis = 0; axis < 3; ++axis) {
-    // Weighted least squares of V(L) = c + b L^3 with weights (n - 2L) / V(L)^2.
+    // Weighted least squares of V(L) = c + b L^3 with weights (values used) / V(L)^2.
     double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     std::vector<double> d, deviation;
     for (const Eigen::Index lag : ladder) {
-      const Eigen::Index count = n - 2 * lag;
+      const Eigen::Index step = lag < stride ? 1 : stride;
       d.clear();
-      for (Eigen::Index k = lag; k + lag < n; ++k)
+      for (Eigen::Index k = lag; k + lag < n; k += step)
         d.push_back(values(axis, k + lag) - 2.0 * values(axis, k) + values(axis, k - lag));
-      const double c = static_cast<double>(count);
+      const double c = static_cast<double>(d.size());
       // A robust variance (1.4826 MAD, squared) about the median: a single manoeuvre (a ball
       // that starts rolling) gives a few large differences and must not read as a wander that
       // goes on; a wander that goes on moves them all.
@@ -576,18 +589,58 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
         on_axis.push_back({model, candidate, options.fit_windows[best], by_window[best]});
     }
   }
+  // The wandering velocity, at each memory: the filter run once over the thinned history gives its
+  // state at every validation origin. Its `window` is the memory's fraction. The filter steps from
+  // sample to sample, so it needs the times to increase (two measurements at one time are left to
+  // the fits).
+  const bool increasing =
+      std::adjacent_find(s.t.begin(), s.t.end(), std::greater_equal<>()) == s.t.end();
+  if (options.wandering_velocity && increasing)
+    for (const double fraction : options.wander_memories) {
+      const Eigen::Vector3d intensity = position_wander / std::pow(fraction, 4);
+      const std::vector<WanderingVelocityState> tracks =
+          wandering_velocity_filter(coarse.t, coarse.position, position_noise, intensity);
+      const Candidate candidate{1, false, true};
+      const Validation v = validate_translation(thinned, coarse, origins, horizon, candidate,
+                                                fraction, options, tracks);
+      if (!v.valid) continue;
+      for (auto& on_axis : scored)
+        on_axis.push_back({TranslationModel::kConstantVelocity, candidate, fraction, v});
+    }
   // The kept fits, one per (model, window): the robust fit reweights each axis on its own, so one
   // fit serves every axis that chose that model and window.
   struct Fitted {
     TranslationModel model;
+    bool wandering;
     double window;
     LocalPolynomial fit;
+    Eigen::Vector3d rate_variance;  ///< per axis: how well the fit knows its velocity
   };
   std::vector<Fitted> fitted;
-  const auto fit_of = [&](const Scored& m) -> const LocalPolynomial* {
+  std::optional<Eigen::Vector3d> read_rate_variance;  // the wandering velocity's at the read memory
+  const auto fit_of = [&](const Scored& m) -> const Fitted* {
     // Holding still: one fit serves every window (see the validation above).
     for (const Fitted& f : fitted)
-      if (f.model == m.model && (f.window == m.window || m.candidate.order == 0)) return &f.fit;
+      if (f.model == m.model && f.wandering == m.candidate.wandering &&
+          (f.window == m.window || m.candidate.order == 0))
+        return &f;
+    if (m.candidate.wandering) {
+      const WanderingVelocityState last =
+          wandering_velocity_filter(s.t, s.position, position_noise,
+                                    position_wander / std::pow(m.window, 4))
+              .back();
+      // How well the velocity can be known is the read memory's filter's variance (the best
+      // estimate under the motion read from the history); a shorter memory's own is larger
+      // because it assumes a wilder motion than was read.
+      if (m.window == 1.0) read_rate_variance = last.rate_variance;
+      if (!read_rate_variance)
+        read_rate_variance =
+            wandering_velocity_filter(s.t, s.position, position_noise, position_wander)
+                .back()
+                .rate_variance;
+      fitted.push_back({m.model, true, m.window, last.line, *read_rate_variance});
+      return &fitted.back();
+    }
     LocalPolynomial fit;
     const Eigen::Vector3d acceleration =
         m.candidate.ballistic ? gravity_of(options) : Eigen::Vector3d::Zero();
@@ -595,8 +648,13 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
                               acceleration, options.robust_iterations, fit))
       return nullptr;
     shrink_rate(fit, m.window);
-    fitted.push_back({m.model, m.window, std::move(fit)});
-    return &fitted.back().fit;
+    Eigen::Vector3d rate_variance = Eigen::Vector3d::Zero();
+    if (m.candidate.order >= 1 || m.candidate.ballistic)
+      for (int axis = 0; axis < 3; ++axis)
+        rate_variance(axis) =
+            velocity_variance_floor(fit.residual_variance(axis), fit.samples, m.window);
+    fitted.push_back({m.model, false, m.window, std::move(fit), rate_variance});
+    return &fitted.back();
   };
   double squared_score = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
@@ -620,14 +678,12 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       wf.weight = weights[c];
       wf.window = m.window;
       wf.settles = m.candidate.order >= 1;
-      const LocalPolynomial* fit = fit_of(m);
+      const Fitted* fit = fit_of(m);
       if (!fit) return std::nullopt;
-      wf.fit = *fit;
+      wf.fit = fit->fit;
       for (std::size_t j = 0; j < combined.errors.size(); ++j)
         combined.errors[j](axis) += weights[c] * m.validation.errors[j](axis);
-      if (m.candidate.order >= 1 || m.candidate.ballistic)
-        floor += weights[c] *
-                 velocity_variance_floor(wf.fit.residual_variance(axis), wf.fit.samples, m.window);
+      floor += weights[c] * fit->rate_variance(axis);
       fits.push_back(std::move(wf));
     }
     const auto heaviest =

@@ -77,6 +77,17 @@ struct MotionPredictionOptions {
   /// after 0.5 s), but on real hand-held and walking motion it earns its weight (the real-video
   /// benchmark loses a third without it).
   bool constant_acceleration = true;
+  /// Try a constant velocity that wanders (the constant-velocity Kalman filter's model, a filter
+  /// per axis over the history) as a model: its random acceleration is the one read from the
+  /// history (the intensity the prediction's uncertainty grows with) and its noise the
+  /// measurements'. Where a line over a fixed window weighs its samples alike, the filter weighs
+  /// the newest most, which hand-moved objects follow best.
+  bool wandering_velocity = true;
+  /// The wandering velocity's memories, as fractions of the one the history implies: each
+  /// fraction f is one more candidate whose random acceleration is the read one over f^4 (it
+  /// forgets 1 / f times faster). The read intensity is a lower bound (it must stand a standard
+  /// error above zero), hence the shorter memories, doubling as the fit windows do.
+  std::vector<double> wander_memories = {1.0, 0.5, 0.25};
   double gravity = 9.81;                          ///< m/s^2
   Eigen::Vector3d up = Eigen::Vector3d::UnitZ();  ///< world axis opposite to gravity
   /// Multiplies the predicted standard deviations: validation errors of the chosen model are
@@ -107,6 +118,8 @@ void describe_options(Visitor& v, MotionPredictionOptions& o) {
            non_negative("seconds >= 0 (0: every validation origin alike)"));
   v.flag("ballistic", o.ballistic);
   v.flag("constant_acceleration", o.constant_acceleration);
+  v.flag("wandering_velocity", o.wandering_velocity);
+  v.numbers("wander_memories", o.wander_memories, positive("positive fractions"));
   v.number("gravity", o.gravity, non_negative("m/s^2 >= 0"));
   v.vector3("up", o.up);
   v.number("uncertainty_scale", o.uncertainty_scale, positive());
@@ -128,7 +141,8 @@ struct MotionSample {
 struct WeightedFit {
   double weight = 0.0;
   LocalPolynomial fit;
-  double window = 0.0;  ///< s of history it was fitted to
+  double window =
+      0.0;  ///< s of history it was fitted to; a wandering velocity: its memory fraction
   /// A fitted motion (order >= 1) says where the object is now, and the prediction settles onto
   /// its track; a constant model's track is the mean of its window, which a moving object has
   /// left.

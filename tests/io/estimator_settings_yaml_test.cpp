@@ -210,6 +210,8 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
       "    validation_memory: 0\n"
       "    ballistic: false\n"
       "    constant_acceleration: false\n"
+      "    wandering_velocity: false\n"
+      "    wander_memories: [1, 0.3]\n"
       "    gravity: 9.8\n"
       "    up: [0, 1, 0]\n"
       "    uncertainty_scale: 2.0\n"
@@ -229,6 +231,8 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   EXPECT_EQ(m.validation_memory, 0.0);
   EXPECT_FALSE(m.ballistic);
   EXPECT_FALSE(m.constant_acceleration);
+  EXPECT_FALSE(m.wandering_velocity);
+  EXPECT_EQ(m.wander_memories, (std::vector<double>{1.0, 0.3}));
   EXPECT_EQ(m.gravity, 9.8);
   EXPECT_EQ(m.up, Eigen::Vector3d(0, 1, 0));
   EXPECT_EQ(m.uncertainty_scale, 2.0);
@@ -239,6 +243,8 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   EXPECT_EQ(d.opf.dynamics.selection.validation_memory, 0.5);
   EXPECT_EQ(error_of("opf:\n  dynamics:\n    validation_memory: -1\n").field(),
             "opf.dynamics.validation_memory");
+  EXPECT_EQ(error_of("opf:\n  dynamics:\n    wander_memories: [1, 0]\n").field(),
+            "opf.dynamics.wander_memories");
 }
 
 TEST(EstimatorSettingsYaml, ParticleOptionsAreSharedNotPerEstimator) {
