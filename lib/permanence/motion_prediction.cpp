@@ -369,32 +369,76 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
 }
 
 // Bates-Granger weights: inversely proportional to each candidate's mean squared validation error
-// (on `axis`, or over all axes for axis < 0) in excess of the measurement noise `noise`, which
-// every candidate's validation errors carry alike (they are against measurements): without the
-// subtraction, noise-dominated scores would weigh a good model and a noise-fitting one evenly.
-// The excess is floored at a tenth of the noise. An exact candidate (zero error) takes it all.
-// A candidate marked `all_or_nothing` (free flight: an object flies or it does not) gets no weight
-// unless it is the best: a few percent of gravity would drop a resting object 0.4 m in 1.5 s.
-template <class Scored, class AllOrNothing>
-std::vector<double> inverse_error_weights(const std::vector<Scored>& candidates, int axis,
-                                          double noise, AllOrNothing all_or_nothing) {
-  std::vector<double> excess(candidates.size());
+// `mse` in excess of the measurement noise `noise`, which every candidate's validation errors
+// carry alike (they are against measurements): without the subtraction, noise-dominated scores
+// would weigh a good model and a noise-fitting one evenly. The excess is floored at a tenth of the
+// noise. An exact candidate (zero error) takes it all. `barred(i, best)` returns true for a
+// candidate that gets no weight (free flight unless it is the best: an object flies or it does
+// not, and a few percent of gravity would drop a resting object 0.4 m in 1.5 s).
+template <class Barred>
+std::vector<double> inverse_error_weights(const std::vector<double>& mse, double noise,
+                                          Barred barred) {
+  std::vector<double> excess(mse.size());
   double smallest = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const double mse = axis < 0 ? candidates[i].validation.mean_squared()
-                                : candidates[i].validation.mean_squared(axis);
-    excess[i] = std::max(mse - noise, 0.1 * noise);
+  for (std::size_t i = 0; i < mse.size(); ++i) {
+    excess[i] = std::max(mse[i] - noise, 0.1 * noise);
     smallest = std::min(smallest, excess[i]);
   }
-  std::vector<double> weights(candidates.size(), 0.0);
+  std::vector<double> weights(mse.size(), 0.0);
   double total = 0.0;
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
+  for (std::size_t i = 0; i < mse.size(); ++i) {
     // Relative to the smallest, so an exact fit (excess 0) is a clean 1 and the rest 0.
     weights[i] = smallest > 0.0 ? smallest / excess[i] : (excess[i] == 0.0 ? 1.0 : 0.0);
-    if (all_or_nothing(candidates[i]) && excess[i] > smallest) weights[i] = 0.0;
+    if (barred(i, !(excess[i] > smallest))) weights[i] = 0.0;
     total += weights[i];
   }
-  for (double& w : weights) w /= total;
+  if (total > 0.0)
+    for (double& w : weights) w /= total;
+  return weights;
+}
+
+// Each candidate's share at each horizon node k (k + 1 steps ahead): the inverse-error weights of
+// its validation errors made at most that far ahead. A model that follows the newest motion best
+// (a hand's) need not be the one that holds longest (a walker's depth, which only jitters about
+// its mean): the prediction uses each where it predicted best. Cumulative, so that every node's
+// score rests on many errors, and the last node's is the overall one. Free flight keeps its
+// overall verdict (`overall`), all or nothing.
+template <class Scored>
+std::vector<std::vector<double>> weights_by_horizon(const std::vector<Scored>& candidates,
+                                                    const std::vector<double>& overall,
+                                                    const std::vector<std::size_t>& node_of,
+                                                    int axis, double noise) {
+  std::size_t nodes = 0;
+  for (const std::size_t k : node_of) nodes = std::max(nodes, k + 1);
+  const std::size_t n = candidates.size();
+  // Per node, each candidate's recency-weighted squared errors on `axis` and the weights' sum: the
+  // candidates share the origins, hence the weights.
+  std::vector<std::vector<double>> squares(nodes, std::vector<double>(n, 0.0));
+  std::vector<double> counts(nodes, 0.0);
+  const std::vector<double>& recency = candidates.front().validation.weights;
+  for (std::size_t j = 0; j < node_of.size(); ++j) {
+    counts[node_of[j]] += recency[j];
+    for (std::size_t c = 0; c < n; ++c) {
+      const double e = candidates[c].validation.errors[j](axis);
+      squares[node_of[j]][c] += recency[j] * e * e;
+    }
+  }
+  std::vector<std::vector<double>> weights;
+  std::vector<double> sums(n, 0.0);
+  double count = 0.0;
+  for (std::size_t k = 0; k < nodes; ++k) {
+    count += counts[k];
+    for (std::size_t c = 0; c < n; ++c) sums[c] += squares[k][c];
+    if (!(count > 0.0)) {
+      weights.push_back(overall);
+      continue;
+    }
+    std::vector<double> mse(n);
+    for (std::size_t c = 0; c < n; ++c) mse[c] = sums[c] / count;
+    weights.push_back(inverse_error_weights(mse, noise, [&](std::size_t c, bool) {
+      return candidates[c].candidate.ballistic && !(overall[c] > 0.0);
+    }));
+  }
   return weights;
 }
 
@@ -455,10 +499,21 @@ Eigen::Vector3d MotionPrediction::position(double h) const {
       const double now = m.fit.value(t_last)(axis);
       const double settling = m.settles ? settled(h, settle_time) : 0.0;
       const double offset = measured_position(axis) + now - anchor_position(axis);
-      p(axis) += m.weight * (m.fit.value(t)(axis) - now + settling * offset);
+      p(axis) += weight_at(m, t) * (m.fit.value(t)(axis) - now + settling * offset);
     }
   }
   return p;
+}
+
+double MotionPrediction::weight_at(const WeightedFit& model, double t) const {
+  const std::vector<double>& w = model.weight_by_horizon;
+  if (w.empty() || !(horizon_step > 0.0)) return model.weight;
+  const double x = (t - t_fitted) / horizon_step - 1.0;  // the node index, fractional
+  if (!(x > 0.0)) return w.front();
+  const auto k = static_cast<std::size_t>(x);
+  if (k + 1 >= w.size()) return w.back();
+  const double f = x - static_cast<double>(k);
+  return (1.0 - f) * w[k] + f * w[k + 1];
 }
 
 Eigen::Quaterniond MotionPrediction::orientation(double h) const {
@@ -470,7 +525,7 @@ Eigen::Quaterniond MotionPrediction::orientation(double h) const {
     const double settling = m.settles ? settled(h, settle_time) : 0.0;
     const Eigen::Vector3d offset =
         so3::difference(anchor_orientation, measured_orientation * so3::exp(now));
-    turn += m.weight * (settling * offset + m.fit.value(t_last + h) - now);
+    turn += weight_at(m, t_last + h) * (settling * offset + m.fit.value(t_last + h) - now);
   }
   return (anchor_orientation * so3::exp(turn)).normalized();
 }
@@ -595,11 +650,14 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   // the fits).
   const bool increasing =
       std::adjacent_find(s.t.begin(), s.t.end(), std::greater_equal<>()) == s.t.end();
+  // A memory fraction f forgets 1 / f times faster: the read intensity over f^4.
+  const auto wander_at = [&](double fraction) -> Eigen::Vector3d {
+    return position_wander / std::pow(fraction, 4);
+  };
   if (options.wandering_velocity && increasing)
     for (const double fraction : options.wander_memories) {
-      const Eigen::Vector3d intensity = position_wander / std::pow(fraction, 4);
       const std::vector<WanderingVelocityState> tracks =
-          wandering_velocity_filter(coarse.t, coarse.position, position_noise, intensity);
+          wandering_velocity_filter(coarse.t, coarse.position, position_noise, wander_at(fraction));
       const Candidate candidate{1, false, true};
       const Validation v = validate_translation(thinned, coarse, origins, horizon, candidate,
                                                 fraction, options, tracks);
@@ -626,9 +684,7 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
         return &f;
     if (m.candidate.wandering) {
       const WanderingVelocityState last =
-          wandering_velocity_filter(s.t, s.position, position_noise,
-                                    position_wander / std::pow(m.window, 4))
-              .back();
+          wandering_velocity_filter(s.t, s.position, position_noise, wander_at(m.window)).back();
       // How well the velocity can be known is the read memory's filter's variance (the best
       // estimate under the motion read from the history); a shorter memory's own is larger
       // because it assumes a wilder motion than was read.
@@ -656,17 +712,34 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     fitted.push_back({m.model, false, m.window, std::move(fit), rate_variance});
     return &fitted.back();
   };
+  prediction.t_fitted = s.t.back();
+  prediction.horizon_step =
+      (coarse.t.back() - coarse.t.front()) / static_cast<double>(coarse.t.size() - 1);
   double squared_score = 0.0;
   for (int axis = 0; axis < 3; ++axis) {
     auto& candidates = scored[static_cast<std::size_t>(axis)];
     if (candidates.empty()) return std::nullopt;
-    const std::vector<double> weights =
-        inverse_error_weights(candidates, axis, position_noise(axis),
-                              [](const Scored& m) { return m.candidate.ballistic; });
+    const double noise = position_noise(axis);
+    // Each validation error's horizon node: its horizon in steps of the thinned history.
+    std::vector<std::size_t> node_of;
+    if (options.weights_by_horizon)
+      for (const double h : candidates.front().validation.horizons)
+        node_of.push_back(
+            static_cast<std::size_t>(std::max(0L, std::lround(h / prediction.horizon_step) - 1)));
+    else
+      node_of.assign(candidates.front().validation.horizons.size(), 0);
+    std::vector<double> mse;
+    for (const Scored& m : candidates) mse.push_back(m.validation.mean_squared(axis));
+    const std::vector<double> weights = inverse_error_weights(
+        mse, noise,
+        [&](std::size_t c, bool best) { return candidates[c].candidate.ballistic && !best; });
+    const std::vector<std::vector<double>> node_weights =
+        options.weights_by_horizon ? weights_by_horizon(candidates, weights, node_of, axis, noise)
+                                   : std::vector<std::vector<double>>{weights};
     auto& fits = prediction.translation[static_cast<std::size_t>(axis)];
+    // The combination's validation errors, each made with the weights of its horizon.
     Validation combined = candidates.front().validation;
     for (auto& e : combined.errors) e.setZero();
-    const double noise = position_noise(axis);
     double floor = 0.0;
     // The reported model: the one whose windows together weigh the most.
     std::map<TranslationModel, double> model_weights;
@@ -676,13 +749,16 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       model_weights[m.model] += weights[c];
       WeightedFit wf;
       wf.weight = weights[c];
+      if (options.weights_by_horizon)
+        for (const std::vector<double>& at_node : node_weights)
+          wf.weight_by_horizon.push_back(at_node[c]);
       wf.window = m.window;
       wf.settles = m.candidate.order >= 1;
       const Fitted* fit = fit_of(m);
       if (!fit) return std::nullopt;
       wf.fit = fit->fit;
       for (std::size_t j = 0; j < combined.errors.size(); ++j)
-        combined.errors[j](axis) += weights[c] * m.validation.errors[j](axis);
+        combined.errors[j](axis) += node_weights[node_of[j]][c] * m.validation.errors[j](axis);
       floor += weights[c] * fit->rate_variance(axis);
       fits.push_back(std::move(wf));
     }
@@ -702,7 +778,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       // As position() moves the estimate: a fitted motion along its track, holding still not
       // at all (not to its window's mean).
       for (const WeightedFit& m : fits)
-        predicted += m.weight * m.fit.value(m.settles ? all[k].t : s.t.back())(axis);
+        predicted += prediction.weight_at(m, all[k].t) *
+                     m.fit.value(m.settles ? all[k].t : s.t.back())(axis);
       Eigen::Vector3d error = Eigen::Vector3d::Zero();
       error(axis) =
           history.back().measured_position(axis) + predicted - all[k].measured_position(axis);
@@ -741,8 +818,10 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
                                std::move(best_validation)});
   }
   if (rotation_scored.empty()) return std::nullopt;
+  std::vector<double> rotation_mse;
+  for (const Scored& m : rotation_scored) rotation_mse.push_back(m.validation.mean_squared());
   const std::vector<double> rotation_weights =
-      inverse_error_weights(rotation_scored, -1, rotation_noise, [](const auto&) { return false; });
+      inverse_error_weights(rotation_mse, rotation_noise, [](std::size_t, bool) { return false; });
   Validation combined = rotation_scored.front().validation;
   for (auto& e : combined.errors) e.setZero();
   const double noise = rotation_noise;

@@ -212,6 +212,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
       "    constant_acceleration: false\n"
       "    wandering_velocity: false\n"
       "    wander_memories: [1, 0.3]\n"
+      "    weights_by_horizon: false\n"
       "    gravity: 9.8\n"
       "    up: [0, 1, 0]\n"
       "    uncertainty_scale: 2.0\n"
@@ -233,6 +234,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   EXPECT_FALSE(m.constant_acceleration);
   EXPECT_FALSE(m.wandering_velocity);
   EXPECT_EQ(m.wander_memories, (std::vector<double>{1.0, 0.3}));
+  EXPECT_FALSE(m.weights_by_horizon);
   EXPECT_EQ(m.gravity, 9.8);
   EXPECT_EQ(m.up, Eigen::Vector3d(0, 1, 0));
   EXPECT_EQ(m.uncertainty_scale, 2.0);
