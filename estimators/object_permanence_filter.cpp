@@ -5,6 +5,7 @@
 #include "opf/core/so3.h"
 #include "opf/permanence/motion_classifier.h"
 #include "opf/permanence/occluder_selection.h"
+#include "opf/permanence/second_difference_noise.h"
 
 #include <algorithm>
 #include <cmath>
@@ -260,6 +261,39 @@ std::vector<TrajectorySample> ObjectPermanenceFilter::estimate_history() const {
   return window;
 }
 
+namespace {
+
+// Narrows the translation particles about their mean, per world axis, where the cloud is wider
+// than `scale` times what the history shows of the estimate's error (never widens it): the mean
+// squared distance between the estimates and the measurements, plus the detector's noise read
+// from the measurements (second_difference_noise.h). With e the estimate's error and n the
+// noise, E[e^2] = E[(e - n)^2] - sigma^2 + 2 E[e n] <= E[(e - n)^2] + sigma^2: a bound however
+// closely the estimate follows the measurements.
+void narrow_to_measured_discrepancy(PoseParticleFilter& filter,
+                                    std::span<const MotionSample> history, double scale) {
+  if (history.size() < 3) return;
+  Eigen::Matrix3Xd measured(3, static_cast<Eigen::Index>(history.size()));
+  Eigen::Vector3d squares = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < history.size(); ++k) {
+    measured.col(static_cast<Eigen::Index>(k)) = history[k].measured_position;
+    squares += (history[k].estimated_position - history[k].measured_position).cwiseAbs2();
+  }
+  const Eigen::Vector3d target =
+      scale * scale *
+      (squares / static_cast<double>(history.size()) + noise_variance_per_axis(measured));
+  const TranslationMoments cloud = filter.translation_moments();
+  auto& states = filter.translation().states;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double variance = cloud.covariance(axis, axis);
+    if (!(variance > target(axis))) continue;
+    const double factor = std::sqrt(target(axis) / variance);
+    states.row(axis) =
+        (cloud.mean(axis) + factor * (states.row(axis).array() - cloud.mean(axis))).matrix();
+  }
+}
+
+}  // namespace
+
 bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
   // Seen again only briefly since the dynamics module last carried it, where that prediction
   // said: the motion goes on. (Its history before that gap has aged out of the window, and a
@@ -294,6 +328,9 @@ bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
   const std::vector<MotionSample> samples(history_.begin(), history_.end());
   auto prediction = predict_motion(samples, options_.dynamics.selection);
   if (!prediction) return false;
+  if (options_.measured_onset_spread)
+    narrow_to_measured_discrepancy(h.filter, samples,
+                                   options_.dynamics.selection.uncertainty_scale);
   h.prediction = std::move(prediction);
   h.prediction_trace = 0.0;
   h.source = Source::kTrajectory;

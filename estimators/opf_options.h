@@ -68,6 +68,14 @@ struct OpfOptions {
   /// configured observation_noise.rotation and that value: a likelihood wider than the detector's
   /// noise trails every turn by a share of it. false: the configured value, always (the paper's).
   bool adaptive_rotation_noise = true;
+  /// At the onset of a predicted motion (the selected predictor), narrow the translation
+  /// particles about their mean, per axis, to uncertainty_scale times what the history shows of
+  /// the estimate's error (its RMS distance from the measurements, with the detector's noise
+  /// added), where the cloud is wider: the cloud's spread while visible is the configured
+  /// observation noise's (1 cm), which can be twenty times the detector's, and the reported spread
+  /// while hidden would then say nothing of how far off the estimate may be. Never widens. false:
+  /// the cloud as the filter left it.
+  bool measured_onset_spread = true;
   /// s hidden after which the dynamics module's prediction stops moving the object and holds it,
   /// its uncertainty still growing (a bounded hidden state: no extrapolation runs off for ever;
   /// the bundled scenes extrapolate correctly for up to 3 s, under the sugar-dropping hand). The
@@ -95,6 +103,7 @@ void describe_options(Visitor& v, OpfOptions& o) {
   v.flag("carry_particles", o.carry_particles);
   v.flag("velocity_drift", o.velocity_drift);
   v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
+  v.flag("measured_onset_spread", o.measured_onset_spread);
   v.number("velocity_window", o.velocity_window, positive("a positive number of s"));
   v.number("hold_after", o.hold_after, positive("a positive number of s"));
   v.section("dynamics", [&] {

@@ -131,7 +131,7 @@ done
 # where the first row's cells start) with all runs in one markdown table.
 ((${#ran[@]} > 0)) || { echo "$0: CLIPS names none of: box vtest cup" >&2; exit 2; }
 CLIPS_RAN="${ran[*]}" /usr/bin/python3 - "$out" "$seeds" "$phases" "$period" "${dropouts[@]}" <<'EOF'
-import collections, csv, os, pathlib, re, sys
+import collections, csv, math, os, pathlib, re, statistics, sys
 
 out, seeds, phases, period = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4]
 dropouts = sys.argv[5:]
@@ -173,7 +173,9 @@ for cells, rows in tables:
 lines += notes
 
 # The placements of the windows: per clip, dropout and estimator, the hidden translation error's
-# mean over them, and in how many the OPF's was at most every other estimator's.
+# mean over them, in how many the OPF's was at most every other estimator's, and the OPF's paired
+# difference from the best other estimator (mean over the placements and its standard error): a
+# row lost or won by less than about two standard errors is a tie at this many placements.
 by_row = collections.defaultdict(lambda: collections.defaultdict(dict))
 for r in csv.DictReader(out.joinpath("phases.csv").open()):
     by_row[(r["clip"], r["dropout"])][r["phase"]][r["estimator"]] = float(r["hidden_translation"])
@@ -181,10 +183,12 @@ if by_row:
     names = list(next(iter(next(iter(by_row.values())).values())))
     lines += ["", f"## Hidden translation error [m] over {phases} placements of the windows", "",
               f"The windows shifted by {period} s / {phases} each time (one seed per placement): "
-              "the mean over placements, and in how many of them the OPF's error was at most "
-              "every other estimator's.", "",
-              "| clip | dropout | " + " | ".join(names) + " | opf best |",
-              "|" + "---|" * (len(names) + 3)]
+              "the mean over placements, in how many of them the OPF's error was at most "
+              "every other estimator's, and the OPF's error minus the best other estimator's "
+              "[mm], paired by placement: mean +- standard error (neighbouring placements "
+              "share frames, so it understates the uncertainty somewhat).", "",
+              "| clip | dropout | " + " | ".join(names) + " | opf best | opf - best other [mm] |",
+              "|" + "---|" * (len(names) + 4)]
     for clip in clips:
         for dropout in dropouts:
             runs = by_row.get((clip, dropout))
@@ -193,8 +197,16 @@ if by_row:
             means = [sum(p[n] for p in runs.values()) / len(runs) for n in names]
             best = sum(1 for p in runs.values()
                        if "opf" in p and all(p["opf"] <= v for v in p.values()))
+            others = [(m, n) for m, n in zip(means, names) if n != "opf"]
+            paired = "–"
+            if "opf" in names and others:
+                rival = min(others)[1]
+                d = [1000 * (p["opf"] - p[rival]) for p in runs.values()]
+                mean = sum(d) / len(d)
+                se = (statistics.stdev(d) / math.sqrt(len(d))) if len(d) > 1 else float("nan")
+                paired = f"{mean:+.2f} ± {se:.2f} ({rival})"
             lines.append(f"| {clip} | {dropout} s | " + " | ".join(f"{m:.4f}" for m in means)
-                         + f" | {best} of {len(runs)} |")
+                         + f" | {best} of {len(runs)} | {paired} |")
 out.joinpath("table.md").write_text("\n".join(lines) + "\n")
 EOF
 echo "table: $out/table.md"

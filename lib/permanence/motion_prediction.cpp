@@ -442,22 +442,6 @@ std::vector<std::vector<double>> weights_by_horizon(const std::vector<Scored>& c
   return weights;
 }
 
-// The measurement noise's variance per axis, from the series itself (second_difference_noise.h).
-Eigen::Vector3d noise_variance(const Eigen::Matrix3Xd& values) {
-  const Eigen::Index n = values.cols();
-  if (n < 3) return Eigen::Vector3d::Zero();
-  Eigen::Vector3d variance;
-  std::vector<double> squares(static_cast<std::size_t>(n - 2));
-  for (int axis = 0; axis < 3; ++axis) {
-    for (Eigen::Index k = 1; k + 1 < n; ++k) {
-      const double d = values(axis, k + 1) - 2.0 * values(axis, k) + values(axis, k - 1);
-      squares[static_cast<std::size_t>(k - 1)] = d * d;
-    }
-    variance(axis) = noise_variance_from_second_differences(squares);
-  }
-  return variance;
-}
-
 }  // namespace
 
 std::string_view to_string(TranslationModel model) {
@@ -600,8 +584,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     Validation validation;
   };
   std::array<std::vector<Scored>, 3> scored;
-  const Eigen::Vector3d position_noise = noise_variance(s.position);
-  const double rotation_noise = noise_variance(s.rotation).mean();
+  const Eigen::Vector3d position_noise = noise_variance_per_axis(s.position);
+  const double rotation_noise = noise_variance_per_axis(s.rotation).mean();
   const Eigen::Vector3d position_wander = wander_intensity(s.t, s.position);
   const double rotation_wander = wander_intensity(s.t, s.rotation).mean();
   for (const auto& [model, candidate] : translation_candidates) {

@@ -3,7 +3,10 @@
 // samples of a smooth motion at equal intervals is mostly noise, N(0, 6 sigma^2); the median of
 // its squares is 6 sigma^2 times 0.4549 (the median of chi-square with one degree of freedom),
 // which ignores the few differences a turn or an outlier inflates. The dynamics module reads the
-// positions' and rotations' noise this way, the OPF its detector's rotation jitter.
+// positions' and rotations' noise this way, the OPF its detector's rotation jitter
+// and its positions' noise (the spread at the onset of a gap).
+
+#include <Eigen/Core>
 
 #include <vector>
 
@@ -11,5 +14,9 @@ namespace opf {
 
 /// sigma^2 from the squared second differences of one coordinate (reorders them); 0 for none.
 double noise_variance_from_second_differences(std::vector<double>& squares);
+
+/// sigma^2 per row of a series of samples at (nearly) equal intervals, one column a sample: three
+/// rows of positions or rotation vectors; zeros under three samples.
+Eigen::Vector3d noise_variance_per_axis(const Eigen::Matrix3Xd& values);
 
 }  // namespace opf

@@ -629,6 +629,45 @@ TEST(ObjectPermanenceFilter, HiddenUncertaintyCoversTheError) {
   EXPECT_GE(ratios[ratios.size() / 2], 0.25);
 }
 
+// A detector ten times more precise than the configured observation noise (1 mm against 1 cm):
+// the particle cloud's spread while visible is the configured noise's, about 7.6 mm per axis.
+// When the ball is hidden and its motion predicted, the cloud is narrowed to 1.75 times what the
+// history shows of the estimate's error (its distance from the measurements, with the detector's
+// noise added), so the reported spread follows the estimate's real error instead of the
+// configuration, and still covers it (against the truth).
+TEST(ObjectPermanenceFilter, AtOnsetTheSpreadIsWhatTheHistoryShows) {
+  OpfOptions configured;
+  configured.measured_onset_spread = false;
+  double narrowed_spread = 0.0, configured_spread = 0.0;
+  int covered = 0, hidden = 0;
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    Scene scene;
+    scene.frames = 100;
+    scene.noise_translation = 0.001;
+    scene.objects.push_back(
+        {"ball", [](double t) { return Eigen::Vector3d(0.3 + 0.1 * t, -0.2 + 0.15 * t, 0.0); },
+         [](double) { return Eigen::Quaterniond::Identity(); },
+         [](int k) { return k < 70 || k >= 79; }});
+    const SceneRun narrowed = run(scene, opf_factory(OpfOptions{}), seed);
+    const SceneRun wide = run(scene, opf_factory(configured), seed);
+    const auto spread = [](const SceneRun& r, int k) {
+      return std::sqrt(r.estimates[k].at("ball").pose.cov.asEigen().topLeftCorner<3, 3>().trace());
+    };
+    narrowed_spread += spread(narrowed, 70);
+    configured_spread += spread(wide, 70);
+    for (int k = 70; k < 79; ++k) {
+      covered += error_at(narrowed, scene, "ball", k) <= 2.0 * spread(narrowed, k);
+      ++hidden;
+    }
+  }
+  // Narrowed: at least 1.75 sqrt(3) x the detector's 1 mm (3.0 mm; the distance between estimate
+  // and measurements adds to it), well under the configured cloud's 13 mm.
+  EXPECT_GT(narrowed_spread / 4.0, 0.0030);
+  EXPECT_LT(narrowed_spread / 4.0, 0.006);
+  EXPECT_GT(configured_spread / 4.0, 0.012);
+  EXPECT_GE(covered, 0.9 * hidden) << covered << " of " << hidden;
+}
+
 // A cup turning at 2.7 rad/s: with the paper's random walk (0.1 rad/sqrt(s)) the particles trail
 // the measurements by a large fraction of a frame's turn every step; the drift by the recent
 // angular velocity removes the lag, leaving the measurement noise (0.01 rad) filtered.

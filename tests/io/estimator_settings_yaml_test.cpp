@@ -202,6 +202,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
       "  velocity_drift: false\n"
       "  velocity_window: 0.5\n"
       "  adaptive_rotation_noise: false\n"
+      "  measured_onset_spread: false\n"
       "  dynamics:\n"
       "    predictor: paper\n"
       "    history_window: 3.0\n"
@@ -224,6 +225,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   EXPECT_FALSE(o.velocity_drift);
   EXPECT_EQ(o.velocity_window, 0.5);
   EXPECT_FALSE(o.adaptive_rotation_noise);
+  EXPECT_FALSE(o.measured_onset_spread);
   EXPECT_EQ(o.dynamics.predictor, DynamicsPredictor::kPaper);
   const MotionPredictionOptions& m = o.dynamics.selection;
   EXPECT_EQ(m.history_window, 3.0);

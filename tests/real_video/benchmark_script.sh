@@ -33,6 +33,12 @@ for estimator in opf cvkf; do
 done
 grep -q '^## Hidden translation error \[m\] over 3 placements' "$out/table.md" ||
   fail "no placements table in table.md"
-grep -Eq '^\| box \| 0\.6 s \| [0-9.]+ \| [0-9.]+ \| [0-3] of 3 \|$' "$out/table.md" ||
-  fail "no box 0.6 s row in the placements table"
+row="$(grep -E '^\| box \| 0\.6 s \| [0-9.]+ \| [0-9.]+ \| [0-3] of 3 \| [-+][0-9.]+ ± [0-9.]+ \(cvkf\) \|$' \
+  "$out/table.md")" || fail "no box 0.6 s row in the placements table"
+# Its paired difference: the mean over the placements of the OPF's error minus the Kalman
+# filter's, in mm.
+paired="$(awk -F, 'NR > 1 && $2 == "0.6" { e[$3, $5] = $6; n[$3] = 1 }
+  END { for (k in n) { s += e[k, "opf"] - e[k, "cvkf"]; c++ } printf "%+.2f", 1000 * s / c }' \
+  "$out/phases.csv")"
+[[ "$row" == *"| $paired ± "* ]] || fail "paired difference: row '$row', from phases.csv $paired"
 echo "real-video benchmark script: $rows placement rows, first placement = main run"
