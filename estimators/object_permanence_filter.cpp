@@ -267,8 +267,9 @@ namespace {
 // than `scale` times what the history shows of the estimate's error (never widens it): the mean
 // squared distance between the estimates and the measurements, plus the detector's noise read
 // from the measurements (second_difference_noise.h). With e the estimate's error and n the
-// noise, E[e^2] = E[(e - n)^2] - sigma^2 + 2 E[e n] <= E[(e - n)^2] + sigma^2: a bound however
-// closely the estimate follows the measurements.
+// noise, E[e^2] = E[(e - n)^2] - sigma^2 + 2 E[e n] <= E[(e - n)^2] + sigma^2 whenever the
+// estimate does not amplify the noise (E[e n] <= sigma^2): a bound however closely it follows
+// the measurements.
 void narrow_to_measured_discrepancy(PoseParticleFilter& filter,
                                     std::span<const MotionSample> history, double scale) {
   if (history.size() < 3) return;
