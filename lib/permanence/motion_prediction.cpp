@@ -376,26 +376,42 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
 // candidate that gets no weight (free flight unless it is the best: an object flies or it does
 // not, and a few percent of gravity would drop a resting object 0.4 m in 1.5 s).
 template <class Barred>
-std::vector<double> inverse_error_weights(const std::vector<double>& mse, double noise,
-                                          Barred barred) {
-  std::vector<double> excess(mse.size());
+void inverse_error_weights(std::span<const double> mse, double noise, Barred barred,
+                           std::span<double> weights) {
   double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < mse.size(); ++i) {
-    excess[i] = std::max(mse[i] - noise, 0.1 * noise);
-    smallest = std::min(smallest, excess[i]);
+    weights[i] = std::max(mse[i] - noise, 0.1 * noise);  // the excess, for now
+    smallest = std::min(smallest, weights[i]);
   }
-  std::vector<double> weights(mse.size(), 0.0);
   double total = 0.0;
   for (std::size_t i = 0; i < mse.size(); ++i) {
+    const double excess = weights[i];
     // Relative to the smallest, so an exact fit (excess 0) is a clean 1 and the rest 0.
-    weights[i] = smallest > 0.0 ? smallest / excess[i] : (excess[i] == 0.0 ? 1.0 : 0.0);
-    if (barred(i, !(excess[i] > smallest))) weights[i] = 0.0;
+    weights[i] = smallest > 0.0 ? smallest / excess : (excess == 0.0 ? 1.0 : 0.0);
+    if (barred(i, !(excess > smallest))) weights[i] = 0.0;
     total += weights[i];
   }
   if (total > 0.0)
     for (double& w : weights) w /= total;
+}
+
+template <class Barred>
+std::vector<double> inverse_error_weights(std::span<const double> mse, double noise,
+                                          Barred barred) {
+  std::vector<double> weights(mse.size());
+  inverse_error_weights(mse, noise, barred, weights);
   return weights;
 }
+
+// The candidates' shares at each horizon node: one row of `candidates` values per node.
+struct HorizonWeights {
+  std::size_t candidates = 0;
+  std::vector<double> values;
+  double at(std::size_t node, std::size_t candidate) const {
+    return values[node * candidates + candidate];
+  }
+  std::size_t nodes() const { return candidates > 0 ? values.size() / candidates : 0; }
+};
 
 // Each candidate's share at each horizon node k (k + 1 steps ahead): the inverse-error weights of
 // its validation errors made at most that far ahead. A model that follows the newest motion best
@@ -404,40 +420,42 @@ std::vector<double> inverse_error_weights(const std::vector<double>& mse, double
 // score rests on many errors, and the last node's is the overall one. Free flight keeps its
 // overall verdict (`overall`), all or nothing.
 template <class Scored>
-std::vector<std::vector<double>> weights_by_horizon(const std::vector<Scored>& candidates,
-                                                    const std::vector<double>& overall,
-                                                    const std::vector<std::size_t>& node_of,
-                                                    int axis, double noise) {
+HorizonWeights weights_by_horizon(const std::vector<Scored>& candidates,
+                                  const std::vector<double>& overall,
+                                  const std::vector<std::size_t>& node_of, int axis, double noise) {
   std::size_t nodes = 0;
   for (const std::size_t k : node_of) nodes = std::max(nodes, k + 1);
   const std::size_t n = candidates.size();
   // Per node, each candidate's recency-weighted squared errors on `axis` and the weights' sum: the
   // candidates share the origins, hence the weights.
-  std::vector<std::vector<double>> squares(nodes, std::vector<double>(n, 0.0));
+  std::vector<double> squares(nodes * n, 0.0);
   std::vector<double> counts(nodes, 0.0);
   const std::vector<double>& recency = candidates.front().validation.weights;
   for (std::size_t j = 0; j < node_of.size(); ++j) {
     counts[node_of[j]] += recency[j];
     for (std::size_t c = 0; c < n; ++c) {
       const double e = candidates[c].validation.errors[j](axis);
-      squares[node_of[j]][c] += recency[j] * e * e;
+      squares[node_of[j] * n + c] += recency[j] * e * e;
     }
   }
-  std::vector<std::vector<double>> weights;
-  std::vector<double> sums(n, 0.0);
+  HorizonWeights weights{n, std::vector<double>(nodes * n)};
+  std::vector<double> sums(n, 0.0), mse(n);
   double count = 0.0;
   for (std::size_t k = 0; k < nodes; ++k) {
+    const std::span<double> row(weights.values.data() + k * n, n);
     count += counts[k];
-    for (std::size_t c = 0; c < n; ++c) sums[c] += squares[k][c];
+    for (std::size_t c = 0; c < n; ++c) sums[c] += squares[k * n + c];
     if (!(count > 0.0)) {
-      weights.push_back(overall);
+      std::copy(overall.begin(), overall.end(), row.begin());
       continue;
     }
-    std::vector<double> mse(n);
     for (std::size_t c = 0; c < n; ++c) mse[c] = sums[c] / count;
-    weights.push_back(inverse_error_weights(mse, noise, [&](std::size_t c, bool) {
-      return candidates[c].candidate.ballistic && !(overall[c] > 0.0);
-    }));
+    inverse_error_weights(
+        mse, noise,
+        [&](std::size_t c, bool) {
+          return candidates[c].candidate.ballistic && !(overall[c] > 0.0);
+        },
+        row);
   }
   return weights;
 }
@@ -717,9 +735,9 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     const std::vector<double> weights = inverse_error_weights(
         mse, noise,
         [&](std::size_t c, bool best) { return candidates[c].candidate.ballistic && !best; });
-    const std::vector<std::vector<double>> node_weights =
+    const HorizonWeights node_weights =
         options.weights_by_horizon ? weights_by_horizon(candidates, weights, node_of, axis, noise)
-                                   : std::vector<std::vector<double>>{weights};
+                                   : HorizonWeights{weights.size(), weights};
     auto& fits = prediction.translation[static_cast<std::size_t>(axis)];
     // The combination's validation errors, each made with the weights of its horizon.
     Validation combined = candidates.front().validation;
@@ -733,16 +751,18 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       model_weights[m.model] += weights[c];
       WeightedFit wf;
       wf.weight = weights[c];
-      if (options.weights_by_horizon)
-        for (const std::vector<double>& at_node : node_weights)
-          wf.weight_by_horizon.push_back(at_node[c]);
+      if (options.weights_by_horizon) {
+        wf.weight_by_horizon.reserve(node_weights.nodes());
+        for (std::size_t k = 0; k < node_weights.nodes(); ++k)
+          wf.weight_by_horizon.push_back(node_weights.at(k, c));
+      }
       wf.window = m.window;
       wf.settles = m.candidate.order >= 1;
       const Fitted* fit = fit_of(m);
       if (!fit) return std::nullopt;
       wf.fit = fit->fit;
       for (std::size_t j = 0; j < combined.errors.size(); ++j)
-        combined.errors[j](axis) += node_weights[node_of[j]][c] * m.validation.errors[j](axis);
+        combined.errors[j](axis) += node_weights.at(node_of[j], c) * m.validation.errors[j](axis);
       floor += weights[c] * fit->rate_variance(axis);
       fits.push_back(std::move(wf));
     }
