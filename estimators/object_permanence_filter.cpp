@@ -297,18 +297,33 @@ void narrow_to_measured_discrepancy(PoseParticleFilter& filter,
 
 bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
   // Seen again only briefly since the dynamics module last carried it, where that prediction
-  // said: the motion goes on. (Its history before that gap has aged out of the window, and a
-  // glimpse of a few frames would read as static, handing a moving object to its occluder.)
-  const bool brief =
-      history_.size() < 4 || history_.back().t - history_.front().t < options_.velocity_window;
-  if (brief && confirmed_motion_ && !history_.empty()) {
-    const MotionSample& last = history_.back();
-    h.prediction =
-        continued(*confirmed_motion_, last.t, last.estimated_position, last.estimated_orientation);
+  // said: the motion goes on. (A glimpse of a few frames would read as static, handing a moving
+  // object to its occluder; fitted together with the frames before the gap, a model through a
+  // hole of seconds runs wild.) Brief: since the history's last gap longer than
+  // `velocity_window`, under four samples or under `velocity_window` of time.
+  std::size_t first = history_.size();
+  while (first > 0 && (first == history_.size() ||
+                       history_[first].t - history_[first - 1].t <= options_.velocity_window))
+    --first;
+  const bool brief = history_.size() - first < 4 ||
+                     history_.back().t - history_[first].t < options_.velocity_window;
+  const auto follow = [&h](MotionPrediction prediction) {
+    h.prediction = std::move(prediction);
     h.prediction_trace = 0.0;
     h.source = Source::kTrajectory;
     return true;
-  }
+  };
+  const auto continue_from_last = [&](const MotionPrediction& confirmed) {
+    const MotionSample& last = history_.back();
+    return follow(
+        continued(confirmed, last.t, last.estimated_position, last.estimated_orientation));
+  };
+  if (brief && confirmed_motion_ && !history_.empty())
+    return continue_from_last(*confirmed_motion_);
+  // The motion the last gap confirmed stays the fallback while the history cannot be fitted
+  // anew: seen again for a few frames after a long gap, the history is those frames and the
+  // ones before the gap, with no second of consecutive frames to validate a model on.
+  const std::optional<MotionPrediction> fallback = std::move(confirmed_motion_);
   confirmed_motion_.reset();
   // Moving or static is decided as with the paper's predictor (the motion test over the
   // history), so a static object still goes to the occluder module.
@@ -328,14 +343,11 @@ bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
   }
   const std::vector<MotionSample> samples(history_.begin(), history_.end());
   auto prediction = predict_motion(samples, options_.dynamics.selection);
-  if (!prediction) return false;
+  if (!prediction) return fallback ? continue_from_last(*fallback) : false;
   if (options_.measured_onset_spread)
     narrow_to_measured_discrepancy(h.filter, samples,
                                    options_.dynamics.selection.uncertainty_scale);
-  h.prediction = std::move(prediction);
-  h.prediction_trace = 0.0;
-  h.source = Source::kTrajectory;
-  return true;
+  return follow(std::move(*prediction));
 }
 
 void ObjectPermanenceFilter::follow_prediction(Hypothesis& h, double t_previous, double t) {

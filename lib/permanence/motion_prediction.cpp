@@ -221,21 +221,22 @@ Validation validate_rotation(std::span<const MotionSample> history, const Series
   return v;
 }
 
-// Non-negative least squares of e^2 - noise ~ a2 h^2 + a3 h^3 + a4 h^4 for one axis of the
-// errors (the mean over axes for axis < 0): h^2 for a wrong velocity, h^3 for a velocity that
-// wanders (white random acceleration, the constant-velocity Kalman filter's model), h^4 for a
-// wrong acceleration. `noise` is the measurement noise's variance, which the validation errors
-// carry (they are against measurements) but a prediction of the object does not. Three unknowns:
-// every subset of active terms is solved and the best non-negative one kept. Each error counts
+// Non-negative least squares of e^2 - noise ~ a1 h + a2 h^2 + a3 h^3 + a4 h^4 for one axis of
+// the errors (the mean over axes for axis < 0): h for a position that wanders by itself (a
+// random walk: a detector's slow drift, a gait's sway, what the random-walk filters assume), h^2
+// for a wrong velocity, h^3 for a velocity that wanders (white random acceleration, the
+// constant-velocity Kalman filter's model), h^4 for a wrong acceleration. `noise` is the
+// measurement noise's variance, which the validation errors carry (they are against measurements)
+// but a prediction of the object does not. Four unknowns: every subset of active terms is solved
+// and the best non-negative one kept (`diffusion` false: the h term stays off). Each error counts
 // with its recency weight, as in the models' scores: a motion that changed (a ball that started
 // rolling) is judged by how it moves now.
-Eigen::Vector3d growth(const Validation& v, int axis, double noise) {
-  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+Eigen::Vector4d growth(const Validation& v, int axis, double noise, bool diffusion) {
+  Eigen::Matrix4d normal = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d rhs = Eigen::Vector4d::Zero();
   double target_squares = 0.0;
   for (std::size_t i = 0; i < v.horizons.size(); ++i) {
-    const double h = v.horizons[i];
-    const Eigen::Vector3d basis(h * h, h * h * h, h * h * h * h);
+    const Eigen::Vector4d basis = growth_powers(v.horizons[i]);
     const double e2 =
         (axis < 0 ? v.errors[i].squaredNorm() / 3.0 : v.errors[i](axis) * v.errors[i](axis)) -
         noise;
@@ -244,13 +245,15 @@ Eigen::Vector3d growth(const Validation& v, int axis, double noise) {
     rhs += w * e2 * basis;
     target_squares += w * e2 * e2;
   }
-  Eigen::Vector3d best = Eigen::Vector3d::Zero();
+  Eigen::Vector4d best = Eigen::Vector4d::Zero();
   double best_residual = target_squares;  // all terms off
-  for (int subset = 1; subset < 8; ++subset) {
-    std::vector<int> active;
-    for (int k = 0; k < 3; ++k)
-      if (subset & (1 << k)) active.push_back(k);
-    const auto n = static_cast<Eigen::Index>(active.size());
+  // Bit k of `subset` switches on the term of h^(k+1); without diffusion the odd subsets (those
+  // with the h term) are skipped.
+  for (int subset = diffusion ? 1 : 2; subset < 16; subset += diffusion ? 1 : 2) {
+    std::array<int, 4> active{};
+    Eigen::Index n = 0;
+    for (int k = 0; k < 4; ++k)
+      if (subset & (1 << k)) active[static_cast<std::size_t>(n++)] = k;
     Eigen::MatrixXd a(n, n);
     Eigen::VectorXd b(n);
     for (Eigen::Index r = 0; r < n; ++r) {
@@ -262,7 +265,7 @@ Eigen::Vector3d growth(const Validation& v, int axis, double noise) {
     if (solver.info() != Eigen::Success) continue;
     const Eigen::VectorXd x = solver.solve(b);
     if (!x.allFinite() || (x.array() < 0.0).any()) continue;
-    Eigen::Vector3d candidate = Eigen::Vector3d::Zero();
+    Eigen::Vector4d candidate = Eigen::Vector4d::Zero();
     for (Eigen::Index r = 0; r < n; ++r) candidate(active[static_cast<std::size_t>(r)]) = x(r);
     // |e - B a|^2 = sum e^2 - 2 a.rhs + a' N a
     const double residual =
@@ -533,13 +536,11 @@ Eigen::Quaterniond MotionPrediction::orientation(double h) const {
 }
 
 Eigen::Vector3d MotionPrediction::translation_variance(double h) const {
-  const Eigen::Vector3d powers(h * h, h * h * h, h * h * h * h);
-  return uncertainty_scale * uncertainty_scale * (translation_growth * powers);
+  return uncertainty_scale * uncertainty_scale * (translation_growth * growth_powers(h));
 }
 
 double MotionPrediction::rotation_variance(double h) const {
-  const Eigen::Vector3d powers(h * h, h * h * h, h * h * h * h);
-  return uncertainty_scale * uncertainty_scale * rotation_growth.dot(powers);
+  return uncertainty_scale * uncertainty_scale * rotation_growth.dot(growth_powers(h));
 }
 
 std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all,
@@ -791,9 +792,9 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       combined.errors.push_back(error);
       combined.weights.push_back(1.0);  // predicted from the newest origin
     }
-    Eigen::Vector3d g = growth(combined, axis, noise);
-    g(0) = std::max(g(0), floor);
-    g(1) = std::max(g(1), position_wander(axis) / 3.0);
+    Eigen::Vector4d g = growth(combined, axis, noise, options.diffusion_growth);
+    g(1) = std::max(g(1), floor);
+    g(2) = std::max(g(2), position_wander(axis) / 3.0);
     prediction.translation_growth.row(axis) = g.transpose();
   }
   prediction.translation_score = std::sqrt(squared_score);
@@ -856,9 +857,9 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   for (const auto& e : combined.errors) rotation_sum += e.squaredNorm();
   prediction.rotation_score = std::sqrt(
       rotation_sum / static_cast<double>(std::max<std::size_t>(combined.errors.size(), 1)));
-  prediction.rotation_growth = growth(combined, -1, noise);
-  prediction.rotation_growth(0) = std::max(prediction.rotation_growth(0), floor);
-  prediction.rotation_growth(1) = std::max(prediction.rotation_growth(1), rotation_wander / 3.0);
+  prediction.rotation_growth = growth(combined, -1, noise, options.diffusion_growth);
+  prediction.rotation_growth(1) = std::max(prediction.rotation_growth(1), floor);
+  prediction.rotation_growth(2) = std::max(prediction.rotation_growth(2), rotation_wander / 3.0);
   return prediction;
 }
 
