@@ -254,16 +254,19 @@ Eigen::Vector4d growth(const Validation& v, int axis, double noise, bool diffusi
     Eigen::Index n = 0;
     for (int k = 0; k < 4; ++k)
       if (subset & (1 << k)) active[static_cast<std::size_t>(n++)] = k;
-    Eigen::MatrixXd a(n, n);
-    Eigen::VectorXd b(n);
+    // At most 4 x 4: sized at run time, stored in place (no allocation per subset).
+    using Square = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+    using Column = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;
+    Square a(n, n);
+    Column b(n);
     for (Eigen::Index r = 0; r < n; ++r) {
       b(r) = rhs(active[static_cast<std::size_t>(r)]);
       for (Eigen::Index c = 0; c < n; ++c)
         a(r, c) = normal(active[static_cast<std::size_t>(r)], active[static_cast<std::size_t>(c)]);
     }
-    const Eigen::LDLT<Eigen::MatrixXd> solver(a);
+    const Eigen::LDLT<Square> solver(a);
     if (solver.info() != Eigen::Success) continue;
-    const Eigen::VectorXd x = solver.solve(b);
+    const Column x = solver.solve(b);
     if (!x.allFinite() || (x.array() < 0.0).any()) continue;
     Eigen::Vector4d candidate = Eigen::Vector4d::Zero();
     for (Eigen::Index r = 0; r < n; ++r) candidate(active[static_cast<std::size_t>(r)]) = x(r);
