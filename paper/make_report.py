@@ -289,7 +289,7 @@ def main():
     results = opf.directory_from_env("OPF_RESULTS", "results")
     sweeps = opf.directory_from_env("OPF_SWEEPS", "results/sweeps")
     bench = os.environ.get("OPF_BENCH", os.path.join(
-        REPO, "bench", "results", "amd-epyc-2cpu-2026-11-22.json"))
+        REPO, "bench", "results", "intel-xeon-2cpu-2026-11-26.json"))
     table_one(out, results)
     baselines(out, results)
     figure_three(out, results)
