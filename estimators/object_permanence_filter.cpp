@@ -301,9 +301,8 @@ bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
   // object to its occluder; fitted together with the frames before the gap, a model through a
   // hole of seconds runs wild.) Brief: since the history's last gap longer than
   // `velocity_window`, under four samples or under `velocity_window` of time.
-  std::size_t first = history_.size();
-  while (first > 0 && (first == history_.size() ||
-                       history_[first].t - history_[first - 1].t <= options_.velocity_window))
+  std::size_t first = history_.empty() ? 0 : history_.size() - 1;
+  while (first > 0 && history_[first].t - history_[first - 1].t <= options_.velocity_window)
     --first;
   const bool brief = history_.size() - first < 4 ||
                      history_.back().t - history_[first].t < options_.velocity_window;
