@@ -42,86 +42,110 @@ bool fit_local_polynomial(std::span<const double> times, const Eigen::Matrix3Xd&
   if (count < parameters + 1) return false;
 
   // In s = tau / span, so the normal equations stay well conditioned; at most 3 x 3, solved per
-  // axis in fixed-size storage (this runs dozens of times per occlusion onset).
+  // axis in fixed-size storage (this runs dozens of times per occlusion onset). The powers of s
+  // and the targets are computed once; the passes below only read them.
   const double span = std::max(t_ref - times[static_cast<std::size_t>(begin)], 1e-9);
-  const auto basis = [&](Eigen::Index i) {
-    const double s = (times[static_cast<std::size_t>(begin + i)] - t_ref) / span;
-    return Eigen::Vector3d(1.0, s, s * s);
+  const auto n = static_cast<std::size_t>(count);
+  std::vector<double> scratch(5 * n);
+  const std::span<double> s1(scratch.data(), n), s2(scratch.data() + n, n);
+  const std::span<double> y[3] = {std::span<double>(scratch.data() + 2 * n, n),
+                                  std::span<double>(scratch.data() + 3 * n, n),
+                                  std::span<double>(scratch.data() + 4 * n, n)};
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = times[static_cast<std::size_t>(begin) + i];
+    const double s = (t - t_ref) / span;
+    s1[i] = s;
+    s2[i] = s * s;
+    const double tau = t - t_ref;
+    for (int axis = 0; axis < 3; ++axis)
+      y[axis][i] = values(axis, begin + static_cast<Eigen::Index>(i)) -
+                   0.5 * tau * tau * known_acceleration(axis);
+  }
+  // The basis (1, s, s^2) with the powers beyond the order zeroed; the normal matrix then gets an
+  // identity block for them and their coefficients solve to zero, so every solve is a fixed 3 x 3.
+  const double use1 = parameters > 1 ? 1.0 : 0.0, use2 = parameters > 2 ? 1.0 : 0.0;
+  // The fit's value at sample i, summed as (c0 + s c1) + s^2 c2. Not through an Eigen::Vector3d
+  // of the basis: its two scalar stores read back as one vector stall the store forwarding, and
+  // made this the fit's dominant cost.
+  const auto value_at = [&](std::size_t i, const Eigen::Vector3d& c) {
+    return (c(0) + s1[i] * c(1)) + s2[i] * c(2);
   };
-  const auto target = [&](Eigen::Index i, int axis) {
-    const double tau = times[static_cast<std::size_t>(begin + i)] - t_ref;
-    return values(axis, begin + i) - 0.5 * tau * tau * known_acceleration(axis);
+  // The weighted normal matrix's lower triangle (all the LDLT reads), entry (a, b) summed as
+  // (w phi_a) phi_b (w = 1 where `w` is null), and the right-hand side per axis as (w y) phi_a.
+  const auto normal_matrix = [&](const double* w) {
+    double n00 = 0.0, n10 = 0.0, n11 = 0.0, n20 = 0.0, n21 = 0.0, n22 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double p1 = use1 * s1[i], p2 = use2 * s2[i];
+      const double wi = w ? w[i] : 1.0;
+      const double w1 = wi * p1, w2 = wi * p2;
+      n00 += wi;
+      n10 += w1;
+      n11 += w1 * p1;
+      n20 += w2;
+      n21 += w2 * p1;
+      n22 += w2 * p2;
+    }
+    Eigen::Matrix3d normal;
+    normal << n00, 0.0, 0.0, n10, parameters > 1 ? n11 : 1.0, 0.0, n20, n21,
+        parameters > 2 ? n22 : 1.0;
+    return normal;
+  };
+  const auto right_hand_side = [&](const double* w, std::span<const double> target) {
+    double r0 = 0.0, r1 = 0.0, r2 = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double wy = (w ? w[i] : 1.0) * target[i];
+      r0 += wy;
+      r1 += wy * (use1 * s1[i]);
+      r2 += wy * (use2 * s2[i]);
+    }
+    return Eigen::Vector3d(r0, r1, r2);
   };
 
+  // Unweighted, the normal matrix is the same for every axis.
+  const Eigen::LDLT<Eigen::Matrix3d> unweighted(normal_matrix(nullptr));
   Eigen::Matrix3d solution = Eigen::Matrix3d::Zero();  // column per axis
   Eigen::Vector3d residual_variance = Eigen::Vector3d::Zero();
-  // The basis with the unused powers zeroed; the normal matrix then gets an identity block for
-  // them and their coefficients solve to zero, so every solve is a fixed 3 x 3.
-  const auto padded = [&](Eigen::Index i) {
-    Eigen::Vector3d phi = basis(i);
-    for (int k = parameters; k < 3; ++k) phi(k) = 0.0;
-    return phi;
-  };
-  const auto pad = [&](Eigen::Matrix3d& normal) {
-    for (int k = parameters; k < 3; ++k) normal(k, k) = 1.0;
-  };
-
   if (robust_iterations == 0) {
-    // Plain least squares: one normal matrix for the three axes, one pass.
-    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-    Eigen::Matrix3d rhs = Eigen::Matrix3d::Zero();  // column per axis
-    for (Eigen::Index i = 0; i < count; ++i) {
-      const Eigen::Vector3d phi = padded(i);
-      normal.noalias() += phi * phi.transpose();
-      rhs.noalias() += phi * Eigen::RowVector3d(target(i, 0), target(i, 1), target(i, 2));
-    }
-    pad(normal);
-    solution = normal.ldlt().solve(rhs);
-    for (Eigen::Index i = 0; i < count; ++i) {
-      const Eigen::Vector3d phi = padded(i);
-      for (int axis = 0; axis < 3; ++axis) {
-        const double r = target(i, axis) - phi.dot(solution.col(axis));
+    // Plain least squares.
+    Eigen::Matrix3d rhs;
+    for (int axis = 0; axis < 3; ++axis) rhs.col(axis) = right_hand_side(nullptr, y[axis]);
+    solution = unweighted.solve(rhs);
+    for (int axis = 0; axis < 3; ++axis) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double r = y[axis][i] - value_at(i, solution.col(axis));
         residual_variance(axis) += r * r;
       }
     }
   } else {
     // Each axis is reweighted on its own residuals: a large error on one axis (an unmodelled
     // fall) says nothing against the samples of another.
-    std::vector<double> weights(static_cast<std::size_t>(count));
-    std::vector<double> magnitudes(static_cast<std::size_t>(count));
-    std::vector<double> sorted(static_cast<std::size_t>(count));
+    std::vector<double> weights(n), magnitudes(n), sorted(n);
     for (int axis = 0; axis < 3; ++axis) {
-      std::fill(weights.begin(), weights.end(), 1.0);
       Eigen::Vector3d x = Eigen::Vector3d::Zero();
+      bool weighted = false;  // all weights 1 until the first reweighting
       for (int iteration = 0;; ++iteration) {
-        Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
-        Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-        for (Eigen::Index i = 0; i < count; ++i) {
-          const Eigen::Vector3d phi = padded(i);
-          const double w = weights[static_cast<std::size_t>(i)];
-          normal.noalias() += w * phi * phi.transpose();
-          rhs.noalias() += w * target(i, axis) * phi;
-        }
-        pad(normal);
-        x = normal.ldlt().solve(rhs);
-        for (Eigen::Index i = 0; i < count; ++i)
-          magnitudes[static_cast<std::size_t>(i)] = std::abs(target(i, axis) - basis(i).dot(x));
+        x = weighted ? normal_matrix(weights.data())
+                           .ldlt()
+                           .solve(right_hand_side(weights.data(), y[axis]))
+                     : unweighted.solve(right_hand_side(nullptr, y[axis]));
+        for (std::size_t i = 0; i < n; ++i) magnitudes[i] = std::abs(y[axis][i] - value_at(i, x));
         if (iteration >= robust_iterations) break;
         std::copy(magnitudes.begin(), magnitudes.end(), sorted.begin());
-        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
+        const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(n / 2);
         std::nth_element(sorted.begin(), middle, sorted.end());
         const double scale = 1.4826 * *middle;
         if (!(scale > 0.0)) break;  // an exact fit: nothing to down-weight
-        for (std::size_t i = 0; i < weights.size(); ++i)
+        for (std::size_t i = 0; i < n; ++i)
           weights[i] = magnitudes[i] <= kHuberThreshold * scale
                            ? 1.0
                            : kHuberThreshold * scale / magnitudes[i];
+        weighted = true;
       }
       solution.col(axis) = x;
-      double weighted = 0.0;
-      for (std::size_t i = 0; i < weights.size(); ++i)
-        weighted += weights[i] * magnitudes[i] * magnitudes[i];
-      residual_variance(axis) = weighted;
+      double sum = 0.0;
+      for (std::size_t i = 0; i < n; ++i)
+        sum += (weighted ? weights[i] : 1.0) * magnitudes[i] * magnitudes[i];
+      residual_variance(axis) = sum;
     }
   }
 
