@@ -127,7 +127,8 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     Hypothesis& h = hypotheses_[0];
     const Source hidden_by = h.source;
     if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
-    const bool lost = h.filter.update_with_measurement(position, orientation);
+    const bool lost = h.filter.update_with_measurement(
+        position, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
     if (h.filter.translation_was_reset())
       confirmed_motion_.reset();
     else if (h.prediction)

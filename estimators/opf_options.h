@@ -76,6 +76,13 @@ struct OpfOptions {
   /// while hidden would then say nothing of how far off the estimate may be. Never widens. false:
   /// the cloud as the filter left it.
   bool measured_onset_spread = true;
+  /// At the first measurement after a gap, where the translation likelihood would leave fewer
+  /// than this share of the particles effective (the object turns up in the far tail of the
+  /// cloud the gap left), the translation takes the Gaussian posterior of the cloud's moments and
+  /// the measurement instead (PoseParticleFilter::update_with_measurement): reweighted, the cloud
+  /// would collapse onto the few particles nearest the measurement and report their tiny spread
+  /// several centimetres off. 0: always reweight (the paper's).
+  double reacquisition_gaussian_share = 0.01;
   /// s hidden after which the dynamics module's prediction stops moving the object and holds it,
   /// its uncertainty still growing (a bounded hidden state: no extrapolation runs off for ever;
   /// the bundled scenes extrapolate correctly for up to 3 s, under the sugar-dropping hand). The
@@ -104,6 +111,8 @@ void describe_options(Visitor& v, OpfOptions& o) {
   v.flag("velocity_drift", o.velocity_drift);
   v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
   v.flag("measured_onset_spread", o.measured_onset_spread);
+  v.number("reacquisition_gaussian_share", o.reacquisition_gaussian_share,
+           between(0.0, 1.0, "a share from 0 to 1"));
   v.number("velocity_window", o.velocity_window, positive("a positive number of s"));
   v.number("hold_after", o.hold_after, positive("a positive number of s"));
   v.section("dynamics", [&] {

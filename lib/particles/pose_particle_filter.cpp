@@ -6,6 +6,8 @@
 #include "opf/particles/resampling.h"
 #include "opf/particles/weight_kernels.h"
 
+#include <Eigen/Cholesky>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -199,6 +201,42 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   const PortionsReset reset =
       reset_unreached(position, orientation, translation_best_exponent_, rotation_best_exponent_);
   translation_reset_ = reset.translation;
+  translation_gaussian_ = false;
+  return reset.any();
+}
+
+bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position,
+                                                 const Eigen::Quaterniond& orientation,
+                                                 double min_effective_share) {
+  if (!(min_effective_share > 0.0)) return update_with_measurement(position, orientation);
+  const Eigen::VectorXd exponents = translation_exponents(position);
+  const double best = exponents.maxCoeff();
+  const bool unreached =
+      options_.reset_gate > 0.0 && !(best >= -0.5 * options_.reset_gate * options_.reset_gate);
+  const Eigen::ArrayXd log_weights = exponents.array() + translation_.weights.log().array();
+  const Eigen::ArrayXd weights = (log_weights - log_weights.maxCoeff()).exp();
+  const double effective = weights.sum() * weights.sum() / weights.square().sum();
+  if (unreached || !(effective < min_effective_share * static_cast<double>(translation_.size())))
+    return update_with_measurement(position, orientation);
+
+  const double sigma = options_.observation_noise_translation;
+  const TranslationMoments prior = translation_moments();
+  const Eigen::Matrix3d innovation = prior.covariance + sigma * sigma * Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d gain = innovation.ldlt().solve(prior.covariance).transpose();
+  const Eigen::Vector3d mean = prior.mean + gain * (position - prior.mean);
+  Eigen::Matrix3d covariance = (Eigen::Matrix3d::Identity() - gain) * prior.covariance;
+  covariance = 0.5 * (covariance + covariance.transpose()).eval();
+  const Eigen::Matrix3d root = covariance.llt().matrixL();
+  scatter_around(translation_, Eigen::Vector3d::Zero(), 1.0, noise_);
+  translation_.states = (root * translation_.states).colwise() + mean;
+  translation_.columns.setZero();
+  translation_reweighted_ = translation_underflow_ = false;
+  translation_best_exponent_ = best;
+
+  reweight_rotation(orientation);
+  const PortionsReset reset = reset_unreached(position, orientation, 0.0, rotation_best_exponent_);
+  translation_reset_ = false;
+  translation_gaussian_ = true;
   return reset.any();
 }
 

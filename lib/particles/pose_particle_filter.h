@@ -118,6 +118,16 @@ class PoseParticleFilter {
   /// resetting). Returns whether any portion was reset.
   bool update_with_measurement(const Eigen::Vector3d& position,
                                const Eigen::Quaterniond& orientation);
+  /// The same, except where the translation likelihood would leave fewer than
+  /// `min_effective_share` of the translation particles effective (a measurement in the cloud's
+  /// far tail, whose weights would collapse onto the few particles nearest it and report their
+  /// tiny spread). That portion then takes the Gaussian posterior of its own mean and covariance
+  /// and the measurement (a Kalman update with the observation noise) and is drawn anew from it
+  /// with uniform weights. A measurement beyond reset_gate is reset as before.
+  bool update_with_measurement(const Eigen::Vector3d& position,
+                               const Eigen::Quaterniond& orientation, double min_effective_share);
+  /// Whether the last update_with_measurement took the translation's Gaussian posterior.
+  bool translation_took_gaussian_posterior() const { return translation_gaussian_; }
   /// Sensor resetting alone, given the best exponent of each portion (-d^2/2 for the particle
   /// nearest the measurement, in sigmas): a portion whose best is below -reset_gate^2/2 is
   /// scattered around the measurement with uniform weights and its columns at 0.
@@ -166,6 +176,7 @@ class PoseParticleFilter {
   RotationParticles rotation_;
   bool translation_reweighted_ = false;
   bool rotation_reweighted_ = false;
+  bool translation_gaussian_ = false;
   double translation_best_exponent_ = 0.0;  ///< of the last reweight, for sensor resetting
   double rotation_best_exponent_ = 0.0;
   bool translation_reset_ = false;      ///< by the last update_with_measurement

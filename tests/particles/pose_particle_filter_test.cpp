@@ -1,6 +1,7 @@
 // The pose particle filter's steps for estimators with a per-particle state of their own:
 // columns carried through normalise-and-resample and summarised before it, sensor resetting on
-// given exponents, per-particle spreads, the estimator's own likelihood.
+// given exponents, per-particle spreads, the estimator's own likelihood, the Gaussian posterior
+// where a measurement falls in the cloud's far tail.
 
 #include "opf/particles/pose_particle_filter.h"
 
@@ -88,6 +89,56 @@ TEST(PoseParticleFilter, ExponentsAreTheUpdatesOwn) {
                         wb = b.translation().weights.linear();
   EXPECT_LT((wa - wb).cwiseAbs().maxCoeff(), 1e-15);
   EXPECT_GT(wa.maxCoeff(), 2.0 * wa.minCoeff());  // and the measurement did weigh the particles
+}
+
+// A cloud of 20 mm per axis (the spread a gap left) and a measurement 80 mm off along x, inside
+// the 5-sigma reset gate of the 10 mm observation noise. The exact posterior is Gaussian: its
+// mean 0.8 of the way to the measurement (gain 400 / (400 + 100)), 64 mm, and its spread
+// sqrt(400 * 100 / 500) = 8.9 mm. Few of the 5000 particles lie there (3.2 sigmas out).
+TEST(PoseParticleFilter, AMeasurementInTheCloudsFarTailTakesTheGaussianPosterior) {
+  const Eigen::Vector3d prior(0.1, 0.2, 0.3), z = prior + Eigen::Vector3d(0.08, 0.0, 0.0);
+  const auto widened = [&] {
+    PoseParticleFilter filter = small_filter(5000);  // scattered with the 10 mm noise
+    auto& states = filter.translation().states;
+    const Eigen::Vector3d mean = filter.translation_moments().mean;
+    states = ((states.colwise() - mean) * 2.0).colwise() + prior;
+    return filter;
+  };
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  const double variance = widened().translation_moments().covariance(0, 0);
+  ASSERT_NEAR(std::sqrt(variance), 0.02, 0.0005);
+  const double noise = 0.01 * 0.01, gain = variance / (variance + noise);
+  const double exact_mean = prior.x() + gain * 0.08, exact_sd = std::sqrt(variance * (1 - gain));
+
+  // Reweighted, the few particles nearest the measurement fall short of the posterior and
+  // report a spread much narrower than its (the failure this guards against).
+  PoseParticleFilter reweighted = widened();
+  EXPECT_FALSE(reweighted.update_with_measurement(z, identity, 0.0));
+  EXPECT_FALSE(reweighted.translation_took_gaussian_posterior());
+  reweighted.normalise_and_resample();
+  const TranslationMoments short_of = reweighted.translation_moments();
+  EXPECT_LT(short_of.mean.x(), exact_mean - 0.005);
+  EXPECT_LT(std::sqrt(short_of.covariance(0, 0)), 0.7 * exact_sd);
+
+  PoseParticleFilter gaussian = widened();
+  EXPECT_FALSE(gaussian.update_with_measurement(z, identity, 0.01));
+  EXPECT_TRUE(gaussian.translation_took_gaussian_posterior());
+  EXPECT_FALSE(gaussian.translation_was_reset());
+  EXPECT_TRUE(gaussian.translation().weights.uniform());
+  gaussian.normalise_and_resample();
+  const TranslationMoments posterior = gaussian.translation_moments();
+  // The mean within 1 mm (about 0.3 mm of standard error: the prior's sampled moments and 5000
+  // draws), the spread within 3% (1%), y and z where the prior had them.
+  EXPECT_NEAR(posterior.mean.x(), exact_mean, 0.001);
+  EXPECT_NEAR(std::sqrt(posterior.covariance(0, 0)), exact_sd, 0.03 * exact_sd);
+  EXPECT_NEAR(posterior.mean.y(), prior.y(), 0.001);
+  EXPECT_NEAR(posterior.mean.z(), prior.z(), 0.001);
+
+  // A measurement the cloud covers is reweighted as always.
+  PoseParticleFilter covered = widened();
+  EXPECT_FALSE(covered.update_with_measurement(prior, identity, 0.01));
+  EXPECT_FALSE(covered.translation_took_gaussian_posterior());
+  EXPECT_FALSE(covered.translation().weights.uniform());
 }
 
 }  // namespace
