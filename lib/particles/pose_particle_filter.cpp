@@ -226,9 +226,11 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   const Eigen::Vector3d mean = prior.mean + gain * (position - prior.mean);
   Eigen::Matrix3d covariance = (Eigen::Matrix3d::Identity() - gain) * prior.covariance;
   covariance = 0.5 * (covariance + covariance.transpose()).eval();
-  const Eigen::Matrix3d root = covariance.llt().matrixL();
+  const Eigen::LLT<Eigen::Matrix3d> root(covariance);
+  if (root.info() != Eigen::Success || !mean.allFinite())  // a degenerate cloud: reweight it
+    return update_with_measurement(position, orientation);
   scatter_around(translation_, Eigen::Vector3d::Zero(), 1.0, noise_);
-  translation_.states = (root * translation_.states).colwise() + mean;
+  translation_.states = (root.matrixL() * translation_.states).colwise() + mean;
   translation_.columns.setZero();
   translation_reweighted_ = translation_underflow_ = false;
   translation_best_exponent_ = best;

@@ -141,5 +141,20 @@ TEST(PoseParticleFilter, AMeasurementInTheCloudsFarTailTakesTheGaussianPosterior
   EXPECT_FALSE(covered.translation().weights.uniform());
 }
 
+// A cloud flat in z (every particle at the same height) has no Gaussian posterior to draw from
+// (its covariance is singular): it is reweighted, and stays finite.
+TEST(PoseParticleFilter, AFlatCloudInTheFarTailIsReweighted) {
+  PoseParticleFilter filter = small_filter(5000);
+  auto& states = filter.translation().states;
+  states = (states * 2.0).eval();
+  states.row(2).setConstant(0.3);
+  const Eigen::Vector3d z = filter.translation_moments().mean + Eigen::Vector3d(0.08, 0.0, 0.0);
+  filter.update_with_measurement(z, Eigen::Quaterniond::Identity(), 0.01);
+  EXPECT_FALSE(filter.translation_took_gaussian_posterior());
+  filter.normalise_and_resample();
+  EXPECT_TRUE(filter.translation_moments().mean.allFinite());
+  EXPECT_TRUE(filter.translation().states.allFinite());
+}
+
 }  // namespace
 }  // namespace opf
