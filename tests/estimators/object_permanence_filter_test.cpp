@@ -613,6 +613,24 @@ TEST(ObjectPermanenceFilter, ThePredictionStartsAtTheLastEstimate) {
   EXPECT_LT((first - last - Eigen::Vector3d(0.0, 0.2 / 30.0, 0.0)).norm(), 0.002);
 }
 
+// A ball rolling at 0.2 m/s along y at 30 Hz whose velocity wanders (white random acceleration
+// of `intensity` m/s^2/sqrt(Hz) in the plane), as a scripted object's position; hidden in
+// frames [hidden_from, hidden_to).
+ScriptedObject wandering_ball(std::uint64_t seed, double intensity, int frames, int hidden_from,
+                              int hidden_to) {
+  Random wander(seed);
+  std::vector<Eigen::Vector3d> path{Eigen::Vector3d(0.3, -0.3, 0.0)};
+  Eigen::Vector3d v(0.0, 0.2, 0.0);
+  for (int k = 1; k < frames; ++k) {
+    v += intensity * std::sqrt(1.0 / 30.0) * Eigen::Vector3d(wander.normal(), wander.normal(), 0.0);
+    path.push_back(path.back() + v / 30.0);
+  }
+  ScriptedObject ball{
+      "ball", [path](double t) { return path[static_cast<std::size_t>(std::lround(t * 30))]; }};
+  ball.visible = [=](int k) { return k < hidden_from || k >= hidden_to; };
+  return ball;
+}
+
 // While hidden, the reported position covariance says how far off the estimate may be: over
 // seeds, 90% of the hidden frames lie within 2 sqrt(trace) (an honest 3-D Gaussian: 99%), with a
 // median error / sqrt(trace) of at least 0.25 (not useless caution). The ball turns as it rolls
@@ -622,19 +640,12 @@ TEST(ObjectPermanenceFilter, HiddenUncertaintyCoversTheError) {
   int covered = 0, hidden = 0;
   std::vector<double> ratios;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    Random wander(seed);
-    std::vector<Eigen::Vector3d> path{Eigen::Vector3d(0.3, -0.3, 0.0)};
-    Eigen::Vector3d v(0.0, 0.2, 0.0);
-    for (int k = 1; k < 130; ++k) {
-      v += 0.1 * std::sqrt(1.0 / 30.0) * Eigen::Vector3d(wander.normal(), wander.normal(), 0.0);
-      path.push_back(path.back() + v / 30.0);
-    }
     Scene scene;
     scene.frames = 130;
-    scene.objects.push_back(
-        {"ball", [path](double t) { return path[static_cast<std::size_t>(std::lround(t * 30))]; },
-         [](double t) { return so3::exp(Eigen::Vector3d(2.0 * t, 0.0, 0.0)); },
-         [](int k) { return k < 70 || k >= 100; }});
+    scene.objects.push_back(wandering_ball(seed, 0.1, scene.frames, 70, 100));
+    scene.objects.back().orientation = [](double t) {
+      return so3::exp(Eigen::Vector3d(2.0 * t, 0.0, 0.0));
+    };
     const SceneRun opf = run(scene, opf_factory(OpfOptions{}), seed);
     for (int k = 70; k < 100; ++k) {
       const Estimate& e = opf.estimates[k].at("ball");
@@ -700,20 +711,10 @@ TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) 
   reweighting.reacquisition_gaussian_share = 0.0;
   double worst_reweighted = 0.0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-    Random wander(seed);
-    std::vector<Eigen::Vector3d> path{Eigen::Vector3d(0.3, -0.3, 0.0)};
-    Eigen::Vector3d v(0.0, 0.2, 0.0);
-    for (int k = 1; k < 101; ++k) {
-      v += 0.3 * std::sqrt(1.0 / 30.0) * Eigen::Vector3d(wander.normal(), wander.normal(), 0.0);
-      path.push_back(path.back() + v / 30.0);
-    }
     Scene scene;
     scene.frames = 101;
     scene.noise_translation = 0.005;
-    scene.objects.push_back(
-        {"ball", [path](double t) { return path[static_cast<std::size_t>(std::lround(t * 30))]; },
-         [](double) { return Eigen::Quaterniond::Identity(); },
-         [](int k) { return k < 70 || k >= 100; }});
+    scene.objects.push_back(wandering_ball(seed, 0.3, scene.frames, 70, 100));
     const SceneRun gaussian = run(scene, opf_factory(OpfOptions{}), seed);
     const SceneRun reweighted = run(scene, opf_factory(reweighting), seed);
     const auto spread = [](const SceneRun& r, int k) {
