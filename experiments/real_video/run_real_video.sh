@@ -13,7 +13,9 @@
 #
 # Usage: experiments/real_video/run_real_video.sh OUT_DIR
 #   OPF=path/to/opf (default <repo>/build/bin/opf), SEEDS=5, ESTIMATORS=opf,pf,cvkf,oapf,
-#   PHASES=10 (0: no phase sweep), CLIPS="box vtest cup" (a subset runs only those)
+#   PHASES=10 (0: no phase sweep), CLIPS="box vtest cup" (a subset runs only those),
+#   EVERY=1 (N: keep every Nth frame of each clip's detections, a slower log of the same motion:
+#   box.mp4 at 10 Hz with EVERY=3)
 # Writes into OUT_DIR: clips/ (decompressed clips), <clip>.csv (the detections, the ground truth),
 # <clip>_<dropout>.csv (the dropped logs), <clip>_<dropout>.txt (evaluate's output),
 # overlay_<clip>/ (every 30th frame with the segmentation drawn), phases/ (the shifted logs and
@@ -31,6 +33,8 @@ opf="${OPF:-$repo/build/bin/opf}"
 seeds="${SEEDS:-5}"
 estimators="${ESTIMATORS:-opf,pf,cvkf,oapf}"
 phases="${PHASES:-10}"
+every="${EVERY:-1}"
+[[ "$every" =~ ^[1-9][0-9]*$ ]] || { echo "$0: EVERY must be a positive integer, not '$every'" >&2; exit 2; }
 read -r -a wanted <<<"${CLIPS:-box vtest cup}"
 out="$1"
 [ -x "$opf" ] || { echo "$0: no opf binary at $opf (build it, or set OPF)" >&2; exit 1; }
@@ -59,11 +63,11 @@ find_clip() {
 # Fails unless the log has at least 100 detections and one in >= 90% of the frames between its
 # first and last (the frame interval being the smallest step of t).
 check_log() {
-  awk -F, -v file="$1" '
+  awk -F, -v file="$1" -v least=$((100 / every)) '
     NR == 1 { next }
     $3 != "" { t[n++] = $1 + 0 }
     END {
-      if (n < 100) { printf "%s: only %d detections\n", file, n > "/dev/stderr"; exit 1 }
+      if (n < least) { printf "%s: only %d detections\n", file, n > "/dev/stderr"; exit 1 }
       dt = 1e9
       for (i = 1; i < n; i++) if (t[i] - t[i-1] > 0 && t[i] - t[i-1] < dt) dt = t[i] - t[i-1]
       span = int((t[n-1] - t[0]) / dt + 0.5) + 1
@@ -98,6 +102,13 @@ for entry in "${clips[@]}"; do
   "$opf" detect --video "$video" --objects "$here/$spec" --out "$log" $extra \
     --overlay "$out/overlay_$clip" --overlay-every 30 2>"$out/${clip}_detect.log" |
     tee -a "$summary"
+  if ((every > 1)); then
+    # Every Nth frame of the detections (rows of one frame share its t; the first frame is kept).
+    awk -F, -v n="$every" 'NR == 1 { print; next }
+      NR == 2 || $1 != last { last = $1; keep = (frames++ % n == 0) } keep' "$log" >"$log.every" &&
+      mv "$log.every" "$log"
+    echo "kept one frame in $every of the detections" | tee -a "$summary"
+  fi
   check_log "$log" | tee -a "$summary"
   t0="$(awk -F, 'NR == 2 { print $1; exit }' "$log")"
   start="$(awk -v t="$t0" 'BEGIN { printf "%.9g", t + 1.0 }')"

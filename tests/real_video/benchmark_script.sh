@@ -2,7 +2,8 @@
 # The real-video benchmark script on one clip (box.mp4 from opencv-doc), one seed, three
 # placements of the dropout windows: the detections, both dropped logs, one phases.csv row per
 # dropout, placement and estimator, the first placement equal to the main table's run (same
-# windows, same seed), the other placements shifted by period / 3, and the placements' table.
+# windows, same seed), the other placements shifted by period / 3, and the placements' table;
+# then the same clip thinned to one frame in three (EVERY=3), and EVERY=0 refused.
 #   bash tests/real_video/benchmark_script.sh SOURCE_DIR OPF
 set -euo pipefail
 source_dir="$1"
@@ -41,4 +42,22 @@ paired="$(awk -F, 'NR > 1 && $2 == "0.6" { e[$3, $5] = $6; n[$3] = 1 }
   END { for (k in n) { s += e[k, "opf"] - e[k, "cvkf"]; c++ } printf "%+.2f", 1000 * s / c }' \
   "$out/phases.csv")"
 [[ "$row" == *"| $paired ± "* ]] || fail "paired difference: row '$row', from phases.csv $paired"
-echo "real-video benchmark script: $rows placement rows, first placement = main run"
+# A slower log of the same motion (EVERY=3): one frame in three of the detections, the first
+# kept, so 152 of box.mp4's 455 frames at 3 frame intervals.
+slow="$out/every3"
+OPF="$opf" CLIPS=box SEEDS=1 ESTIMATORS=opf PHASES=0 EVERY=3 \
+  bash "$source_dir/experiments/real_video/run_real_video.sh" "$slow" >"$out/every3.log" 2>&1 ||
+  { cat "$out/every3.log" >&2; exit 1; }
+kept="$(($(wc -l <"$slow/box.csv") - 1))"
+[ "$kept" -eq 152 ] || fail "EVERY=3 kept $kept rows of box.csv, expected 152"
+awk -F, 'NR == FNR { if (FNR > 1) full[FNR - 2] = $1; next }
+  FNR > 1 && $1 != full[3 * (FNR - 2)] { bad = 1 } END { exit bad }' "$out/box.csv" "$slow/box.csv" ||
+  fail "EVERY=3 did not keep frames 0, 3, 6, ..."
+grep -q "kept one frame in 3 of the detections" "$slow/table.md" || fail "EVERY=3 not in table.md"
+[ -s "$slow/box_0.6.txt" ] || fail "EVERY=3: no evaluation"
+if EVERY=0 OPF="$opf" bash "$source_dir/experiments/real_video/run_real_video.sh" "$out/bad" \
+  2>"$out/bad.log"; then
+  fail "EVERY=0 accepted"
+fi
+grep -q "EVERY must be a positive integer" "$out/bad.log" || fail "EVERY=0: no clear error"
+echo "real-video benchmark script: $rows placement rows, first placement = main run; EVERY=3 kept 152 frames"
