@@ -60,8 +60,8 @@ find_clip() {
   fi
 }
 
-# Fails unless the log has at least 100 detections and one in >= 90% of the frames between its
-# first and last (the frame interval being the smallest step of t).
+# Fails unless the log has at least 100 / EVERY detections and one in >= 90% of the frames between
+# its first and last (the frame interval being the smallest step of t).
 check_log() {
   awk -F, -v file="$1" -v least=$((100 / every)) '
     NR == 1 { next }

@@ -211,12 +211,11 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   if (!(min_effective_share > 0.0)) return update_with_measurement(position, orientation);
   const Eigen::VectorXd exponents = translation_exponents(position);
   const double best = exponents.maxCoeff();
-  const bool unreached =
-      options_.reset_gate > 0.0 && !(best >= -0.5 * options_.reset_gate * options_.reset_gate);
   const Eigen::ArrayXd log_weights = exponents.array() + translation_.weights.log().array();
   const Eigen::ArrayXd weights = (log_weights - log_weights.maxCoeff()).exp();
   const double effective = weights.sum() * weights.sum() / weights.square().sum();
-  if (unreached || !(effective < min_effective_share * static_cast<double>(translation_.size())))
+  if (beyond_reset_gate(best) ||
+      !(effective < min_effective_share * static_cast<double>(translation_.size())))
     return update_with_measurement(position, orientation);
 
   const double sigma = options_.observation_noise_translation;
@@ -242,20 +241,23 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   return reset.any();
 }
 
+bool PoseParticleFilter::beyond_reset_gate(double best_exponent) const {
+  return options_.reset_gate > 0.0 &&
+         best_exponent < -0.5 * options_.reset_gate * options_.reset_gate;
+}
+
 PortionsReset PoseParticleFilter::reset_unreached(const Eigen::Vector3d& position,
                                                   const Eigen::Quaterniond& orientation,
                                                   double translation_best_exponent,
                                                   double rotation_best_exponent) {
   PortionsReset reset;
-  if (!(options_.reset_gate > 0.0)) return reset;
-  const double threshold = -0.5 * options_.reset_gate * options_.reset_gate;
-  if (translation_best_exponent < threshold) {
+  if (beyond_reset_gate(translation_best_exponent)) {
     scatter_around(translation_, position, options_.observation_noise_translation, noise_);
     translation_.columns.setZero();
     translation_reweighted_ = translation_underflow_ = false;  // the reset replaced the weights
     reset.translation = true;
   }
-  if (rotation_best_exponent < threshold) {
+  if (beyond_reset_gate(rotation_best_exponent)) {
     scatter_around(rotation_, orientation, rotation_likelihood_noise_, noise_);
     rotation_.columns.setZero();
     rotation_reweighted_ = rotation_underflow_ = false;

@@ -168,6 +168,10 @@ class PoseParticleFilter {
   const RotationParticles& rotation() const { return rotation_; }
 
  private:
+  /// Whether a portion's best exponent (-d^2/2, in sigmas) puts the measurement beyond
+  /// options().reset_gate of every particle (never with the gate at 0).
+  bool beyond_reset_gate(double best_exponent) const;
+
   PoseParticleFilterOptions options_;
   double rotation_likelihood_noise_;  ///< rad: options_' value unless set_rotation_likelihood_noise
   Random random_;                     ///< resampling draws
