@@ -41,7 +41,7 @@ ObjectPermanenceFilter::ObjectPermanenceFilter(const OpfOptions& options, std::s
     : options_(options),
       object_(std::move(object)),
       seed_(seed),
-      rotation_jitter_(options.dynamics.selection.history_window) {
+      detector_jitter_(options.dynamics.selection.history_window) {
   validate(options_);
 }
 
@@ -51,7 +51,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
                            CovarianceInflation(options_.uncertainty));
   hypotheses_[0].filter.initialise(translation_of(first), orientation_of(first));
   history_.clear();
-  rotation_jitter_.clear();
+  detector_jitter_.clear();
   confirmed_motion_.reset();
   t_ = t;
   hidden_ = false;
@@ -64,7 +64,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
 void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
                                       const Estimate& estimate) {
-  rotation_jitter_.add(t, orientation);
+  detector_jitter_.add(t, position, orientation);
   history_.push_back({t, position, orientation, translation_of(estimate.pose.mean),
                       orientation_of(estimate.pose.mean)});
   if (options_.dynamics.predictor == DynamicsPredictor::kPaper) {
@@ -89,15 +89,26 @@ void ObjectPermanenceFilter::predict_with_recent_velocity(Hypothesis& h, double 
   h.filter.predict(dt, velocity->linear * dt, turn.normalized());
 }
 
+// The detector's jitter is never taken wider than configured (a moving object's differences
+// hold some of its motion, so the estimate is an upper bound), nor narrower than a tenth of it:
+// 5000 particles diffused by the random walk cannot resolve a likelihood much narrower than their
+// step.
+constexpr double kJitterFloorShare = 0.1;
+
 void ObjectPermanenceFilter::adapt_rotation_noise(Hypothesis& h) {
-  const auto sigma = rotation_jitter_.sigma();
+  const auto sigma = detector_jitter_.rotation_sigma();
   if (!sigma) return;
-  // Never wider than configured (a turning object's differences hold some of its motion, so the
-  // estimate is an upper bound), nor narrower than a tenth of it: 5000 particles diffused by the
-  // random walk cannot resolve a likelihood much narrower than their step.
-  constexpr double kFloorShare = 0.1;
   const double configured = options_.particles.observation_noise_rotation;
-  h.filter.set_rotation_likelihood_noise(std::clamp(*sigma, kFloorShare * configured, configured));
+  h.filter.set_rotation_likelihood_noise(
+      std::clamp(*sigma, kJitterFloorShare * configured, configured));
+}
+
+void ObjectPermanenceFilter::adapt_translation_noise(Hypothesis& h) {
+  const auto sigmas = detector_jitter_.translation_sigmas();
+  if (!sigmas) return;
+  const double configured = options_.particles.observation_noise_translation;
+  h.filter.set_translation_likelihood_noise(
+      sigmas->cwiseMax(kJitterFloorShare * configured).cwiseMin(configured));
 }
 
 Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* measurement,
@@ -127,6 +138,7 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     Hypothesis& h = hypotheses_[0];
     const Source hidden_by = h.source;
     if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
+    if (options_.adaptive_translation_noise) adapt_translation_noise(h);
     const bool lost = h.filter.update_with_measurement(
         position, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
     if (h.filter.translation_was_reset())

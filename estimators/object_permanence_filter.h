@@ -9,7 +9,7 @@
 #include "opf/core/estimator.h"
 #include "opf/estimators/opf_options.h"
 #include "opf/particles/pose_particle_filter.h"
-#include "opf/permanence/rotation_jitter.h"
+#include "opf/permanence/detector_jitter.h"
 
 #include <cstdint>
 #include <deque>
@@ -87,6 +87,7 @@ class ObjectPermanenceFilter final : public Estimator {
   void predict_with_recent_velocity(Hypothesis& hypothesis, double dt);
   /// The rotation likelihood's spread from the detector's own jitter (adaptive_rotation_noise).
   void adapt_rotation_noise(Hypothesis& hypothesis);
+  void adapt_translation_noise(Hypothesis& hypothesis);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 const Estimate& estimate);
   void follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
@@ -102,7 +103,7 @@ class ObjectPermanenceFilter final : public Estimator {
   std::uint64_t spawned_ = 0;
   std::vector<Hypothesis> hypotheses_;  ///< [0] is the object's main estimate
   std::deque<MotionSample> history_;    ///< measured frames: measurement and estimate
-  RotationJitter rotation_jitter_;      ///< the detector's rotation noise, for the likelihood
+  DetectorJitter detector_jitter_;      ///< the detector's own noise, for the likelihood
   /// The dynamics module's last prediction, kept when the object was seen again where it said
   /// (no translation reset): a glimpse too brief to fit anything new continues it.
   std::optional<MotionPrediction> confirmed_motion_;

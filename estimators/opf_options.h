@@ -64,10 +64,14 @@ struct OpfOptions {
   bool velocity_drift = true;
   double velocity_window = 0.3;  ///< s
   /// While the object is visible, its rotation's observation noise is the detector's own jitter
-  /// (permanence/rotation_jitter.h) over the last history_window seconds, between a tenth of the
+  /// (permanence/detector_jitter.h) over the last history_window seconds, between a tenth of the
   /// configured observation_noise.rotation and that value: a likelihood wider than the detector's
   /// noise trails every turn by a share of it. false: the configured value, always (the paper's).
   bool adaptive_rotation_noise = true;
+  /// The same for translation, per world axis (a depth read from an object's size jitters far
+  /// more than its image-plane position): between a tenth of observation_noise.translation and
+  /// that value. false: the configured value on every axis (the paper's).
+  bool adaptive_translation_noise = false;
   /// At the onset of a predicted motion (the selected predictor), narrow the translation
   /// particles about their mean, per axis, to uncertainty_scale times what the history shows of
   /// the estimate's error (its RMS distance from the measurements, with the detector's noise
@@ -110,6 +114,7 @@ void describe_options(Visitor& v, OpfOptions& o) {
   v.flag("carry_particles", o.carry_particles);
   v.flag("velocity_drift", o.velocity_drift);
   v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
+  v.flag("adaptive_translation_noise", o.adaptive_translation_noise);
   v.flag("measured_onset_spread", o.measured_onset_spread);
   v.number("reacquisition_gaussian_share", o.reacquisition_gaussian_share,
            between(0.0, 1.0, "a share from 0 to 1"));

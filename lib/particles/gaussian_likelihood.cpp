@@ -13,6 +13,31 @@ double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d&
                                         -0.5 / variance, log_w, accumulate);
 }
 
+namespace {
+
+std::array<double, 3> per_axis_scales(const Eigen::Vector3d& variances) {
+  return {-0.5 / variances.x(), -0.5 / variances.y(), -0.5 / variances.z()};
+}
+
+}  // namespace
+
+double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                         const Eigen::Vector3d& variances) {
+  bool accumulate = true;
+  double* log_w = particles.weights.for_likelihood(accumulate);
+  return kernels::translation_exponents(particles.states.data(), particles.size(),
+                                        {measurement.x(), measurement.y(), measurement.z()},
+                                        per_axis_scales(variances), log_w, accumulate);
+}
+
+double gaussian_exponents(const TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                          const Eigen::Vector3d& variances, Eigen::VectorXd& exponents) {
+  exponents.resize(particles.states.cols());
+  return kernels::translation_exponents(particles.states.data(), particles.size(),
+                                        {measurement.x(), measurement.y(), measurement.z()},
+                                        per_axis_scales(variances), exponents.data(), false);
+}
+
 double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
                          double variance) {
   const Eigen::Quaterniond z = measurement.normalized();

@@ -17,6 +17,9 @@ double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d&
                          double variance);
 double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
                          double variance);
+/// A diagonal Q: a variance per world axis.
+double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                         const Eigen::Vector3d& variances);
 
 /// The exponents alone, -0.5 d_i^2 / variance per particle, into `exponents` (weights
 /// untouched); returns the largest.
@@ -24,5 +27,7 @@ double gaussian_exponents(const TranslationParticles& particles, const Eigen::Ve
                           double variance, Eigen::VectorXd& exponents);
 double gaussian_exponents(const RotationParticles& particles, const Eigen::Quaterniond& measurement,
                           double variance, Eigen::VectorXd& exponents);
+double gaussian_exponents(const TranslationParticles& particles, const Eigen::Vector3d& measurement,
+                          const Eigen::Vector3d& variances, Eigen::VectorXd& exponents);
 
 }  // namespace opf

@@ -70,6 +70,26 @@ OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t 
       });
 }
 
+OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t n,
+                                        const std::array<double, 3>& z,
+                                        const std::array<double, 3>& scale, double* __restrict out,
+                                        bool accumulate) {
+  const double zx = z[0], zy = z[1], zz = z[2];
+  const double sx = scale[0], sy = scale[1], sz = scale[2];
+  return write_exponent_blocks<double>(
+      n, out, accumulate,
+      [=](std::size_t begin, std::size_t size, double* __restrict block) OPF_INLINE_LAMBDA {
+        const double* __restrict px = x + begin;
+        const double* __restrict py = x + n + begin;
+        const double* __restrict pz = x + 2 * n + begin;
+#pragma omp simd
+        for (std::size_t j = 0; j < size; ++j) {
+          const double dx = px[j] - zx, dy = py[j] - zy, dz = pz[j] - zz;
+          block[j] = sx * (dx * dx) + sy * (dy * dy) + sz * (dz * dz);
+        }
+      });
+}
+
 OPF_KERNEL double rotation_exponents(const float* __restrict q, std::size_t n,
                                      const std::array<double, 4>& z, double scale,
                                      double* __restrict out, bool accumulate) {

@@ -15,6 +15,10 @@ namespace opf::kernels {
 double translation_exponents(const double* x, std::size_t n, const std::array<double, 3>& z,
                              double scale, double* out, bool accumulate);
 
+/// The same with a scale per axis: out[i] (+)= sum_a scale[a] (x_i - z)_a^2 (a diagonal Q).
+double translation_exponents(const double* x, std::size_t n, const std::array<double, 3>& z,
+                             const std::array<double, 3>& scale, double* out, bool accumulate);
+
 /// out[i] (+)= scale * theta_i^2 with theta_i the geodesic angle between q_i and z; returns the
 /// largest such exponent.
 double rotation_exponents(const float* q, std::size_t n, const std::array<double, 4>& z,

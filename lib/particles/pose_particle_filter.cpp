@@ -65,6 +65,8 @@ void validate(const PoseParticleFilterOptions& options) {
 
 PoseParticleFilter::PoseParticleFilter(const PoseParticleFilterOptions& options, std::uint64_t seed)
     : options_(options),
+      translation_likelihood_noise_(
+          Eigen::Vector3d::Constant(options.observation_noise_translation)),
       rotation_likelihood_noise_(options.observation_noise_rotation),
       random_(seed),
       noise_(derive_seed(seed, 1)) {
@@ -104,6 +106,17 @@ void PoseParticleFilter::predict_rotation(double dt) {
 void PoseParticleFilter::set_rotation_likelihood_noise(double sigma) {
   OptionChecker("particle filter").number("observation_noise.rotation", sigma, positive());
   rotation_likelihood_noise_ = sigma;
+}
+
+void PoseParticleFilter::set_translation_likelihood_noise(const Eigen::Vector3d& sigma) {
+  const OptionChecker check("particle filter");
+  for (int axis = 0; axis < 3; ++axis)
+    check.number("observation_noise.translation", sigma(axis), positive());
+  translation_likelihood_noise_ = sigma;
+}
+
+bool PoseParticleFilter::translation_likelihood_isotropic() const {
+  return (translation_likelihood_noise_.array() == options_.observation_noise_translation).all();
 }
 
 void PoseParticleFilter::predict_per_particle(const Eigen::VectorXd& translation_sigmas,
@@ -153,7 +166,10 @@ void PoseParticleFilter::reweight_translation(const Eigen::Vector3d& position,
                                               double covariance_scale) {
   const double sigma = options_.observation_noise_translation;
   translation_best_exponent_ =
-      reweight_gaussian(translation_, position, covariance_scale * sigma * sigma);
+      translation_likelihood_isotropic()
+          ? reweight_gaussian(translation_, position, covariance_scale * sigma * sigma)
+          : reweight_gaussian(translation_, position,
+                              covariance_scale * translation_likelihood_noise_.cwiseAbs2());
   translation_reweighted_ = true;
   // Negated `>=` so that a NaN exponent (a non-finite measurement) counts as underflow too.
   translation_underflow_ =
@@ -173,7 +189,11 @@ void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation
 Eigen::VectorXd PoseParticleFilter::translation_exponents(const Eigen::Vector3d& position) const {
   const double sigma = options_.observation_noise_translation;
   Eigen::VectorXd exponents;
-  gaussian_exponents(translation_, position, sigma * sigma, exponents);
+  if (translation_likelihood_isotropic())
+    gaussian_exponents(translation_, position, sigma * sigma, exponents);
+  else
+    gaussian_exponents(translation_, position, translation_likelihood_noise_.cwiseAbs2(),
+                       exponents);
   return exponents;
 }
 
@@ -218,9 +238,9 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
       !(effective < min_effective_share * static_cast<double>(translation_.size())))
     return update_with_measurement(position, orientation);
 
-  const double sigma = options_.observation_noise_translation;
   const TranslationMoments prior = translation_moments();
-  const Eigen::Matrix3d innovation = prior.covariance + sigma * sigma * Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d innovation =
+      prior.covariance + translation_likelihood_noise_.cwiseAbs2().asDiagonal().toDenseMatrix();
   const Eigen::Matrix3d gain = innovation.ldlt().solve(prior.covariance).transpose();
   const Eigen::Vector3d mean = prior.mean + gain * (position - prior.mean);
   Eigen::Matrix3d covariance = (Eigen::Matrix3d::Identity() - gain) * prior.covariance;

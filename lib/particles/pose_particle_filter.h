@@ -73,6 +73,11 @@ class PoseParticleFilter {
   /// value (the uncertainty module's Q and the alert are the sensor's declared noise). Throws
   /// std::invalid_argument unless it is positive and finite.
   void set_rotation_likelihood_noise(double sigma);
+  /// The translation's observation noise per world axis (m), in the likelihood and the Gaussian
+  /// posterior from now on (a detector's depth is often far noisier than its image-plane
+  /// position); the reset gate and scatter keep the configured value. Throws
+  /// std::invalid_argument unless each is positive and finite.
+  void set_translation_likelihood_noise(const Eigen::Vector3d& sigma);
 
   /// A random walk with a spread of its own per particle (m, rad): an estimator whose particles
   /// move differently by their own state (the occlusion-aware PF's widening search).
@@ -170,9 +175,12 @@ class PoseParticleFilter {
  private:
   /// Whether a portion's best exponent (-d^2/2, in sigmas) puts the measurement beyond
   /// options().reset_gate of every particle (never with the gate at 0).
+  bool translation_likelihood_isotropic() const;
   bool beyond_reset_gate(double best_exponent) const;
 
   PoseParticleFilterOptions options_;
+  /// m per axis: options_' value on every axis unless set_translation_likelihood_noise
+  Eigen::Vector3d translation_likelihood_noise_;
   double rotation_likelihood_noise_;  ///< rad: options_' value unless set_rotation_likelihood_noise
   Random random_;                     ///< resampling draws
   GaussianSampler noise_;             ///< process and initialisation noise, in bulk

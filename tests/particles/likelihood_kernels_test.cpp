@@ -72,5 +72,24 @@ TEST(LikelihoodKernels, TranslationExponentsOverwriteOrAccumulate) {
   for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(out[i], 2.0 * first[i], 1e-14);
 }
 
+// A scale per axis (a diagonal Q): each squared difference by its own axis's scale.
+TEST(LikelihoodKernels, TranslationExponentsWithAScalePerAxis) {
+  const std::size_t n = 1001;  // three whole blocks and a partial one
+  Random random(5);
+  std::vector<double> x(3 * n);
+  for (double& v : x) v = 0.05 * random.normal();
+  std::vector<double> out(n, 5.0);
+  const std::array<double, 3> z{0.01, -0.02, 0.03}, scale{-2.0, -50.0, -0.5};
+  const double best = kernels::translation_exponents(x.data(), n, z, scale, out.data(), true);
+  double expected_best = -1e300;
+  for (std::size_t i = 0; i < n; ++i) {
+    double expected = 0.0;
+    for (std::size_t a = 0; a < 3; ++a) expected += scale[a] * std::pow(x[a * n + i] - z[a], 2);
+    EXPECT_NEAR(out[i], 5.0 + expected, 1e-13) << i;
+    expected_best = std::max(expected_best, expected);
+  }
+  EXPECT_NEAR(best, expected_best, 1e-15);
+}
+
 }  // namespace
 }  // namespace opf

@@ -1,13 +1,15 @@
 // The pose particle filter's steps for estimators with a per-particle state of their own:
 // columns carried through normalise-and-resample and summarised before it, sensor resetting on
 // given exponents, per-particle spreads, the estimator's own likelihood, the Gaussian posterior
-// where a measurement falls in the cloud's far tail.
+// where a measurement falls in the cloud's far tail, a likelihood with a noise per axis.
 
 #include "opf/particles/pose_particle_filter.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace opf {
 namespace {
@@ -139,6 +141,49 @@ TEST(PoseParticleFilter, AMeasurementInTheCloudsFarTailTakesTheGaussianPosterior
   EXPECT_FALSE(covered.update_with_measurement(prior, identity, 0.01));
   EXPECT_FALSE(covered.translation_took_gaussian_posterior());
   EXPECT_FALSE(covered.translation().weights.uniform());
+}
+
+// A detector precise across the image (3 mm) and coarse in depth (10 mm), a cloud of 10 mm per axis
+// and a measurement 6 mm off on every axis: the reweighted cloud's mean is the exact Gaussian
+// posterior's, gains of 100 / 109 across and 1/2 in depth (5.5 and 3 mm), computed from the
+// cloud's own sampled moments. About 700 of the 5000 particles stay effective: standard errors of
+// 0.1 mm across and 0.3 mm in depth. The configured 10 mm on every axis moves x by 3 mm.
+TEST(PoseParticleFilter, ALikelihoodWithANoisePerAxisTrustsEachAxisAsMuch) {
+  PoseParticleFilter filter = small_filter(5000);
+  const TranslationMoments prior = filter.translation_moments();
+  const Eigen::Vector3d z = prior.mean + Eigen::Vector3d::Constant(0.006);
+  const Eigen::Vector3d sigma(0.003, 0.003, 0.01);
+  const Eigen::Matrix3d noise = sigma.cwiseAbs2().asDiagonal();
+  const Eigen::Vector3d exact =
+      prior.mean + prior.covariance * (prior.covariance + noise).ldlt().solve(z - prior.mean);
+  ASSERT_NEAR(exact.x() - prior.mean.x(), 0.0055, 0.0003);
+  ASSERT_NEAR(exact.z() - prior.mean.z(), 0.003, 0.0003);
+
+  filter.set_translation_likelihood_noise(sigma);
+  filter.reweight_translation(z);
+  filter.normalise_and_resample();
+  const Eigen::Vector3d mean = filter.translation_moments().mean;
+  EXPECT_NEAR(mean.x(), exact.x(), 0.0005);
+  EXPECT_NEAR(mean.y(), exact.y(), 0.0005);
+  EXPECT_NEAR(mean.z(), exact.z(), 0.001);
+
+  PoseParticleFilter configured = small_filter(5000);
+  configured.reweight_translation(z);
+  configured.normalise_and_resample();
+  EXPECT_LT(configured.translation_moments().mean.x(), exact.x() - 0.0015);
+
+  // The same noise on every axis is the configured likelihood, to the bit.
+  PoseParticleFilter same = small_filter(64), plain = small_filter(64);
+  same.set_translation_likelihood_noise(Eigen::Vector3d::Constant(0.01));
+  EXPECT_EQ(same.translation_exponents(z), plain.translation_exponents(z));
+  // A noise that is not positive on every axis is refused, naming the option.
+  try {
+    same.set_translation_likelihood_noise(Eigen::Vector3d(0.01, 0.0, 0.01));
+    FAIL() << "a zero noise was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("observation_noise.translation"), std::string::npos)
+        << e.what();
+  }
 }
 
 // A cloud flat in z (every particle at the same height) has no Gaussian posterior to draw from
