@@ -75,8 +75,9 @@ class PoseParticleFilter {
   void set_rotation_likelihood_noise(double sigma);
   /// The translation's observation noise per world axis (m), in the likelihood and the Gaussian
   /// posterior from now on (a detector's depth is often far noisier than its image-plane
-  /// position); the reset gate and scatter keep the configured value. Throws
-  /// std::invalid_argument unless each is positive and finite.
+  /// position). The reset gate counts in these sigmas, as the rotation's does in its own; a reset
+  /// scatters with the configured value. Throws std::invalid_argument unless each is positive and
+  /// finite.
   void set_translation_likelihood_noise(const Eigen::Vector3d& sigma);
 
   /// A random walk with a spread of its own per particle (m, rad): an estimator whose particles
@@ -173,9 +174,11 @@ class PoseParticleFilter {
   const RotationParticles& rotation() const { return rotation_; }
 
  private:
+  /// Whether the translation likelihood's noise is the configured value on every axis (the
+  /// scalar kernel, bit for bit the filter's results before a noise per axis existed).
+  bool translation_likelihood_isotropic() const;
   /// Whether a portion's best exponent (-d^2/2, in sigmas) puts the measurement beyond
   /// options().reset_gate of every particle (never with the gate at 0).
-  bool translation_likelihood_isotropic() const;
   bool beyond_reset_gate(double best_exponent) const;
 
   PoseParticleFilterOptions options_;
