@@ -202,6 +202,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
       "  velocity_drift: false\n"
       "  velocity_window: 0.5\n"
       "  adaptive_rotation_noise: false\n"
+      "  adaptive_translation_noise: true\n"
       "  measured_onset_spread: false\n"
       "  dynamics:\n"
       "    predictor: paper\n"
@@ -225,6 +226,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   EXPECT_FALSE(o.velocity_drift);
   EXPECT_EQ(o.velocity_window, 0.5);
   EXPECT_FALSE(o.adaptive_rotation_noise);
+  EXPECT_TRUE(o.adaptive_translation_noise);
   EXPECT_FALSE(o.measured_onset_spread);
   EXPECT_EQ(o.dynamics.predictor, DynamicsPredictor::kPaper);
   const MotionPredictionOptions& m = o.dynamics.selection;
