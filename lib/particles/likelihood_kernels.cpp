@@ -52,9 +52,11 @@ OPF_ALWAYS_INLINE double write_exponent_blocks(std::size_t n, double* __restrict
 
 }  // namespace
 
-OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t n,
-                                        const std::array<double, 3>& z, double scale,
-                                        double* __restrict out, bool accumulate) {
+// The exponents of a translation portion: exponent(dx, dy, dz) of each particle's offset from z.
+template <class Exponent>
+OPF_ALWAYS_INLINE double translation_blocks(const double* __restrict x, std::size_t n,
+                                            const std::array<double, 3>& z, double* __restrict out,
+                                            bool accumulate, const Exponent& exponent) {
   const double zx = z[0], zy = z[1], zz = z[2];
   return write_exponent_blocks<double>(
       n, out, accumulate,
@@ -63,31 +65,29 @@ OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t 
         const double* __restrict py = x + n + begin;
         const double* __restrict pz = x + 2 * n + begin;
 #pragma omp simd
-        for (std::size_t j = 0; j < size; ++j) {
-          const double dx = px[j] - zx, dy = py[j] - zy, dz = pz[j] - zz;
-          block[j] = scale * (dx * dx + dy * dy + dz * dz);
-        }
+        for (std::size_t j = 0; j < size; ++j)
+          block[j] = exponent(px[j] - zx, py[j] - zy, pz[j] - zz);
       });
+}
+
+OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t n,
+                                        const std::array<double, 3>& z, double scale,
+                                        double* __restrict out, bool accumulate) {
+  return translation_blocks(x, n, z, out, accumulate,
+                            [=](double dx, double dy, double dz) OPF_INLINE_LAMBDA {
+                              return scale * (dx * dx + dy * dy + dz * dz);
+                            });
 }
 
 OPF_KERNEL double translation_exponents(const double* __restrict x, std::size_t n,
                                         const std::array<double, 3>& z,
                                         const std::array<double, 3>& scale, double* __restrict out,
                                         bool accumulate) {
-  const double zx = z[0], zy = z[1], zz = z[2];
   const double sx = scale[0], sy = scale[1], sz = scale[2];
-  return write_exponent_blocks<double>(
-      n, out, accumulate,
-      [=](std::size_t begin, std::size_t size, double* __restrict block) OPF_INLINE_LAMBDA {
-        const double* __restrict px = x + begin;
-        const double* __restrict py = x + n + begin;
-        const double* __restrict pz = x + 2 * n + begin;
-#pragma omp simd
-        for (std::size_t j = 0; j < size; ++j) {
-          const double dx = px[j] - zx, dy = py[j] - zy, dz = pz[j] - zz;
-          block[j] = sx * (dx * dx) + sy * (dy * dy) + sz * (dz * dz);
-        }
-      });
+  return translation_blocks(x, n, z, out, accumulate,
+                            [=](double dx, double dy, double dz) OPF_INLINE_LAMBDA {
+                              return sx * (dx * dx) + sy * (dy * dy) + sz * (dz * dz);
+                            });
 }
 
 OPF_KERNEL double rotation_exponents(const float* __restrict q, std::size_t n,
