@@ -11,7 +11,7 @@ namespace opf {
 namespace {
 
 // A body turning at 2 rad/s about a tilted axis, measured at 30 Hz with `sigma` rad of tangent
-// noise per body axis (`per_axis` scales each axis's share); it stands still.
+// noise per body axis (`per_axis` scales each axis's share); its position does not move.
 DetectorJitter measured_turn(double sigma, const Eigen::Vector3d& per_axis, std::uint64_t seed,
                              int frames = 60, double window = 2.0) {
   Random random(seed);
