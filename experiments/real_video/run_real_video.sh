@@ -15,7 +15,9 @@
 #   OPF=path/to/opf (default <repo>/build/bin/opf), SEEDS=5, ESTIMATORS=opf,pf,cvkf,oapf,
 #   PHASES=10 (0: no phase sweep), CLIPS="box vtest cup" (a subset runs only those),
 #   EVERY=1 (N: keep every Nth frame of each clip's detections, a slower log of the same motion:
-#   box.mp4 at 10 Hz with EVERY=3)
+#   box.mp4 at 10 Hz with EVERY=3), PRESET=default (paper: the paper's literal rules for every
+#   estimator), CONFIG=FILE.yaml (estimator settings on top of the preset, as `opf evaluate
+#   --config`: an ablation on real motion)
 # Writes into OUT_DIR: clips/ (decompressed clips), <clip>.csv (the detections, the ground truth),
 # <clip>_<dropout>.csv (the dropped logs), <clip>_<dropout>.txt (evaluate's output),
 # overlay_<clip>/ (every 30th frame with the segmentation drawn), phases/ (the shifted logs and
@@ -35,6 +37,17 @@ estimators="${ESTIMATORS:-opf,pf,cvkf,oapf}"
 phases="${PHASES:-10}"
 every="${EVERY:-1}"
 [[ "$every" =~ ^[1-9][0-9]*$ ]] || { echo "$0: EVERY must be a positive integer, not '$every'" >&2; exit 2; }
+preset="${PRESET:-default}"
+[[ "$preset" == default || "$preset" == paper ]] ||
+  { echo "$0: PRESET must be default or paper, not '$preset'" >&2; exit 2; }
+settings=(--preset "$preset")
+if [ -n "${CONFIG:-}" ]; then
+  if [ ! -f "$CONFIG" ] || [ ! -r "$CONFIG" ]; then
+    echo "$0: CONFIG: no readable file $CONFIG" >&2
+    exit 2
+  fi
+  settings+=(--config "$(cd "$(dirname "$CONFIG")" && pwd)/$(basename "$CONFIG")")
+fi
 read -r -a wanted <<<"${CLIPS:-box vtest cup}"
 out="$1"
 [ -x "$opf" ] || { echo "$0: no opf binary at $opf (build it, or set OPF)" >&2; exit 1; }
@@ -118,7 +131,7 @@ for entry in "${clips[@]}"; do
       --start "$start" | tee -a "$summary"
     echo "-- $clip, dropouts of $length s every $period s: opf evaluate"
     "$opf" evaluate --in "$dropped" --truth "$log" --seeds "$seeds" --estimators "$estimators" \
-      >"$out/${clip}_${length}.txt"
+      "${settings[@]}" >"$out/${clip}_${length}.txt"
     cat "$out/${clip}_${length}.txt"
     for ((phase = 0; phase < phases; ++phase)); do
       shifted="$(awk -v s="$start" -v k="$phase" -v p="$period" -v n="$phases" \
@@ -127,7 +140,7 @@ for entry in "${clips[@]}"; do
       "$opf" dropout --in "$log" --out "$base.csv" --length "$length" --period "$period" \
         --start "$shifted" >/dev/null
       "$opf" evaluate --in "$base.csv" --truth "$log" --seeds 1 --estimators "$estimators" \
-        --out "$base.eval.csv" >/dev/null
+        "${settings[@]}" --out "$base.eval.csv" >/dev/null
       awk -F, -v c="$clip" -v d="$length" -v k="$phase" -v s="$shifted" '
         NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
         { print c "," d "," k "," s "," $col["estimator"] "," $col["hidden_translation"] "," \
@@ -141,7 +154,8 @@ done
 # "estimator", then one row per estimator, cells separated by two or more spaces; the header is cut
 # where the first row's cells start) with all runs in one markdown table.
 ((${#ran[@]} > 0)) || { echo "$0: CLIPS names none of: box vtest cup" >&2; exit 2; }
-CLIPS_RAN="${ran[*]}" /usr/bin/python3 - "$out" "$seeds" "$phases" "$period" "${dropouts[@]}" <<'EOF'
+CLIPS_RAN="${ran[*]}" SETTINGS="${settings[*]}" /usr/bin/python3 - "$out" "$seeds" "$phases" "$period" \
+  "${dropouts[@]}" <<'EOF'
 import collections, csv, math, os, pathlib, re, statistics, sys
 
 out, seeds, phases, period = pathlib.Path(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4]
@@ -149,7 +163,8 @@ dropouts = sys.argv[5:]
 clips = os.environ["CLIPS_RAN"].split()
 lines = ["# Real-video benchmark", "",
          f"Dropouts every {period} s, the first 1 s after the track begins; {seeds} seeds; "
-         "ground truth = the detections themselves (the log before the dropouts).", "",
+         "ground truth = the detections themselves (the log before the dropouts). "
+         f"Settings: `{os.environ['SETTINGS']}`.", "",
          "```", *out.joinpath("summary.txt").read_text().splitlines(), "```", ""]
 cell_start = re.compile(r"(?:^|(?<=\s\s))\S")
 tables = []  # per table of evaluate's output: [header cells, rows]

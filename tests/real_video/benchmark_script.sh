@@ -3,7 +3,8 @@
 # placements of the dropout windows: the detections, both dropped logs, one phases.csv row per
 # dropout, placement and estimator, the first placement equal to the main table's run (same
 # windows, same seed), the other placements shifted by period / 3, and the placements' table;
-# then the same clip thinned to one frame in three (EVERY=3), and EVERY=0 refused.
+# then the same clip thinned to one frame in three (EVERY=3), and EVERY=0 refused; the paper's
+# preset (PRESET=paper) and a settings file (CONFIG) passed to every evaluation, bad ones refused.
 #   bash tests/real_video/benchmark_script.sh SOURCE_DIR OPF
 set -euo pipefail
 source_dir="$1"
@@ -29,8 +30,9 @@ for estimator in opf cvkf; do
   main="$(awk -v e="$estimator" '$1 == e && NF == 7 { print $2 }' "$out/box_0.3.txt")"
   phase0="$(awk -F, -v e="$estimator" 'NR > 1 && $2 == "0.3" && $3 == 0 && $5 == e {
     printf "%.5f", $6 }' "$out/phases.csv")"
-  [ -n "$main" ] && [ "$main" = "$phase0" ] ||
+  if [ -z "$main" ] || [ "$main" != "$phase0" ]; then
     fail "$estimator: first placement $phase0, main table $main"
+  fi
 done
 grep -q '^## Hidden translation error \[m\] over 3 placements' "$out/table.md" ||
   fail "no placements table in table.md"
@@ -60,4 +62,37 @@ if EVERY=0 OPF="$opf" bash "$source_dir/experiments/real_video/run_real_video.sh
   fail "EVERY=0 accepted"
 fi
 grep -q "EVERY must be a positive integer" "$out/bad.log" || fail "EVERY=0: no clear error"
-echo "real-video benchmark script: $rows placement rows, first placement = main run; EVERY=3 kept 152 frames"
+# The paper's literal rules (PRESET=paper) reach every evaluation: the OPF's row differs from the
+# defaults' (the baselines have no paper-specific settings), and table.md says which ran.
+paper="$out/paper"
+OPF="$opf" CLIPS=box SEEDS=1 ESTIMATORS=opf,cvkf PHASES=0 PRESET=paper \
+  bash "$source_dir/experiments/real_video/run_real_video.sh" "$paper" >"$out/paper.log" 2>&1 ||
+  { cat "$out/paper.log" >&2; exit 1; }
+hidden() { awk -v e="$2" '$1 == e && NF == 7 { print $2 }' "$1"; }
+for f in "$paper/box_0.3.txt" "$out/box_0.3.txt"; do
+  if [ -z "$(hidden "$f" opf)" ] || [ -z "$(hidden "$f" cvkf)" ]; then fail "no hidden errors in $f"; fi
+done
+[ "$(hidden "$paper/box_0.3.txt" opf)" != "$(hidden "$out/box_0.3.txt" opf)" ] ||
+  fail "PRESET=paper: the OPF's hidden error is the defaults' ($(hidden "$out/box_0.3.txt" opf))"
+[ "$(hidden "$paper/box_0.3.txt" cvkf)" = "$(hidden "$out/box_0.3.txt" cvkf)" ] ||
+  fail "PRESET=paper changed the Kalman filter's row"
+grep -qF "Settings: \`--preset paper\`" "$paper/table.md" || fail "PRESET=paper not in table.md"
+# A settings file (CONFIG) reaches them too: a misspelt key fails naming the file and the key.
+printf 'opf:\n  adaptive_translation_nois: true\n' >"$out/typo.yaml"
+if OPF="$opf" CLIPS=box SEEDS=1 ESTIMATORS=opf PHASES=0 CONFIG="$out/typo.yaml" \
+  bash "$source_dir/experiments/real_video/run_real_video.sh" "$out/typo" >"$out/typo.log" 2>&1; then
+  fail "CONFIG with a misspelt key accepted"
+fi
+grep -q "typo.yaml:2.*adaptive_translation_nois" "$out/typo.log" ||
+  { cat "$out/typo.log" >&2; fail "CONFIG: no error naming the file, line and key"; }
+# Bad values of PRESET and CONFIG are refused before anything runs.
+for bad in "PRESET=papers" "CONFIG=$out/no_such.yaml"; do
+  if env "$bad" OPF="$opf" bash "$source_dir/experiments/real_video/run_real_video.sh" "$out/bad2" \
+    2>"$out/bad2.log"; then
+    fail "$bad accepted"
+  fi
+  grep -qE "PRESET must be default or paper|CONFIG: no readable file" "$out/bad2.log" ||
+    fail "$bad: no clear error"
+  [ ! -e "$out/bad2/box.csv" ] || fail "$bad: ran before refusing"
+done
+echo "real-video benchmark script: $rows placement rows, first placement = main run; EVERY=3 kept 152 frames; PRESET and CONFIG reach every evaluation"
