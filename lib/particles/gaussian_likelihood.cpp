@@ -19,10 +19,16 @@ std::array<double, 3> per_axis_scales(const Eigen::Vector3d& variances) {
   return {-0.5 / variances.x(), -0.5 / variances.y(), -0.5 / variances.z()};
 }
 
+// One variance on every axis takes the scalar kernel: the same Q, bit for bit as a scalar one.
+bool isotropic(const Eigen::Vector3d& variances) {
+  return variances.x() == variances.y() && variances.y() == variances.z();
+}
+
 }  // namespace
 
 double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
                          const Eigen::Vector3d& variances) {
+  if (isotropic(variances)) return reweight_gaussian(particles, measurement, variances.x());
   bool accumulate = true;
   double* log_w = particles.weights.for_likelihood(accumulate);
   return kernels::translation_exponents(particles.states.data(), particles.size(),
@@ -32,6 +38,8 @@ double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d&
 
 double gaussian_exponents(const TranslationParticles& particles, const Eigen::Vector3d& measurement,
                           const Eigen::Vector3d& variances, Eigen::VectorXd& exponents) {
+  if (isotropic(variances))
+    return gaussian_exponents(particles, measurement, variances.x(), exponents);
   exponents.resize(particles.states.cols());
   return kernels::translation_exponents(particles.states.data(), particles.size(),
                                         {measurement.x(), measurement.y(), measurement.z()},

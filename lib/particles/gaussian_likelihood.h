@@ -17,7 +17,7 @@ double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d&
                          double variance);
 double reweight_gaussian(RotationParticles& particles, const Eigen::Quaterniond& measurement,
                          double variance);
-/// A diagonal Q: a variance per world axis.
+/// A diagonal Q: a variance per world axis (the same on every axis: the scalar overload's result).
 double reweight_gaussian(TranslationParticles& particles, const Eigen::Vector3d& measurement,
                          const Eigen::Vector3d& variances);
 

@@ -115,10 +115,6 @@ void PoseParticleFilter::set_translation_likelihood_noise(const Eigen::Vector3d&
   translation_likelihood_noise_ = sigma;
 }
 
-bool PoseParticleFilter::translation_likelihood_isotropic() const {
-  return (translation_likelihood_noise_.array() == options_.observation_noise_translation).all();
-}
-
 void PoseParticleFilter::predict_per_particle(const Eigen::VectorXd& translation_sigmas,
                                               const Eigen::VectorXd& rotation_sigmas) {
   predict_random_walk(translation_, translation_sigmas, noise_);
@@ -164,12 +160,9 @@ void PoseParticleFilter::reweight(const Eigen::Vector3d& position,
 
 void PoseParticleFilter::reweight_translation(const Eigen::Vector3d& position,
                                               double covariance_scale) {
-  const double sigma = options_.observation_noise_translation;
+  const Eigen::Vector3d& sigma = translation_likelihood_noise_;
   translation_best_exponent_ =
-      translation_likelihood_isotropic()
-          ? reweight_gaussian(translation_, position, covariance_scale * sigma * sigma)
-          : reweight_gaussian(translation_, position,
-                              covariance_scale * translation_likelihood_noise_.cwiseAbs2());
+      reweight_gaussian(translation_, position, (covariance_scale * sigma).cwiseProduct(sigma));
   translation_reweighted_ = true;
   // Negated `>=` so that a NaN exponent (a non-finite measurement) counts as underflow too.
   translation_underflow_ =
@@ -187,13 +180,8 @@ void PoseParticleFilter::reweight_rotation(const Eigen::Quaterniond& orientation
 }
 
 Eigen::VectorXd PoseParticleFilter::translation_exponents(const Eigen::Vector3d& position) const {
-  const double sigma = options_.observation_noise_translation;
   Eigen::VectorXd exponents;
-  if (translation_likelihood_isotropic())
-    gaussian_exponents(translation_, position, sigma * sigma, exponents);
-  else
-    gaussian_exponents(translation_, position, translation_likelihood_noise_.cwiseAbs2(),
-                       exponents);
+  gaussian_exponents(translation_, position, translation_likelihood_noise_.cwiseAbs2(), exponents);
   return exponents;
 }
 

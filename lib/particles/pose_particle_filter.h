@@ -174,9 +174,6 @@ class PoseParticleFilter {
   const RotationParticles& rotation() const { return rotation_; }
 
  private:
-  /// Whether the translation likelihood's noise is the configured value on every axis (the
-  /// scalar kernel, bit for bit the filter's results before a noise per axis existed).
-  bool translation_likelihood_isotropic() const;
   /// Whether a portion's best exponent (-d^2/2, in sigmas) puts the measurement beyond
   /// options().reset_gate of every particle (never with the gate at 0).
   bool beyond_reset_gate(double best_exponent) const;
