@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 namespace opf::cli {
 namespace {
@@ -42,7 +43,9 @@ constexpr const char* kSummary =
     "mm),\n"
     "the depth from its apparent size (z = reference_depth * sqrt(reference_area / area)) and a\n"
     "rotation about z by the principal axis of its moments, unwrapped so that it never jumps by\n"
-    "pi. t = frame / rate. A frame where an object is not found has no row for it (unobserved).\n"
+    "pi. t = frame / rate, or each frame's timestamp where the video's frames are not evenly\n"
+    "spaced at its rate. A frame where an object is not found has no row for it (unobserved).\n"
+    "Decoding stops at a damaged frame, with a warning of how much of the video is missing.\n"
     "See lib/vision/segmentation_spec.h for the YAML keys. The log is written only when the whole\n"
     "run succeeded.";
 
@@ -77,6 +80,9 @@ std::string range_text(double low, double high) {
   std::snprintf(buffer, sizeof buffer, "%.0f-%.0f", low, high);
   return buffer;
 }
+
+// Frames a video's container may state beyond the ones it holds without anything being wrong.
+constexpr std::size_t kCountSlack = 2;
 
 }  // namespace
 
@@ -138,8 +144,14 @@ int detect_command(const std::vector<std::string>& raw) {
       });
   progress.finish();
 
-  write_file_atomically(
-      out, [&](std::ostream& os) { vision::write_detection_log(os, detection, *fps); });
+  // The frames' own timestamps where the container says they are not evenly spaced at its rate
+  // (frames dropped as it was recorded): frame / fps would squeeze the motion in time. A rate
+  // given on the command line is the user's word and is kept.
+  const std::optional<vision::UnevenFrames> uneven =
+      rate ? std::nullopt : vision::uneven_frames(detection, *fps);
+  write_file_atomically(out, [&](std::ostream& os) {
+    vision::write_detection_log(os, detection, *fps, uneven.has_value());
+  });
 
   const std::size_t last = detection.first_frame + detection.frames - 1;
   std::cout << "opf detect: " << video.string() << ", frames " << detection.first_frame << "-"
@@ -163,6 +175,18 @@ int detect_command(const std::vector<std::string>& raw) {
     if (object.sightings.empty())
       std::cerr << "opf detect: warning: object '" << object.name << "' was never found\n";
   }
+  if (const std::size_t missing =
+          vision::frames_missing_at_end(detection, *fps, uneven.has_value());
+      missing > kCountSlack)
+    std::cerr << "opf detect: warning: " << video.string() << ": decoding ended after frame "
+              << last << ", about " << missing << " frames (" << static_cast<double>(missing) / *fps
+              << " s) before the end the video states: they are missing from the log (a truncated "
+                 "or damaged file? re-encoding it may recover them)\n";
+  if (uneven)
+    std::cerr << "opf detect: warning: " << video.string()
+              << ": the frames are not evenly spaced at " << *fps << " Hz (frame " << uneven->frame
+              << " is stamped " << uneven->timestamp << " s, not " << uneven->at_the_rate
+              << " s): each row's t is its frame's timestamp; --rate HZ for t = frame / HZ\n";
   std::cout << "  log written to " << out.string() << "\n";
   return 0;
 }

@@ -66,7 +66,10 @@ FrameSource::FrameSource(const std::filesystem::path& path) : path_(path) {
 
 bool FrameSource::read(cv::Mat& bgr) {
   if (images_.empty()) {
-    if (!video_.read(bgr) || bgr.empty()) return false;
+    if (!grab_next()) return false;
+    if (!video_.retrieve(bgr) || bgr.empty())
+      throw InputError(path_.string(), 0, "",
+                       "frame " + std::to_string(next_) + " was decoded but cannot be read");
   } else {
     if (next_ >= images_.size()) return false;
     const std::filesystem::path& image = images_[next_];
@@ -87,12 +90,28 @@ bool FrameSource::read(cv::Mat& bgr) {
 }
 
 bool FrameSource::skip() {
-  if (images_.empty()) {
-    if (!video_.grab()) return false;
-  } else if (next_ >= images_.size()) {
+  if (images_.empty() ? !grab_next() : next_ >= images_.size()) return false;
+  ++next_;
+  return true;
+}
+
+bool FrameSource::grab_next() {
+  if (!video_.grab()) {
+    // The end, or a frame the decoder fails on. After a damaged frame the decoder may go on, but
+    // how many frames it passed over cannot be known for certain (the container's positions and
+    // timestamps follow the frames decoded, not the ones lost), and frames numbered wrongly would
+    // put wrong times in the log. So reading stops, and what the container states beyond is
+    // reported.
+    missing_at_end_ = frame_count_ && *frame_count_ > next_ ? *frame_count_ - next_ : 0;
+    timestamp_.reset();
     return false;
   }
-  ++next_;
+  const double milliseconds = video_.get(cv::CAP_PROP_POS_MSEC);
+  // To the microsecond: the container's time base in seconds, without the float noise of its
+  // conversion to milliseconds in the log's times (2.066677, not 2.0666770000000003).
+  timestamp_ = std::isfinite(milliseconds) && milliseconds >= 0.0
+                   ? std::optional<double>(std::round(milliseconds * 1000.0) / 1e6)
+                   : std::nullopt;
   return true;
 }
 

@@ -4,8 +4,10 @@
 #include "opf/io/measurement_log_writer.h"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace opf::vision {
@@ -32,6 +34,8 @@ VideoDetection detect_in_video(FrameSource& source, const SegmentationSpec& spec
   std::vector<std::optional<Blob>> blobs(segmenters.size());
   while ((!count || detection.frames < *count) && source.read(bgr)) {
     const std::size_t frame = source.next_index() - 1;
+    if (const std::optional<double> stamp = source.timestamp())
+      detection.timestamps.emplace(frame, *stamp);
     for (std::size_t i = 0; i < segmenters.size(); ++i) {
       try {
         blobs[i] = segmenters[i].segment(bgr, frame);
@@ -47,22 +51,71 @@ VideoDetection detect_in_video(FrameSource& source, const SegmentationSpec& spec
     if (observer) observer(FrameResult{frame, bgr, segmenters, blobs});
   }
   if (detection.frames == 0) throw none_left();
+  if (!count || detection.frames < *count) detection.missing_at_end = source.missing_at_end();
   for (std::size_t i = 0; i < segmenters.size(); ++i)
     detection.objects[i].poses = blob_poses(detection.objects[i].sightings, spec.objects[i].pose);
   return detection;
 }
 
-void write_detection_log(std::ostream& out, const VideoDetection& detection, double fps) {
+namespace {
+
+// Every segmented frame has a timestamp, and they increase: the frames' own times. (A video with
+// B-frames reports its packets' times, out of order, which say nothing.)
+bool increasing_timestamps(const VideoDetection& detection) {
+  if (detection.frames == 0 || detection.timestamps.size() != detection.frames) return false;
+  double previous = -std::numeric_limits<double>::infinity();
+  for (const auto& entry : detection.timestamps) {
+    if (!(entry.second > previous)) return false;
+    previous = entry.second;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<UnevenFrames> uneven_frames(const VideoDetection& detection, double fps) {
+  if (!(fps > 0.0) || !increasing_timestamps(detection)) return std::nullopt;
+  std::optional<UnevenFrames> uneven;
+  for (const auto& [frame, stamp] : detection.timestamps) {
+    const double at_the_rate = static_cast<double>(frame) / fps;
+    if (!uneven && std::abs(stamp - at_the_rate) > 0.5 / fps)
+      uneven = UnevenFrames{frame, stamp, at_the_rate};
+  }
+  return uneven;
+}
+
+std::size_t frames_missing_at_end(const VideoDetection& detection, double fps,
+                                  bool frame_timestamps) {
+  if (detection.missing_at_end == 0 || detection.frames == 0 || !(fps > 0.0)) return 0;
+  const std::size_t last = detection.first_frame + detection.frames - 1;
+  const double stated_end = static_cast<double>(last + 1 + detection.missing_at_end) / fps;
+  const double last_time = frame_timestamps && increasing_timestamps(detection)
+                               ? detection.timestamps.rbegin()->second
+                               : static_cast<double>(last) / fps;
+  const double missing = std::round((stated_end - last_time) * fps) - 1.0;
+  return missing > 0.0 ? static_cast<std::size_t>(missing) : 0;
+}
+
+void write_detection_log(std::ostream& out, const VideoDetection& detection, double fps,
+                         bool frame_timestamps) {
   if (!(fps > 0.0) || !std::isfinite(fps))
     throw std::invalid_argument("detection log: the frame rate must be > 0");
+  const auto time_of = [&](std::size_t frame) {
+    if (!frame_timestamps) return static_cast<double>(frame) / fps;
+    const auto it = detection.timestamps.find(frame);
+    if (it == detection.timestamps.end())
+      throw std::invalid_argument("detection log: frame " + std::to_string(frame) +
+                                  " has no timestamp");
+    return it->second;
+  };
   // (frame, object index) -> pose, to write frame by frame.
   std::map<std::pair<std::size_t, std::size_t>, const BlobPose*> rows;
   for (std::size_t i = 0; i < detection.objects.size(); ++i)
     for (const BlobPose& pose : detection.objects[i].poses) rows[{pose.frame, i}] = &pose;
   write_measurement_header(out);
   for (const auto& [key, pose] : rows)
-    write_measurement_row(out, static_cast<double>(key.first) / fps,
-                          detection.objects[key.second].name, pose->position, pose->orientation);
+    write_measurement_row(out, time_of(key.first), detection.objects[key.second].name,
+                          pose->position, pose->orientation);
 }
 
 }  // namespace opf::vision

@@ -1,8 +1,10 @@
-// End-to-end tests of `opf detect`: synthetic image folders, and the first second of OpenCV's
-// sample clip box.mp4 (package opencv-doc, scripts/packages.txt) with the bundled box.yaml.
+// End-to-end tests of `opf detect`: synthetic image folders and videos, the first second of
+// OpenCV's sample clip box.mp4 (package opencv-doc, scripts/packages.txt) with the bundled
+// box.yaml, and its tree.avi, whose frames are not evenly spaced.
 
 #include "cli/opf_program.h"
 #include "opf/io/measurement_log.h"
+#include "vision/damaged_video.h"
 #include "vision/synthetic_image.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -15,6 +17,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -193,6 +196,75 @@ TEST_F(OpfProgram, DetectReadsAFolderOfImagesAtTheGivenRate) {
                 (dir_ / "spec.yaml").string() + " --out " + log_path.string()),
             2);
   EXPECT_NE(err().find("'--rate' is required"), std::string::npos) << err();
+}
+
+/// The t column of a detection log, as written.
+std::vector<std::string> times_of(const std::string& log_text) {
+  std::istringstream in(log_text);
+  std::vector<std::string> times;
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) times.push_back(line.substr(0, line.find(',')));
+  return times;
+}
+
+TEST_F(OpfProgram, DetectTimesUnevenlySpacedFramesByTheirTimestamps) {
+  // tree.avi states 15 fps and 444 frames, but holds 68, about 0.43 s apart over its 29.6 s: the
+  // recorder dropped frames and the container counts them.
+  const std::string video = packaged_file("tree.avi");
+  ASSERT_FALSE(video.empty())
+      << "tree.avi not found in package opencv-doc: apt-get install opencv-doc";
+  std::ofstream(dir_ / "spec.yaml") << "objects:\n  trunk:\n    hsv: {low: [0, 40, 80], high: [25, "
+                                       "200, 255]}\n    morphology: {open: 5, close: 15}\n";
+  const fs::path log_path = dir_ / "tree.csv";
+  const std::string command = "detect --video " + video + " --objects " +
+                              (dir_ / "spec.yaml").string() + " --out " + log_path.string();
+  ASSERT_EQ(run(command), 0) << err();
+  EXPECT_NE(err().find("not evenly spaced at 14.9999 Hz (frame 1 is stamped 0.733337 s, not "
+                       "0.066667 s)"),
+            std::string::npos)
+      << err();
+  EXPECT_EQ(err().find("missing from the log"), std::string::npos) << err();  // it ends at 29.6 s
+  std::vector<std::string> times = times_of(read(log_path));
+  ASSERT_EQ(times.size(), 68u);
+  EXPECT_EQ(times[0], "0");
+  EXPECT_EQ(times[1], "0.733337");
+  EXPECT_EQ(times[2], "1.133339");
+  EXPECT_NEAR(std::stod(times.back()), 29.533481, 1e-6);
+
+  // A rate given on the command line is kept, without the warning.
+  ASSERT_EQ(run(command + " --rate 15"), 0) << err();
+  EXPECT_EQ(err().find("not evenly spaced"), std::string::npos) << err();
+  times = times_of(read(log_path));
+  ASSERT_EQ(times.size(), 68u);
+  EXPECT_NEAR(std::stod(times[1]), 1.0 / 15.0, 1e-12);
+}
+
+TEST_F(OpfProgram, DetectWarnsWhereADamagedVideoStops) {
+  const fs::path video = dir_ / "damaged.avi";
+  vision::test::write_mjpeg_video(video, 40, 10.0);
+  vision::test::wipe_frames(video, 10, 16);
+  std::ofstream(dir_ / "spec.yaml") << "objects:\n  box:\n    hsv: {low: [20, 100, 100], "
+                                       "high: [40, 255, 255]}\n";
+  const std::string command = "detect --video " + video.string() + " --objects " +
+                              (dir_ / "spec.yaml").string() + " --out " +
+                              (dir_ / "log.csv").string();
+  const fs::path log_path = dir_ / "log.csv";
+  ASSERT_EQ(run(command), 0) << err();
+  EXPECT_NE(err().find(video.string() + ": decoding ended after frame 9, about 30 frames (3 s) "
+                                        "before the end the video states: they are missing from "
+                                        "the log"),
+            std::string::npos)
+      << err();
+  const std::vector<std::string> times = times_of(read(log_path));
+  ASSERT_EQ(times.size(), 10u);  // the box in frames 0-9, each at frame / fps
+  EXPECT_EQ(times[9], "0.9");
+
+  // An undamaged video: no warning.
+  vision::test::write_mjpeg_video(video, 40, 10.0);
+  ASSERT_EQ(run(command), 0) << err();
+  EXPECT_EQ(err().find("warning"), std::string::npos) << err();
+  EXPECT_EQ(times_of(read(log_path)).size(), 40u);
 }
 
 TEST_F(OpfProgram, DetectErrorsNameTheFile) {

@@ -1,14 +1,17 @@
 #include "opf/vision/frame_source.h"
 
 #include "opf/io/input_error.h"
+#include "vision/damaged_video.h"
 
 #include <opencv2/imgcodecs.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace opf::vision {
 namespace {
@@ -80,6 +83,71 @@ TEST_F(VisionFrameSource, SkipMovesPastFrames) {
   EXPECT_EQ(frame.at<cv::Vec3b>(0, 0)[0], 20);
   EXPECT_TRUE(source.skip());
   EXPECT_FALSE(source.skip());
+}
+
+/// The number of the frame in `bgr` (test::write_mjpeg_video), from its background's red level.
+int frame_number(const cv::Mat& bgr) {
+  return static_cast<int>(std::lround((bgr.at<cv::Vec3b>(5, 5)[2] - 20) / 4.0));
+}
+
+TEST_F(VisionFrameSource, AVideoIsReadFrameByFrameWithItsTimestamps) {
+  const fs::path video = dir_ / "clip.avi";
+  test::write_mjpeg_video(video, 20, 10.0);
+  FrameSource source(video);
+  ASSERT_TRUE(source.fps().has_value());
+  EXPECT_DOUBLE_EQ(*source.fps(), 10.0);
+  ASSERT_TRUE(source.frame_count().has_value());
+  EXPECT_EQ(*source.frame_count(), 20u);
+  cv::Mat frame;
+  for (int k = 0; k < 20; ++k) {
+    ASSERT_TRUE(source.read(frame)) << "frame " << k;
+    EXPECT_EQ(source.next_index(), static_cast<std::size_t>(k + 1));
+    EXPECT_EQ(frame_number(frame), k);
+    ASSERT_TRUE(source.timestamp().has_value());
+    EXPECT_NEAR(*source.timestamp(), k / 10.0, 1e-6);
+  }
+  EXPECT_FALSE(source.read(frame));
+  EXPECT_FALSE(source.timestamp().has_value());
+  EXPECT_EQ(source.missing_at_end(), 0u);
+}
+
+TEST_F(VisionFrameSource, ReadingStopsAtADamagedFrameAndSaysHowManyFramesAreLeft) {
+  const fs::path video = dir_ / "damaged.avi";
+  test::write_mjpeg_video(video, 40, 10.0);
+  test::wipe_frames(video, 10, 16);  // frames 10-15
+  FrameSource source(video);
+  cv::Mat frame;
+  std::vector<int> read;
+  while (source.read(frame)) read.push_back(frame_number(frame));
+  // Frames 0-9, each the one the source numbers it: none after the damage, whose numbers the
+  // decoder's position could not be trusted for.
+  ASSERT_EQ(read.size(), 10u);
+  for (int k = 0; k < 10; ++k) EXPECT_EQ(read[static_cast<std::size_t>(k)], k);
+  EXPECT_EQ(source.next_index(), 10u);
+  EXPECT_EQ(source.missing_at_end(), 30u);
+
+  FrameSource skipping(video);
+  while (skipping.skip()) {
+  }
+  EXPECT_EQ(skipping.next_index(), 10u);
+  EXPECT_EQ(skipping.missing_at_end(), 30u);
+}
+
+TEST_F(VisionFrameSource, AVideoCutShortSaysHowManyFramesItLacks) {
+  const fs::path video = dir_ / "cut.avi";
+  test::write_mjpeg_video(video, 40, 10.0);
+  test::truncate_file(video, 0.5);
+  FrameSource source(video);
+  ASSERT_EQ(source.frame_count(), 40u);  // the header is intact
+  cv::Mat frame;
+  std::size_t read = 0;
+  while (source.read(frame)) {
+    EXPECT_EQ(frame_number(frame), static_cast<int>(read));
+    ++read;
+  }
+  EXPECT_GT(read, 10u);
+  EXPECT_LT(read, 30u);
+  EXPECT_EQ(source.missing_at_end(), 40u - read);
 }
 
 TEST_F(VisionFrameSource, ErrorsNameTheFile) {

@@ -9,8 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace opf::vision {
 namespace {
@@ -81,6 +83,85 @@ TEST_F(VisionVideoDetection, SegmentsTheRangeAndLeavesMissedFramesOut) {
   EXPECT_NEAR(last.pose.pitch(), 0.0, 1e-9);
   EXPECT_NEAR(last.pose.roll(), 0.0, 1e-9);
   EXPECT_THROW(write_detection_log(out, detection, 0.0), std::invalid_argument);
+}
+
+/// A detection of frames 0..n-1 at 10 Hz with one sighting each and the given timestamps.
+VideoDetection stamped_detection(const std::vector<double>& stamps) {
+  VideoDetection detection;
+  detection.frames = stamps.size();
+  ObjectTrack track{"box", {}, {}};
+  for (std::size_t k = 0; k < stamps.size(); ++k) {
+    detection.timestamps.emplace(k, stamps[k]);
+    BlobPose pose;
+    pose.frame = k;
+    track.poses.push_back(pose);
+  }
+  detection.objects.push_back(track);
+  return detection;
+}
+
+TEST(VisionVideoTiming, EvenlySpacedFramesKeepFrameOverRate) {
+  const VideoDetection even = stamped_detection({0.0, 0.1, 0.2000004, 0.3, 0.4});
+  EXPECT_FALSE(uneven_frames(even, 10.0).has_value());
+  std::ostringstream out;
+  write_detection_log(out, even, 10.0);
+  std::istringstream in(out.str());
+  const MeasurementLog log = parse_measurement_log(in, "even.csv");
+  ASSERT_EQ(log.frames.size(), 5u);
+  EXPECT_EQ(log.frames[2].t, 2.0 / 10.0);  // frame / fps, not the timestamp's last digits
+}
+
+TEST(VisionVideoTiming, FramesDroppedWhileRecordingTakeTheirOwnTimestamps) {
+  // A 10 Hz container whose recorder dropped frames: the third frame kept is stamped 0.7 s.
+  const VideoDetection dropped = stamped_detection({0.0, 0.1, 0.7, 0.8, 1.3});
+  const std::optional<UnevenFrames> uneven = uneven_frames(dropped, 10.0);
+  ASSERT_TRUE(uneven.has_value());
+  EXPECT_EQ(uneven->frame, 2u);
+  EXPECT_DOUBLE_EQ(uneven->timestamp, 0.7);
+  EXPECT_DOUBLE_EQ(uneven->at_the_rate, 0.2);
+  std::ostringstream out;
+  write_detection_log(out, dropped, 10.0, true);
+  std::istringstream in(out.str());
+  std::vector<std::string> times;
+  for (std::string line; std::getline(in, line);) times.push_back(line.substr(0, line.find(',')));
+  EXPECT_EQ(times, (std::vector<std::string>{"t", "0", "0.1", "0.7", "0.8", "1.3"}));
+
+  // Half a frame off is still even; a frame's worth is not.
+  EXPECT_FALSE(uneven_frames(stamped_detection({0.0, 0.1, 0.249}), 10.0).has_value());
+  EXPECT_TRUE(uneven_frames(stamped_detection({0.0, 0.1, 0.251}), 10.0).has_value());
+}
+
+TEST(VisionVideoTiming, TimestampsOutOfOrderOrMissingSayNothing) {
+  // The packet order of a video with B-frames: the timestamps do not increase.
+  EXPECT_FALSE(uneven_frames(stamped_detection({0.067, 0.101, 0.067, 0.134}), 30.0).has_value());
+  VideoDetection partly = stamped_detection({0.0, 0.5, 1.0});
+  partly.timestamps.erase(1);
+  EXPECT_FALSE(uneven_frames(partly, 10.0).has_value());
+  std::ostringstream out;
+  EXPECT_THROW(write_detection_log(out, partly, 10.0, true), std::invalid_argument);
+}
+
+TEST(VisionVideoTiming, MissingFramesAreCountedInTime) {
+  // Decoding stopped at frame 10 of 40 evenly spaced ones: 30 are missing.
+  std::vector<double> even;
+  for (int k = 0; k < 10; ++k) even.push_back(k / 10.0);
+  VideoDetection cut = stamped_detection(even);
+  cut.missing_at_end = 30;
+  EXPECT_EQ(frames_missing_at_end(cut, 10.0, false), 30u);
+  EXPECT_EQ(frames_missing_at_end(cut, 10.0, true), 30u);
+  // Ten frames kept of a 40-frame recording that dropped the rest, the last at 3.9 s: timed by
+  // their stamps, they end where the container says, and nothing is missing.
+  std::vector<double> kept;
+  for (int k = 0; k < 10; ++k) kept.push_back(0.3 + 0.4 * k);
+  VideoDetection sparse = stamped_detection(kept);
+  sparse.missing_at_end = 30;
+  EXPECT_EQ(frames_missing_at_end(sparse, 10.0, true), 0u);
+  // Timed at frame / fps (a rate given, or no increasing timestamps), they end at frame 9.
+  EXPECT_EQ(frames_missing_at_end(sparse, 10.0, false), 30u);
+  sparse.timestamps.clear();
+  EXPECT_EQ(frames_missing_at_end(sparse, 10.0, true), 30u);
+  cut.missing_at_end = 0;
+  EXPECT_EQ(frames_missing_at_end(cut, 10.0, true), 0u);
 }
 
 TEST_F(VisionVideoDetection, AFirstFrameBeyondTheEndNamesTheVideo) {
