@@ -22,10 +22,17 @@ VideoDetection detect_in_video(FrameSource& source, const SegmentationSpec& spec
     detection.objects.push_back({object.name, {}, {}});
   }
   const auto none_left = [&] {
-    return InputError(source.path().string(), 0, "",
-                      "the video has " + std::to_string(source.next_index()) +
-                          " frames, none from the first frame asked for (" + std::to_string(first) +
-                          ") on");
+    // Where the container states more frames than were decoded, decoding failed there (a
+    // damaged file): say so rather than report a short video.
+    const std::string decoded =
+        source.missing_at_end() > 0
+            ? "decoding failed at frame " + std::to_string(source.next_index()) + " of the " +
+                  std::to_string(source.next_index() + source.missing_at_end()) +
+                  " the video states (a damaged file?)"
+            : "the video has " + std::to_string(source.next_index()) + " frames";
+    return InputError(
+        source.path().string(), 0, "",
+        decoded + ", none from the first frame asked for (" + std::to_string(first) + ") on");
   };
   while (source.next_index() < first)
     if (!source.skip()) throw none_left();

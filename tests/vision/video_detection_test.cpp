@@ -2,6 +2,7 @@
 
 #include "opf/io/input_error.h"
 #include "opf/io/measurement_log.h"
+#include "vision/damaged_video.h"
 #include "vision/synthetic_image.h"
 
 #include <opencv2/imgcodecs.hpp>
@@ -162,6 +163,22 @@ TEST(VisionVideoTiming, MissingFramesAreCountedInTime) {
   EXPECT_EQ(frames_missing_at_end(sparse, 10.0, true), 30u);
   cut.missing_at_end = 0;
   EXPECT_EQ(frames_missing_at_end(cut, 10.0, true), 0u);
+}
+
+TEST_F(VisionVideoDetection, AVideoDamagedBeforeTheFirstFrameAskedForSaysWhere) {
+  const fs::path video = dir_ / "damaged.avi";
+  test::write_mjpeg_video(video, 40, 10.0);
+  test::wipe_frames(video, 10, 16);
+  FrameSource source(video);
+  try {
+    detect_in_video(source, spec_, 20, std::nullopt);
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), video.string());
+    EXPECT_NE(e.message().find("decoding failed at frame 10 of the 40 the video states"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST_F(VisionVideoDetection, AFirstFrameBeyondTheEndNamesTheVideo) {
