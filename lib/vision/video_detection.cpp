@@ -83,8 +83,11 @@ bool increasing_timestamps(const VideoDetection& detection) {
 std::optional<UnevenFrames> uneven_frames(const VideoDetection& detection, double fps) {
   if (!(fps > 0.0) || !increasing_timestamps(detection)) return std::nullopt;
   std::optional<UnevenFrames> uneven;
+  // From the first frame's timestamp: a video whose times start late (an edit list, a stream cut
+  // from a longer one) is still evenly spaced.
+  const auto& [first_frame, first_stamp] = *detection.timestamps.begin();
   for (const auto& [frame, stamp] : detection.timestamps) {
-    const double at_the_rate = static_cast<double>(frame) / fps;
+    const double at_the_rate = first_stamp + static_cast<double>(frame - first_frame) / fps;
     if (!uneven && std::abs(stamp - at_the_rate) > 0.5 / fps)
       uneven = UnevenFrames{frame, stamp, at_the_rate};
   }

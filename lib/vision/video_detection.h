@@ -36,9 +36,9 @@ struct VideoDetection {
 
 /// Where the container's timestamps say the frames are not evenly spaced at the stated rate.
 struct UnevenFrames {
-  std::size_t frame = 0;     ///< the first frame whose timestamp is off frame / fps
+  std::size_t frame = 0;     ///< the first frame whose timestamp is off the rate's
   double timestamp = 0.0;    ///< s, the container's
-  double at_the_rate = 0.0;  ///< s, frame / fps
+  double at_the_rate = 0.0;  ///< s, the first frame's timestamp + frames since / fps
 };
 
 /// What a FrameObserver sees after each frame: the frame, then per object (spec order) its
@@ -59,9 +59,10 @@ VideoDetection detect_in_video(FrameSource& source, const SegmentationSpec& spec
                                std::optional<std::size_t> count,
                                const FrameObserver& observer = {});
 
-/// The first frame whose timestamp lies more than half a frame from frame / fps (a video that
-/// dropped frames as it was recorded, an AVI with empty chunks for them), when every segmented
-/// frame has a timestamp and they increase; nullopt otherwise. Timestamps that do not increase
+/// The first frame whose timestamp lies more than half a frame from where the rate puts it, from
+/// the first segmented frame's timestamp on (a video that dropped frames as it was recorded, an
+/// AVI with empty chunks for them), when every segmented frame has a timestamp and they increase;
+/// nullopt otherwise. Timestamps that do not increase
 /// (the packet order of a video with B-frames) say nothing about the spacing.
 std::optional<UnevenFrames> uneven_frames(const VideoDetection& detection, double fps);
 

@@ -104,6 +104,8 @@ VideoDetection stamped_detection(const std::vector<double>& stamps) {
 TEST(VisionVideoTiming, EvenlySpacedFramesKeepFrameOverRate) {
   const VideoDetection even = stamped_detection({0.0, 0.1, 0.2000004, 0.3, 0.4});
   EXPECT_FALSE(uneven_frames(even, 10.0).has_value());
+  // Times that start late are still evenly spaced.
+  EXPECT_FALSE(uneven_frames(stamped_detection({0.067, 0.167, 0.267, 0.367}), 10.0).has_value());
   std::ostringstream out;
   write_detection_log(out, even, 10.0);
   std::istringstream in(out.str());
