@@ -246,10 +246,9 @@ TEST_F(OpfProgram, DetectWarnsWhereADamagedVideoStops) {
   vision::test::wipe_frames(video, 10, 16);
   std::ofstream(dir_ / "spec.yaml") << "objects:\n  box:\n    hsv: {low: [20, 100, 100], "
                                        "high: [40, 255, 255]}\n";
-  const std::string command = "detect --video " + video.string() + " --objects " +
-                              (dir_ / "spec.yaml").string() + " --out " +
-                              (dir_ / "log.csv").string();
   const fs::path log_path = dir_ / "log.csv";
+  const std::string command = "detect --video " + video.string() + " --objects " +
+                              (dir_ / "spec.yaml").string() + " --out " + log_path.string();
   ASSERT_EQ(run(command), 0) << err();
   EXPECT_NE(err().find(video.string() + ": decoding ended after frame 9, about 30 frames (3 s) "
                                         "before the end the video states: they are missing from "

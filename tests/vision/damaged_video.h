@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <fstream>
@@ -18,9 +19,16 @@
 
 namespace opf::vision::test {
 
-/// Frame k's red channel, at every pixel off the rectangle: the frame's number, read back.
+/// Frame k's red channel, at every pixel off the rectangle: the frame's number, read back by
+/// frame_number.
 inline int frame_number_level(int k) {
   return 4 * k + 20;
+}
+
+/// The number of a frame of write_mjpeg_video, from its background's red level (JPEG moves it by
+/// a level or two).
+inline int frame_number(const cv::Mat& bgr) {
+  return static_cast<int>(std::lround((bgr.at<cv::Vec3b>(5, 5)[2] - 20) / 4.0));
 }
 
 /// `frames` frames of 320x240 at `fps`: a yellow rectangle 60x30 px at (100 + 4k, 120) on a

@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -85,11 +84,6 @@ TEST_F(VisionFrameSource, SkipMovesPastFrames) {
   EXPECT_FALSE(source.skip());
 }
 
-/// The number of the frame in `bgr` (test::write_mjpeg_video), from its background's red level.
-int frame_number(const cv::Mat& bgr) {
-  return static_cast<int>(std::lround((bgr.at<cv::Vec3b>(5, 5)[2] - 20) / 4.0));
-}
-
 TEST_F(VisionFrameSource, AVideoIsReadFrameByFrameWithItsTimestamps) {
   const fs::path video = dir_ / "clip.avi";
   test::write_mjpeg_video(video, 20, 10.0);
@@ -102,7 +96,7 @@ TEST_F(VisionFrameSource, AVideoIsReadFrameByFrameWithItsTimestamps) {
   for (int k = 0; k < 20; ++k) {
     ASSERT_TRUE(source.read(frame)) << "frame " << k;
     EXPECT_EQ(source.next_index(), static_cast<std::size_t>(k + 1));
-    EXPECT_EQ(frame_number(frame), k);
+    EXPECT_EQ(test::frame_number(frame), k);
     ASSERT_TRUE(source.timestamp().has_value());
     EXPECT_NEAR(*source.timestamp(), k / 10.0, 1e-6);
   }
@@ -118,7 +112,7 @@ TEST_F(VisionFrameSource, ReadingStopsAtADamagedFrameAndSaysHowManyFramesAreLeft
   FrameSource source(video);
   cv::Mat frame;
   std::vector<int> read;
-  while (source.read(frame)) read.push_back(frame_number(frame));
+  while (source.read(frame)) read.push_back(test::frame_number(frame));
   // Frames 0-9, each the one the source numbers it: none after the damage, whose numbers the
   // decoder's position could not be trusted for.
   ASSERT_EQ(read.size(), 10u);
@@ -142,7 +136,7 @@ TEST_F(VisionFrameSource, AVideoCutShortSaysHowManyFramesItLacks) {
   cv::Mat frame;
   std::size_t read = 0;
   while (source.read(frame)) {
-    EXPECT_EQ(frame_number(frame), static_cast<int>(read));
+    EXPECT_EQ(test::frame_number(frame), static_cast<int>(read));
     ++read;
   }
   EXPECT_GT(read, 10u);
