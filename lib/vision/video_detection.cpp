@@ -82,16 +82,14 @@ bool increasing_timestamps(const VideoDetection& detection) {
 
 std::optional<UnevenFrames> uneven_frames(const VideoDetection& detection, double fps) {
   if (!(fps > 0.0) || !increasing_timestamps(detection)) return std::nullopt;
-  std::optional<UnevenFrames> uneven;
   // From the first frame's timestamp: a video whose times start late (an edit list, a stream cut
   // from a longer one) is still evenly spaced.
   const auto& [first_frame, first_stamp] = *detection.timestamps.begin();
   for (const auto& [frame, stamp] : detection.timestamps) {
     const double at_the_rate = first_stamp + static_cast<double>(frame - first_frame) / fps;
-    if (!uneven && std::abs(stamp - at_the_rate) > 0.5 / fps)
-      uneven = UnevenFrames{frame, stamp, at_the_rate};
+    if (std::abs(stamp - at_the_rate) > 0.5 / fps) return UnevenFrames{frame, stamp, at_the_rate};
   }
-  return uneven;
+  return std::nullopt;
 }
 
 std::size_t frames_missing_at_end(const VideoDetection& detection, double fps,
@@ -99,8 +97,9 @@ std::size_t frames_missing_at_end(const VideoDetection& detection, double fps,
   if (detection.missing_at_end == 0 || detection.frames == 0 || !(fps > 0.0)) return 0;
   const std::size_t last = detection.first_frame + detection.frames - 1;
   const double stated_end = static_cast<double>(last + 1 + detection.missing_at_end) / fps;
-  const double last_time = frame_timestamps && increasing_timestamps(detection)
-                               ? detection.timestamps.rbegin()->second
+  const auto stamp = detection.timestamps.find(last);
+  const double last_time = frame_timestamps && stamp != detection.timestamps.end()
+                               ? stamp->second
                                : static_cast<double>(last) / fps;
   const double missing = std::round((stated_end - last_time) * fps) - 1.0;
   return missing > 0.0 ? static_cast<std::size_t>(missing) : 0;

@@ -62,13 +62,14 @@ VideoDetection detect_in_video(FrameSource& source, const SegmentationSpec& spec
 /// The first frame whose timestamp lies more than half a frame from where the rate puts it, from
 /// the first segmented frame's timestamp on (a video that dropped frames as it was recorded, an
 /// AVI with empty chunks for them), when every segmented frame has a timestamp and they increase;
-/// nullopt otherwise. Timestamps that do not increase
-/// (the packet order of a video with B-frames) say nothing about the spacing.
+/// nullopt otherwise. Timestamps that do not increase (the packet order of a video with B-frames)
+/// say nothing about the spacing.
 std::optional<UnevenFrames> uneven_frames(const VideoDetection& detection, double fps);
 
 /// How many of the frames the video states lie after the last one decoded, counted in time: its
 /// stated length (frames / fps) past the last frame's time (its timestamp with
-/// `frame_timestamps`, as the log has it; frame / fps otherwise), less that frame's own period. A
+/// `frame_timestamps`, as the log has it; frame / fps otherwise or where it has none), less that
+/// frame's own period. A
 /// video that dropped frames as it was recorded can count them in its length without holding
 /// them: its last frame still ends it, and nothing is missing.
 std::size_t frames_missing_at_end(const VideoDetection& detection, double fps,

@@ -167,30 +167,31 @@ TEST(VisionVideoTiming, MissingFramesAreCountedInTime) {
   EXPECT_EQ(frames_missing_at_end(cut, 10.0, true), 0u);
 }
 
+/// The InputError detecting from frame `first` of `path` on raises; fails the test when none.
+InputError detection_error(const fs::path& path, const SegmentationSpec& spec, std::size_t first) {
+  FrameSource source(path);
+  try {
+    detect_in_video(source, spec, first, std::nullopt);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no InputError for " << path;
+  return InputError("", 0, "", "");
+}
+
 TEST_F(VisionVideoDetection, AVideoDamagedBeforeTheFirstFrameAskedForSaysWhere) {
   const fs::path video = dir_ / "damaged.avi";
   test::write_mjpeg_video(video, 40, 10.0);
   test::wipe_frames(video, 10, 16);
-  FrameSource source(video);
-  try {
-    detect_in_video(source, spec_, 20, std::nullopt);
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), video.string());
-    EXPECT_NE(e.message().find("decoding failed at frame 10 of the 40 the video states"),
-              std::string::npos)
-        << e.what();
-  }
+  const InputError error = detection_error(video, spec_, 20);
+  EXPECT_EQ(error.file(), video.string());
+  EXPECT_NE(error.message().find("decoding failed at frame 10 of the 40 the video states"),
+            std::string::npos)
+      << error.what();
 }
 
 TEST_F(VisionVideoDetection, AFirstFrameBeyondTheEndNamesTheVideo) {
-  FrameSource source(dir_);
-  try {
-    detect_in_video(source, spec_, 6, std::nullopt);
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.file(), dir_.string());
-  }
+  EXPECT_EQ(detection_error(dir_, spec_, 6).file(), dir_.string());
 }
 
 }  // namespace
