@@ -143,8 +143,11 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
         position, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
     if (h.filter.translation_was_reset())
       confirmed_motion_.reset();
-    else if (h.prediction)
+    else if (h.prediction) {
       confirmed_motion_ = std::move(h.prediction);
+      reappeared_at_ = t;
+      reappeared_where_ = position;
+    }
     const ResampleReport report = h.filter.normalise_and_resample();
     h.recovery = {.sensor_reset = lost, .weights_underflow = report.weights_underflow()};
     h.inflation.reset();
@@ -355,7 +358,12 @@ bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
   }
   const std::vector<MotionSample> samples(history_.begin(), history_.end());
   auto prediction = predict_motion(samples, options_.dynamics.selection);
-  if (!prediction) return fallback ? continue_from_last(*fallback) : false;
+  // Seen for longer than a glimpse, the object has had time to change its motion: an axis whose
+  // motion did not bring it nearer where it reappeared than holding still would have holds still
+  // (a walker who turned back during a gap is not carried on the old way through every next one).
+  if (!prediction)
+    return fallback ? continue_from_last(confirmed_by(*fallback, reappeared_at_, reappeared_where_))
+                    : false;
   if (options_.measured_onset_spread)
     narrow_to_measured_discrepancy(h.filter, samples,
                                    options_.dynamics.selection.uncertainty_scale);

@@ -105,8 +105,11 @@ class ObjectPermanenceFilter final : public Estimator {
   std::deque<MotionSample> history_;    ///< measured frames: measurement and estimate
   DetectorJitter detector_jitter_;      ///< the detector's own noise, for the likelihood
   /// The dynamics module's last prediction, kept when the object was seen again where it said
-  /// (no translation reset): a glimpse too brief to fit anything new continues it.
+  /// (no translation reset): a glimpse too brief to fit anything new continues it; a longer one
+  /// that still cannot be fitted continues the axes where it reappeared confirmed (confirmed_by).
   std::optional<MotionPrediction> confirmed_motion_;
+  double reappeared_at_ = 0.0;  ///< s: when it was seen again after that gap
+  Eigen::Vector3d reappeared_where_ = Eigen::Vector3d::Zero();  ///< and where it was measured
   double t_ = 0.0;
   double hidden_since_ = 0.0;
   bool hidden_ = false;

@@ -14,6 +14,8 @@
 # Usage: experiments/real_video/run_real_video.sh OUT_DIR
 #   OPF=path/to/opf (default <repo>/build/bin/opf), SEEDS=5, ESTIMATORS=opf,pf,cvkf,oapf,
 #   PHASES=10 (0: no phase sweep), CLIPS="box vtest cup" (a subset runs only those),
+#   DROPOUTS="0.3 0.6" (the dropout lengths in s, each under the 2 s period: "1.0 1.5" leaves
+#   glimpses of 1 s and 0.5 s between long gaps),
 #   EVERY=1 (N: keep every Nth frame of each clip's detections, a slower log of the same motion:
 #   box.mp4 at 10 Hz with EVERY=3), PRESET=default (paper: the paper's literal rules for every
 #   estimator), CONFIG=FILE.yaml (estimator settings on top of the preset, as `opf evaluate
@@ -96,8 +98,13 @@ clips=(
   "vtest|vtest.avi|vtest.yaml|--first 450 --frames 271"
   "cup|cup.mp4|cup.yaml|"
 )
-dropouts=(0.3 0.6)
 period=2
+read -r -a dropouts <<<"${DROPOUTS:-0.3 0.6}"
+((${#dropouts[@]} > 0)) || { echo "$0: DROPOUTS lists no length" >&2; exit 2; }
+for length in "${dropouts[@]}"; do
+  awk -v x="$length" -v p="$period" 'BEGIN { exit !(x ~ /^[0-9]*\.?[0-9]+$/ && x > 0 && x < p) }' ||
+    { echo "$0: DROPOUTS: '$length' is not a length in seconds between 0 and $period" >&2; exit 2; }
+done
 summary="$out/summary.txt"
 : >"$summary"
 mkdir -p "$out/phases"

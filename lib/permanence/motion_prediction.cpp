@@ -488,6 +488,17 @@ MotionPrediction continued(const MotionPrediction& prediction, double t_last,
   return p;
 }
 
+MotionPrediction confirmed_by(MotionPrediction prediction, double t,
+                              const Eigen::Vector3d& measured) {
+  const Eigen::Vector3d predicted = prediction.position(t - prediction.t_last);
+  for (int axis = 0; axis < 3; ++axis) {
+    const double held = std::abs(measured(axis) - prediction.anchor_position(axis));
+    if (!(std::abs(measured(axis) - predicted(axis)) < held))
+      prediction.translation[static_cast<std::size_t>(axis)].clear();
+  }
+  return prediction;
+}
+
 std::string describe(const MotionPrediction& prediction) {
   std::string text;
   for (const TranslationModel model : prediction.translation_models)

@@ -237,6 +237,14 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> his
 MotionPrediction continued(const MotionPrediction& prediction, double t_last,
                            const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation);
 
+/// The prediction as the object's reappearance left it: at time `t` it was measured at
+/// `measured`. Per world axis, its models' motion is kept where it put the object nearer that
+/// measurement than holding still at its anchor would have, and dropped otherwise (the axis then
+/// holds still when the motion is continued): a motion the gap refuted is not carried into the
+/// next one.
+MotionPrediction confirmed_by(MotionPrediction prediction, double t,
+                              const Eigen::Vector3d& measured);
+
 /// The velocity and body-frame angular velocity of the last `window` seconds of `history` (for the
 /// particles' drift while the object is visible): per channel the slope of a least-squares line,
 /// shrunk by its significance, or, where a quadratic's curvature stands 10 standard errors out of

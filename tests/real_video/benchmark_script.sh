@@ -3,7 +3,8 @@
 # placements of the dropout windows: the detections, both dropped logs, one phases.csv row per
 # dropout, placement and estimator, the first placement equal to the main table's run (same
 # windows, same seed), the other placements shifted by period / 3, and the placements' table;
-# then the same clip thinned to one frame in three (EVERY=3), and EVERY=0 refused; the paper's
+# then the same clip thinned to one frame in three (EVERY=3) with other dropout lengths
+# (DROPOUTS), and EVERY=0 and a dropout longer than the period refused; the paper's
 # preset (PRESET=paper) and a settings file (CONFIG) passed to every evaluation, bad ones refused.
 #   bash tests/real_video/benchmark_script.sh SOURCE_DIR OPF
 set -euo pipefail
@@ -45,9 +46,10 @@ paired="$(awk -F, 'NR > 1 && $2 == "0.6" { e[$3, $5] = $6; n[$3] = 1 }
   "$out/phases.csv")"
 [[ "$row" == *"| $paired ± "* ]] || fail "paired difference: row '$row', from phases.csv $paired"
 # A slower log of the same motion (EVERY=3): one frame in three of the detections, the first
-# kept, so 152 of box.mp4's 455 frames at 3 frame intervals.
+# kept, so 152 of box.mp4's 455 frames at 3 frame intervals; with the dropout lengths asked for
+# (DROPOUTS), and only those.
 slow="$out/every3"
-OPF="$opf" CLIPS=box SEEDS=1 ESTIMATORS=opf PHASES=0 EVERY=3 \
+OPF="$opf" CLIPS=box SEEDS=1 ESTIMATORS=opf PHASES=0 EVERY=3 DROPOUTS="0.6 1.5" \
   bash "$source_dir/experiments/real_video/run_real_video.sh" "$slow" >"$out/every3.log" 2>&1 ||
   { cat "$out/every3.log" >&2; exit 1; }
 kept="$(($(wc -l <"$slow/box.csv") - 1))"
@@ -57,6 +59,15 @@ awk -F, 'NR == FNR { if (FNR > 1) full[FNR - 2] = $1; next }
   fail "EVERY=3 did not keep frames 0, 3, 6, ..."
 grep -q "kept one frame in 3 of the detections" "$slow/table.md" || fail "EVERY=3 not in table.md"
 [ -s "$slow/box_0.6.txt" ] || fail "EVERY=3: no evaluation"
+[ -s "$slow/box_1.5.txt" ] || fail "DROPOUTS=\"0.6 1.5\": no evaluation of 1.5 s"
+[ ! -e "$slow/box_0.3.csv" ] || fail "DROPOUTS=\"0.6 1.5\": 0.3 s ran too"
+grep -q "| box | 1.5 s | opf |" "$slow/table.md" || fail "DROPOUTS: no 1.5 s row in table.md"
+if DROPOUTS="0.3 2.5" OPF="$opf" bash "$source_dir/experiments/real_video/run_real_video.sh" \
+  "$out/bad" 2>"$out/bad.log"; then
+  fail "DROPOUTS=2.5 accepted"
+fi
+grep -q "DROPOUTS: '2.5' is not a length in seconds between 0 and 2" "$out/bad.log" ||
+  fail "DROPOUTS=2.5: no clear error"
 if EVERY=0 OPF="$opf" bash "$source_dir/experiments/real_video/run_real_video.sh" "$out/bad" \
   2>"$out/bad.log"; then
   fail "EVERY=0 accepted"
