@@ -466,6 +466,30 @@ HorizonWeights weights_by_horizon(const std::vector<Scored>& candidates,
   return weights;
 }
 
+// The time constant with which an axis's motion coasts to a stop beyond the validation horizon
+// (MotionPrediction::coast): from rho, the combination's RMS error at the last horizon node over
+// holding still's there (the same errors, recency-weighted). Infinite where nothing held still to
+// compare with.
+template <class Scored>
+double coast_time(const std::vector<Scored>& candidates, const Validation& combined,
+                  const std::vector<std::size_t>& node_of, int axis, double horizon) {
+  const auto held = std::find_if(candidates.begin(), candidates.end(), [](const Scored& m) {
+    return m.model == TranslationModel::kConstantPosition;
+  });
+  std::size_t last = 0;
+  for (const std::size_t k : node_of) last = std::max(last, k);
+  double combination = 0.0, holding = 0.0;
+  for (std::size_t j = 0; j < node_of.size() && held != candidates.end(); ++j) {
+    if (node_of[j] != last) continue;
+    const double e = combined.errors[j](axis), h = held->validation.errors[j](axis);
+    combination += combined.weights[j] * e * e;
+    holding += combined.weights[j] * h * h;
+  }
+  if (!(holding > 0.0)) return std::numeric_limits<double>::infinity();
+  const double rho = std::sqrt(combination / holding);
+  return rho >= 1.0 ? 0.0 : horizon * (1.0 - rho) / rho;
+}
+
 }  // namespace
 
 std::string_view to_string(TranslationModel model) {
@@ -479,6 +503,8 @@ std::string_view to_string(RotationModel model) {
 MotionPrediction continued(const MotionPrediction& prediction, double t_last,
                            const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) {
   MotionPrediction p = prediction;
+  // Confirmed by the reappearance, the motion is trusted as far again from there.
+  p.validated_until = t_last + (prediction.validated_until - prediction.t_last);
   p.t_last = t_last;
   p.anchor_position = position;
   p.anchor_orientation = orientation.normalized();
@@ -512,8 +538,8 @@ void validate(const MotionPredictionOptions& options) {
 
 Eigen::Vector3d MotionPrediction::position(double h) const {
   Eigen::Vector3d p = anchor_position;
-  const double t = t_last + h;
   for (int axis = 0; axis < 3; ++axis) {
+    const double t = model_time(h, axis);
     for (const WeightedFit& m : translation[static_cast<std::size_t>(axis)]) {
       const double now = m.fit.value(t_last)(axis);
       const double settling = m.settles ? settled(h, settle_time) : 0.0;
@@ -522,6 +548,14 @@ Eigen::Vector3d MotionPrediction::position(double h) const {
     }
   }
   return p;
+}
+
+double MotionPrediction::model_time(double h, int axis) const {
+  const double t = t_last + h;
+  const double tau = coast(axis);
+  if (!(t > validated_until) || !(tau < std::numeric_limits<double>::infinity())) return t;
+  if (!(tau > 0.0)) return validated_until;
+  return validated_until + tau * (1.0 - std::exp(-(t - validated_until) / tau));
 }
 
 double MotionPrediction::weight_at(const WeightedFit& model, double t) const {
@@ -730,9 +764,13 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     return &fitted.back();
   };
   prediction.t_fitted = s.t.back();
+  prediction.validated_until = s.t.back() + horizon;
   prediction.horizon_step =
       (coarse.t.back() - coarse.t.front()) / static_cast<double>(coarse.t.size() - 1);
   double squared_score = 0.0;
+  // Gravity does not stop a thrown object, whatever the validation's horizon: in free flight
+  // (a ballistic model weighs on some axis) no axis coasts.
+  bool free_flight = false;
   for (int axis = 0; axis < 3; ++axis) {
     auto& candidates = scored[static_cast<std::size_t>(axis)];
     if (candidates.empty()) return std::nullopt;
@@ -781,6 +819,10 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       floor += weights[c] * fit->rate_variance(axis);
       fits.push_back(std::move(wf));
     }
+    if (options.coast_beyond_validation)
+      prediction.coast(axis) = coast_time(candidates, combined, node_of, axis, horizon);
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      free_flight = free_flight || (candidates[c].candidate.ballistic && weights[c] > 0.0);
     const auto heaviest =
         std::max_element(model_weights.begin(), model_weights.end(),
                          [](const auto& a, const auto& b) { return a.second < b.second; });
@@ -811,6 +853,7 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     g(2) = std::max(g(2), position_wander(axis) / 3.0);
     prediction.translation_growth.row(axis) = g.transpose();
   }
+  if (free_flight) prediction.coast.setConstant(std::numeric_limits<double>::infinity());
   prediction.translation_score = std::sqrt(squared_score);
   prediction.translation_model = *std::max_element(
       prediction.translation_models.begin(), prediction.translation_models.end(),

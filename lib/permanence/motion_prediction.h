@@ -118,6 +118,9 @@ struct MotionPredictionOptions {
   /// experiments set 0.1 s); on real video with clean losses the last measurements are the most
   /// informative ones (a turn just before the loss), so the default keeps them all.
   double onset_guard = 0.0;
+  /// Beyond the horizon the models were validated to, each axis's motion coasts to a stop where
+  /// the validation says extrapolating stops paying (MotionPrediction::coast); off: it goes on.
+  bool coast_beyond_validation = false;
   int robust_iterations = 3;  ///< Huber reweightings per fit; 0: plain least squares
 };
 
@@ -140,6 +143,7 @@ void describe_options(Visitor& v, MotionPredictionOptions& o) {
   v.number("uncertainty_scale", o.uncertainty_scale, positive());
   v.number("settle_time", o.settle_time, non_negative("seconds >= 0"));
   v.number("onset_guard", o.onset_guard, non_negative("seconds >= 0"));
+  v.flag("coast_beyond_validation", o.coast_beyond_validation);
   v.integer("robust_iterations", o.robust_iterations, between(0, 20, "an integer from 0 to 20"));
 }
 
@@ -210,6 +214,19 @@ struct MotionPrediction {
   double t_fitted = 0.0;
   /// s between the nodes of WeightedFit::weight_by_horizon.
   double horizon_step = 0.0;
+  /// The time up to which the models were validated (t_fitted + the validation horizon H).
+  double validated_until = 0.0;
+  /// Per world axis, s: beyond validated_until the models' motion coasts to a stop with this
+  /// time constant (infinite: it goes on; 0: it stops there). With rho the combination's RMS
+  /// validation error at H over holding still's, an error that grows as h^2 against a motion
+  /// that grows as h (a velocity that wanders) makes rho grow in proportion to h: extrapolating
+  /// stops paying at H / rho, and the coast ends the motion about there, H (1 - rho) / rho
+  /// beyond H. A line or a throw predicted to the noise (rho 0.01-0.1) goes on for seconds; a
+  /// hand (rho 0.3-1) stops within a second; no better than holding still (rho >= 1), it stops.
+  Eigen::Vector3d coast = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+
+  /// The time the models of `axis` are read at, h seconds after the last measurement.
+  double model_time(double h, int axis) const;
 
   /// A model's share of the predicted pose at time t.
   double weight_at(const WeightedFit& model, double t) const;
