@@ -468,25 +468,31 @@ HorizonWeights weights_by_horizon(const std::vector<Scored>& candidates,
 
 // The time constant with which an axis's motion coasts to a stop beyond the validation horizon
 // (MotionPrediction::coast): from rho, the combination's RMS error at the last horizon node over
-// holding still's there (the same errors, recency-weighted). Infinite where nothing held still to
+// holding still's there (the same errors, recency-weighted), each in excess of the measurement
+// noise's variance `noise` that both carry (they are against measurements): over a short horizon
+// the noise would otherwise pass for unpredictable motion. Infinite where nothing held still to
 // compare with.
 template <class Scored>
 double coast_time(const std::vector<Scored>& candidates, const Validation& combined,
-                  const std::vector<std::size_t>& node_of, int axis, double horizon) {
+                  const std::vector<std::size_t>& node_of, int axis, double horizon, double noise) {
   const auto held = std::find_if(candidates.begin(), candidates.end(), [](const Scored& m) {
     return m.model == TranslationModel::kConstantPosition;
   });
   std::size_t last = 0;
   for (const std::size_t k : node_of) last = std::max(last, k);
-  double combination = 0.0, holding = 0.0;
+  double combination = 0.0, holding = 0.0, count = 0.0;
   for (std::size_t j = 0; j < node_of.size() && held != candidates.end(); ++j) {
     if (node_of[j] != last) continue;
     const double e = combined.errors[j](axis), h = held->validation.errors[j](axis);
     combination += combined.weights[j] * e * e;
     holding += combined.weights[j] * h * h;
+    count += combined.weights[j];
   }
-  if (!(holding > 0.0)) return std::numeric_limits<double>::infinity();
-  const double rho = std::sqrt(combination / holding);
+  if (!(count > 0.0)) return std::numeric_limits<double>::infinity();
+  const double moved = holding / count - noise;
+  if (!(moved > 0.0)) return 0.0;  // no motion beyond the noise to carry on
+  const double rho = std::sqrt(std::max(combination / count - noise, 0.0) / moved);
+  if (!(rho > 0.0)) return std::numeric_limits<double>::infinity();  // predicted to the noise
   return rho >= 1.0 ? 0.0 : horizon * (1.0 - rho) / rho;
 }
 
@@ -820,7 +826,7 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       fits.push_back(std::move(wf));
     }
     if (options.coast_beyond_validation)
-      prediction.coast(axis) = coast_time(candidates, combined, node_of, axis, horizon);
+      prediction.coast(axis) = coast_time(candidates, combined, node_of, axis, horizon, noise);
     for (std::size_t c = 0; c < candidates.size(); ++c)
       free_flight = free_flight || (candidates[c].candidate.ballistic && weights[c] > 0.0);
     const auto heaviest =

@@ -120,7 +120,7 @@ struct MotionPredictionOptions {
   double onset_guard = 0.0;
   /// Beyond the horizon the models were validated to, each axis's motion coasts to a stop where
   /// the validation says extrapolating stops paying (MotionPrediction::coast); off: it goes on.
-  bool coast_beyond_validation = false;
+  bool coast_beyond_validation = true;
   int robust_iterations = 3;  ///< Huber reweightings per fit; 0: plain least squares
 };
 
@@ -218,11 +218,12 @@ struct MotionPrediction {
   double validated_until = 0.0;
   /// Per world axis, s: beyond validated_until the models' motion coasts to a stop with this
   /// time constant (infinite: it goes on; 0: it stops there). With rho the combination's RMS
-  /// validation error at H over holding still's, an error that grows as h^2 against a motion
-  /// that grows as h (a velocity that wanders) makes rho grow in proportion to h: extrapolating
-  /// stops paying at H / rho, and the coast ends the motion about there, H (1 - rho) / rho
-  /// beyond H. A line or a throw predicted to the noise (rho 0.01-0.1) goes on for seconds; a
-  /// hand (rho 0.3-1) stops within a second; no better than holding still (rho >= 1), it stops.
+  /// validation error at H over holding still's (both in excess of the measurement noise), an
+  /// error that grows as h^2 against a motion that grows as h (a velocity that wanders) makes
+  /// rho grow in proportion to h: extrapolating stops paying at H / rho, and the coast ends the
+  /// motion about there, H (1 - rho) / rho beyond H. A line predicted to within the noise goes
+  /// on; a hand (rho 0.3-1) stops within a second; no better than holding still (rho >= 1), or
+  /// not moving beyond the noise, it stops at H. Free flight never coasts.
   Eigen::Vector3d coast = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
 
   /// The time the models of `axis` are read at, h seconds after the last measurement.

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -410,11 +411,12 @@ TEST(MotionPrediction, AWanderingVelocityIsFollowedByTheFilterThatModelsIt) {
 
 // Beyond the 0.5 s the models are validated to, a hand that swings an object back and forth
 // (5 cm, a 2 s period, 1 mm noise at 30 Hz) turns back within the second, while a line goes on.
-// With the coast, each axis's motion stops about where its validation says extrapolating stops
-// paying: the swing is predicted better 1-1.5 s ahead, the line about as well as before.
+// With the coast (the default), each axis's motion stops about where its validation says
+// extrapolating stops paying: the swing is predicted better 1-1.5 s ahead, the line goes on.
 TEST(MotionPrediction, BeyondTheValidationAMotionCoastsAsFarAsItsValidationSays) {
-  MotionPredictionOptions coasting;
-  coasting.coast_beyond_validation = true;
+  const MotionPredictionOptions coasting;  // the default
+  MotionPredictionOptions carried_on;
+  carried_on.coast_beyond_validation = false;
   double coasted = 0.0, straight_on = 0.0;
   for (std::uint64_t seed = 1; seed <= 100; ++seed) {
     const double phase = 2.0 * std::numbers::pi * static_cast<double>(seed) / 100.0;
@@ -423,7 +425,7 @@ TEST(MotionPrediction, BeyondTheValidationAMotionCoastsAsFarAsItsValidationSays)
     };
     const auto samples = history(30.0, 2.0, swing, still, 0.001, 0.0, seed);
     const auto with = predict_motion(samples, coasting);
-    const auto without = predict_motion(samples, MotionPredictionOptions{});
+    const auto without = predict_motion(samples, carried_on);
     ASSERT_TRUE(with && without);
     for (const double h : {1.0, 1.5}) {
       coasted += (with->position(h) - swing(5.0 + h)).squaredNorm();
@@ -435,11 +437,13 @@ TEST(MotionPrediction, BeyondTheValidationAMotionCoastsAsFarAsItsValidationSays)
   const PositionAt line = [](double t) { return Eigen::Vector3d(0.2 * t, 0.0, 0.0); };
   const auto samples = history(30.0, 2.0, line, still, 0.001, 0.0, 7);
   const auto with = predict_motion(samples, coasting);
-  const auto without = predict_motion(samples, MotionPredictionOptions{});
+  const auto without = predict_motion(samples, carried_on);
   ASSERT_TRUE(with && without);
-  // Predicted to the noise, the line coasts for a minute: 2.4 mm off at 1.5 s (1.4 mm without).
-  EXPECT_GT(with->coast.x(), 30.0);
-  EXPECT_LT((with->position(1.5) - line(6.5)).norm(), 0.005);
+  // Predicted to within the noise, the line does not coast at all; its still axes stop at the
+  // horizon: 1.0 mm off at 1.5 s (1.4 mm carried on).
+  EXPECT_EQ(with->coast.x(), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(with->coast.y(), 0.0);
+  EXPECT_LT((with->position(1.5) - line(6.5)).norm(), 0.003);
 }
 
 // A walker's depth read from its apparent size swings with its gait: a 2 cm oscillation once a
