@@ -52,6 +52,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
   hypotheses_[0].filter.initialise(translation_of(first), orientation_of(first));
   history_.clear();
   detector_jitter_.clear();
+  displacement_spread_.clear();
   confirmed_motion_.reset();
   t_ = t;
   hidden_ = false;
@@ -65,6 +66,7 @@ void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
                                       const Estimate& estimate) {
   detector_jitter_.add(t, position, orientation);
+  displacement_spread_.add(t, position);
   history_.push_back({t, position, orientation, translation_of(estimate.pose.mean),
                       orientation_of(estimate.pose.mean)});
   if (options_.dynamics.predictor == DynamicsPredictor::kPaper) {
@@ -322,7 +324,9 @@ bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
     --first;
   const bool brief = history_.size() - first < 4 ||
                      history_.back().t - history_[first].t < options_.velocity_window;
-  const auto follow = [&h](MotionPrediction prediction) {
+  const auto follow = [&](MotionPrediction prediction) {
+    if (options_.dynamics.selection.spread_beyond_validation)
+      prediction.track_spread = displacement_spread_.profile();
     h.prediction = std::move(prediction);
     h.prediction_trace = 0.0;
     h.source = Source::kTrajectory;

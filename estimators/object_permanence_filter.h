@@ -10,6 +10,7 @@
 #include "opf/estimators/opf_options.h"
 #include "opf/particles/pose_particle_filter.h"
 #include "opf/permanence/detector_jitter.h"
+#include "opf/permanence/displacement_spread.h"
 
 #include <cstdint>
 #include <deque>
@@ -104,6 +105,9 @@ class ObjectPermanenceFilter final : public Estimator {
   std::vector<Hypothesis> hypotheses_;  ///< [0] is the object's main estimate
   std::deque<MotionSample> history_;    ///< measured frames: measurement and estimate
   DetectorJitter detector_jitter_;      ///< the detector's own noise, for the likelihood
+  /// How far the object moved in a given time over its whole track (not restarted with the
+  /// history): the spread of a prediction held still beyond its validation horizon.
+  DisplacementSpread displacement_spread_;
   /// The dynamics module's last prediction, kept when the object was seen again where it said
   /// (no translation reset): a glimpse too brief to fit anything new continues it; a longer one
   /// that still cannot be fitted continues the axes where it reappeared confirmed (confirmed_by).

@@ -590,7 +590,18 @@ Eigen::Quaterniond MotionPrediction::orientation(double h) const {
 }
 
 Eigen::Vector3d MotionPrediction::translation_variance(double h) const {
-  return uncertainty_scale * uncertainty_scale * (translation_growth * growth_powers(h));
+  const double scale2 = uncertainty_scale * uncertainty_scale;
+  Eigen::Vector3d variance = scale2 * (translation_growth * growth_powers(h));
+  const double horizon = validated_until - t_last;
+  if (track_spread.empty() || !(h > horizon)) return variance;
+  const Eigen::Vector3d at_horizon = scale2 * (translation_growth * growth_powers(horizon));
+  for (int axis = 0; axis < 3; ++axis) {
+    // The time beyond the horizon the models were not read on: the axis held still meanwhile.
+    const double held = (h - horizon) - (model_time(h, axis) - validated_until);
+    if (!(held > 0.0)) continue;
+    variance(axis) = std::max(variance(axis), at_horizon(axis) + track_spread.at(held)(axis));
+  }
+  return variance;
 }
 
 double MotionPrediction::rotation_variance(double h) const {

@@ -25,6 +25,7 @@
 #include <Eigen/Geometry>
 
 #include "opf/fit/local_polynomial.h"
+#include "opf/permanence/displacement_spread.h"
 
 #include <array>
 #include <deque>
@@ -121,6 +122,10 @@ struct MotionPredictionOptions {
   /// Beyond the horizon the models were validated to, each axis's motion coasts to a stop where
   /// the validation says extrapolating stops paying (MotionPrediction::coast); off: it goes on.
   bool coast_beyond_validation = true;
+  /// Beyond that horizon, while an axis's motion coasts (holds still), its variance grows at
+  /// least as the object's own track says it moves in that time (MotionPrediction::track_spread,
+  /// filled by the filter); off: the growth fitted up to the horizon goes on alone.
+  bool spread_beyond_validation = true;
   int robust_iterations = 3;  ///< Huber reweightings per fit; 0: plain least squares
 };
 
@@ -144,6 +149,7 @@ void describe_options(Visitor& v, MotionPredictionOptions& o) {
   v.number("settle_time", o.settle_time, non_negative("seconds >= 0"));
   v.number("onset_guard", o.onset_guard, non_negative("seconds >= 0"));
   v.flag("coast_beyond_validation", o.coast_beyond_validation);
+  v.flag("spread_beyond_validation", o.spread_beyond_validation);
   v.integer("robust_iterations", o.robust_iterations, between(0, 20, "an integer from 0 to 20"));
 }
 
@@ -225,6 +231,12 @@ struct MotionPrediction {
   /// on; a hand (rho 0.3-1) stops within a second; no better than holding still (rho >= 1), or
   /// not moving beyond the noise, it stops at H. Free flight never coasts.
   Eigen::Vector3d coast = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  /// How far the object has moved in a given time over its track (empty: unknown). Beyond
+  /// validated_until, for the time an axis's motion holds still instead of going on (all of it
+  /// where the axis stops at once, none where it goes on), the variance grows at least by this:
+  /// from the validation horizon on, where the fitted growth is an extrapolation, holding still
+  /// is off by what the object was seen to move.
+  DisplacementProfile track_spread;
 
   /// The time the models of `axis` are read at, h seconds after the last measurement.
   double model_time(double h, int axis) const;
@@ -237,7 +249,8 @@ struct MotionPrediction {
   Eigen::Vector3d position(double h) const;
   Eigen::Quaterniond orientation(double h) const;
   /// Per-axis variance of position(h) (m^2) and per-axis variance of the body-frame rotation
-  /// (rad^2): how far the object may be from the prediction.
+  /// (rad^2): how far the object may be from the prediction. Beyond the validation horizon the
+  /// translation's is at least its value there plus track_spread over the time held still.
   Eigen::Vector3d translation_variance(double h) const;
   double rotation_variance(double h) const;
 };

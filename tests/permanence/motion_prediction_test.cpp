@@ -446,6 +446,31 @@ TEST(MotionPrediction, BeyondTheValidationAMotionCoastsAsFarAsItsValidationSays)
   EXPECT_LT((with->position(1.5) - line(6.5)).norm(), 0.003);
 }
 
+// Beyond the validation horizon an axis that holds still is as uncertain as the object's track
+// says it moves in the time held; an axis whose motion goes on keeps the growth its validation
+// fitted. A line along x (predicted to within the noise: it goes on) whose y and z stop at the
+// horizon, and a track that moved 0.1 m RMS in 0.5 s and 0.2 m in 1 s on every axis.
+TEST(MotionPrediction, HeldStillBeyondTheValidationTheSpreadIsTheTracks) {
+  const PositionAt line = [](double t) { return Eigen::Vector3d(0.2 * t, 0.0, 0.0); };
+  const auto samples = history(30.0, 2.0, line, still, 0.001, 0.0, 7);
+  const auto fitted = predict_motion(samples, MotionPredictionOptions{});
+  ASSERT_TRUE(fitted);
+  ASSERT_EQ(fitted->coast.x(), std::numeric_limits<double>::infinity());
+  ASSERT_EQ(fitted->coast.y(), 0.0);
+  MotionPrediction spread = *fitted;
+  spread.track_spread = {{0.5, 1.0},
+                         {Eigen::Vector3d::Constant(0.01), Eigen::Vector3d::Constant(0.04)}};
+  const double horizon = fitted->validated_until - fitted->t_last;
+  ASSERT_GT(horizon, 0.4);
+  for (const double h : {0.5 * horizon, horizon})
+    EXPECT_EQ(spread.translation_variance(h), fitted->translation_variance(h)) << h;
+  const double h = horizon + 0.75;  // held 0.75 s: 0.025 m^2 more than at the horizon
+  EXPECT_EQ(spread.translation_variance(h).x(), fitted->translation_variance(h).x());
+  EXPECT_DOUBLE_EQ(spread.translation_variance(h).y(),
+                   fitted->translation_variance(horizon).y() + 0.025);
+  EXPECT_GT(spread.translation_variance(h).y(), 10.0 * fitted->translation_variance(h).y());
+}
+
 // A walker's depth read from its apparent size swings with its gait: a 2 cm oscillation once a
 // second about a steady mean, measured at 30 Hz with 1 mm noise. Over the first frames of a gap
 // the current swing's velocity predicts it; half a swing on, only the mean does. Weighted per
