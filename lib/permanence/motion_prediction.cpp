@@ -380,10 +380,13 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
 // would weigh a good model and a noise-fitting one evenly. The excess is floored at a tenth of the
 // noise. An exact candidate (zero error) takes it all. `barred(i, best)` returns true for a
 // candidate that gets no weight (free flight unless it is the best: an object flies or it does
-// not, and a few percent of gravity would drop a resting object 0.4 m in 1.5 s).
+// not, and a few percent of gravity would drop a resting object 0.4 m in 1.5 s). With
+// `sharpness` k the weights go as the excess to the power -k: 1 is Bates and Granger's, 0 equal
+// weights, between them the inverse weights shrunk towards equal ones (the scores are estimates
+// from a few origins).
 template <class Barred>
-void inverse_error_weights(std::span<const double> mse, double noise, Barred barred,
-                           std::span<double> weights) {
+void inverse_error_weights(std::span<const double> mse, double noise, double sharpness,
+                           Barred barred, std::span<double> weights) {
   double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < mse.size(); ++i) {
     weights[i] = std::max(mse[i] - noise, 0.1 * noise);  // the excess, for now
@@ -394,6 +397,7 @@ void inverse_error_weights(std::span<const double> mse, double noise, Barred bar
     const double excess = weights[i];
     // Relative to the smallest, so an exact fit (excess 0) is a clean 1 and the rest 0.
     weights[i] = smallest > 0.0 ? smallest / excess : (excess == 0.0 ? 1.0 : 0.0);
+    if (sharpness != 1.0 && weights[i] > 0.0) weights[i] = std::pow(weights[i], sharpness);
     if (barred(i, !(excess > smallest))) weights[i] = 0.0;
     total += weights[i];
   }
@@ -403,9 +407,9 @@ void inverse_error_weights(std::span<const double> mse, double noise, Barred bar
 
 template <class Barred>
 std::vector<double> inverse_error_weights(std::span<const double> mse, double noise,
-                                          Barred barred) {
+                                          double sharpness, Barred barred) {
   std::vector<double> weights(mse.size());
-  inverse_error_weights(mse, noise, barred, weights);
+  inverse_error_weights(mse, noise, sharpness, barred, weights);
   return weights;
 }
 
@@ -428,7 +432,8 @@ struct HorizonWeights {
 template <class Scored>
 HorizonWeights weights_by_horizon(const std::vector<Scored>& candidates,
                                   const std::vector<double>& overall,
-                                  const std::vector<std::size_t>& node_of, int axis, double noise) {
+                                  const std::vector<std::size_t>& node_of, int axis, double noise,
+                                  double sharpness) {
   std::size_t nodes = 0;
   for (const std::size_t k : node_of) nodes = std::max(nodes, k + 1);
   const std::size_t n = candidates.size();
@@ -457,7 +462,7 @@ HorizonWeights weights_by_horizon(const std::vector<Scored>& candidates,
     }
     for (std::size_t c = 0; c < n; ++c) mse[c] = sums[c] / count;
     inverse_error_weights(
-        mse, noise,
+        mse, noise, sharpness,
         [&](std::size_t c, bool) {
           return candidates[c].candidate.ballistic && !(overall[c] > 0.0);
         },
@@ -803,10 +808,11 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     std::vector<double> mse;
     for (const Scored& m : candidates) mse.push_back(m.validation.mean_squared(axis));
     const std::vector<double> weights = inverse_error_weights(
-        mse, noise,
+        mse, noise, options.combination_sharpness,
         [&](std::size_t c, bool best) { return candidates[c].candidate.ballistic && !best; });
     const HorizonWeights node_weights =
-        options.weights_by_horizon ? weights_by_horizon(candidates, weights, node_of, axis, noise)
+        options.weights_by_horizon ? weights_by_horizon(candidates, weights, node_of, axis, noise,
+                                                        options.combination_sharpness)
                                    : HorizonWeights{weights.size(), weights};
     auto& fits = prediction.translation[static_cast<std::size_t>(axis)];
     // The combination's validation errors, each made with the weights of its horizon.
@@ -899,8 +905,8 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   if (rotation_scored.empty()) return std::nullopt;
   std::vector<double> rotation_mse;
   for (const Scored& m : rotation_scored) rotation_mse.push_back(m.validation.mean_squared());
-  const std::vector<double> rotation_weights =
-      inverse_error_weights(rotation_mse, rotation_noise, [](std::size_t, bool) { return false; });
+  const std::vector<double> rotation_weights = inverse_error_weights(
+      rotation_mse, rotation_noise, 1.0, [](std::size_t, bool) { return false; });
   Validation combined = rotation_scored.front().validation;
   for (auto& e : combined.errors) e.setZero();
   const double noise = rotation_noise;

@@ -471,6 +471,34 @@ TEST(MotionPrediction, HeldStillBeyondTheValidationTheSpreadIsTheTracks) {
   EXPECT_GT(spread.translation_variance(h).y(), 10.0 * fitted->translation_variance(h).y());
 }
 
+// The combination's sharpness k weighs each model as its validation error in excess of the
+// noise to the power -k: at 0 every model and window of an axis weighs alike, and the best
+// model's share falls from Bates and Granger's (k = 1) as k falls. A swing, where the models
+// predict unequally well.
+TEST(MotionPrediction, TheCombinationsSharpnessShrinksItsWeightsTowardsEqual) {
+  const PositionAt swing = [](double t) {
+    return Eigen::Vector3d(0.05 * std::sin(std::numbers::pi * t), 0.0, 0.0);
+  };
+  const auto samples = history(30.0, 2.0, swing, still, 0.001, 0.0, 3);
+  const auto heaviest = [&](double sharpness) {
+    MotionPredictionOptions options;
+    options.combination_sharpness = sharpness;
+    const auto prediction = predict_motion(samples, options);
+    EXPECT_TRUE(prediction);
+    std::vector<double> weights;
+    for (const WeightedFit& m : prediction->translation[0]) weights.push_back(m.weight);
+    return std::pair(*std::max_element(weights.begin(), weights.end()),
+                     *std::min_element(weights.begin(), weights.end()));
+  };
+  const auto [bates_granger, bates_granger_least] = heaviest(1.0);
+  const auto [shrunk, shrunk_least] = heaviest(0.5);
+  const auto [equal, equal_least] = heaviest(0.0);
+  EXPECT_GT(bates_granger, 1.2 * shrunk);
+  EXPECT_GT(shrunk, 1.2 * equal);
+  EXPECT_LT(bates_granger_least, shrunk_least);
+  EXPECT_DOUBLE_EQ(equal, equal_least);
+}
+
 // A walker's depth read from its apparent size swings with its gait: a 2 cm oscillation once a
 // second about a steady mean, measured at 30 Hz with 1 mm noise. Over the first frames of a gap
 // the current swing's velocity predicts it; half a swing on, only the mean does. Weighted per
