@@ -101,7 +101,7 @@ struct MotionPredictionOptions {
   /// weights, between them the weights shrunk towards equal ones. Real hand-held motion gains
   /// from shrinking (0.5: the box beats the Kalman filter over 20 placements of the gaps), but
   /// a model that is exactly right needs its weight (0.5 takes the thrown baseball from 3 to
-  /// 25 mm), and the walker loses (docs/dynamics.md, "The combination's sharpness").
+  /// 24 mm), and the walker loses (docs/dynamics.md, "The combination's sharpness").
   double combination_sharpness = 1.0;
   /// Let the prediction's variance grow in proportion to the time hidden too (a1 h: the position
   /// wandering as a random walk) where the validation errors show it: a detector's centroid that
