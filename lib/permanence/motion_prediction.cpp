@@ -413,6 +413,24 @@ std::vector<double> inverse_error_weights(std::span<const double> mse, double no
   return weights;
 }
 
+// The combination's sharpness k on one axis (MotionPredictionOptions::combination_sharpness):
+// from the best candidate's mean squared validation error `best_mse` over the noise's variance,
+// and whether holding still is that candidate.
+double axis_sharpness(double best_mse, double noise, bool still_best,
+                      const MotionPredictionOptions& options) {
+  if (still_best) return options.still_sharpness;
+  const double low = options.misspecified_noise_ratio;
+  if (!(low > 0.0)) return options.combination_sharpness;
+  const double ratio = noise > 0.0
+                           ? best_mse / noise
+                           : (best_mse > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+  if (!(ratio > low)) return options.combination_sharpness;
+  // Log-linear from the ratio `low` to twice it.
+  const double share = std::min(1.0, std::log2(ratio / low));
+  return options.combination_sharpness +
+         share * (options.misspecified_sharpness - options.combination_sharpness);
+}
+
 // The candidates' shares at each horizon node: one row of `candidates` values per node.
 struct HorizonWeights {
   std::size_t candidates = 0;
@@ -699,12 +717,18 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       auto& on_axis = scored[static_cast<std::size_t>(axis)];
       // Every window of a model joins the combination: picking one window by a score over a few
       // origins chases noise (on real hand-held motion the pick swung between 0.2 and 1.6 s from
-      // one occlusion to the next), while weighting them all by their scores does not. Ballistic
-      // flight, all or nothing, keeps its best window only.
+      // one occlusion to the next), while weighting them all by their scores does not. Windows as
+      // long as the history or longer are one fit, which joins once (a throw seen for 0.3 s had
+      // its constant acceleration four times). Ballistic flight, all or nothing, keeps its best
+      // window only.
       if (!candidate.ballistic) {
-        for (std::size_t w = 0; w < by_window.size(); ++w)
-          if (by_window[w].valid)
+        bool whole_history = false;
+        for (std::size_t w = 0; w < by_window.size(); ++w) {
+          const bool whole = options.fit_windows[w] >= span;
+          if (by_window[w].valid && !(whole && whole_history))
             on_axis.push_back({model, candidate, options.fit_windows[w], by_window[w]});
+          whole_history = whole_history || (whole && by_window[w].valid);
+        }
         continue;
       }
       std::size_t best = by_window.size();
@@ -807,13 +831,17 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
       node_of.assign(candidates.front().validation.horizons.size(), 0);
     std::vector<double> mse;
     for (const Scored& m : candidates) mse.push_back(m.validation.mean_squared(axis));
+    const auto best =
+        static_cast<std::size_t>(std::min_element(mse.begin(), mse.end()) - mse.begin());
+    const double sharpness = axis_sharpness(
+        mse[best], noise, candidates[best].model == TranslationModel::kConstantPosition, options);
     const std::vector<double> weights = inverse_error_weights(
-        mse, noise, options.combination_sharpness,
-        [&](std::size_t c, bool best) { return candidates[c].candidate.ballistic && !best; });
+        mse, noise, sharpness,
+        [&](std::size_t c, bool is_best) { return candidates[c].candidate.ballistic && !is_best; });
     const HorizonWeights node_weights =
-        options.weights_by_horizon ? weights_by_horizon(candidates, weights, node_of, axis, noise,
-                                                        options.combination_sharpness)
-                                   : HorizonWeights{weights.size(), weights};
+        options.weights_by_horizon
+            ? weights_by_horizon(candidates, weights, node_of, axis, noise, sharpness)
+            : HorizonWeights{weights.size(), weights};
     auto& fits = prediction.translation[static_cast<std::size_t>(axis)];
     // The combination's validation errors, each made with the weights of its horizon.
     Validation combined = candidates.front().validation;

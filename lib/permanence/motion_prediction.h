@@ -96,13 +96,23 @@ struct MotionPredictionOptions {
   /// 20 placements of the gaps in the real clips the hand-moved objects' hidden errors fall 2-9%,
   /// the walker's move by under 1%. false: one set of weights, judged on all the errors.
   bool weights_by_horizon = true;
-  /// The translation models' weights go as their validation error in excess of the noise to the
-  /// power -combination_sharpness: 1 is Bates and Granger's inverse-error weights, 0 equal
-  /// weights, between them the weights shrunk towards equal ones. Real hand-held motion gains
-  /// from shrinking (0.5: the box beats the Kalman filter over 20 placements of the gaps), but
-  /// a model that is exactly right needs its weight (0.5 takes the thrown baseball from 3 to
-  /// 24 mm), and the walker loses (docs/dynamics.md, "The combination's sharpness").
+  /// The translation models' weights on an axis go as their validation error in excess of the
+  /// noise to the power -k (1: Bates and Granger's inverse-error weights, 0: equal weights), k read
+  /// from what the validation shows on that axis (docs/dynamics.md, "The combination's
+  /// sharpness"):
+  /// - combination_sharpness where a moving model predicts best, to within
+  ///   misspecified_noise_ratio times the noise's variance: a motion the models describe (a
+  ///   throw, a slide), whose right model needs its weight;
+  /// - misspecified_sharpness where even the best misses by twice that ratio or more: every model
+  ///   is wrong (a hand's motion), their scores over the last second say less about the next, and
+  ///   weights shrunk towards equal average their errors out; log-linear in the ratio between;
+  /// - still_sharpness where holding still predicts best: the motion seen is jitter about a place
+  ///   (a walker's depth read from her size), which the moving models would extrapolate.
   double combination_sharpness = 1.0;
+  double misspecified_sharpness = 0.5;
+  /// 0: combination_sharpness wherever a moving model predicts best.
+  double misspecified_noise_ratio = 6.0;
+  double still_sharpness = 2.0;
   /// Let the prediction's variance grow in proportion to the time hidden too (a1 h: the position
   /// wandering as a random walk) where the validation errors show it: a detector's centroid that
   /// drifts with the segmentation, a walker's sway. Without the term the variance's fit (h^2 and
@@ -150,6 +160,12 @@ void describe_options(Visitor& v, MotionPredictionOptions& o) {
   v.numbers("wander_memories", o.wander_memories, positive("positive fractions"));
   v.flag("weights_by_horizon", o.weights_by_horizon);
   v.number("combination_sharpness", o.combination_sharpness,
+           between(0.0, 4.0, "a number from 0 (equal weights) to 4"));
+  v.number("misspecified_sharpness", o.misspecified_sharpness,
+           between(0.0, 4.0, "a number from 0 (equal weights) to 4"));
+  v.number("misspecified_noise_ratio", o.misspecified_noise_ratio,
+           non_negative("a ratio >= 0 (0: off)"));
+  v.number("still_sharpness", o.still_sharpness,
            between(0.0, 4.0, "a number from 0 (equal weights) to 4"));
   v.flag("diffusion_growth", o.diffusion_growth);
   v.number("gravity", o.gravity, non_negative("m/s^2 >= 0"));

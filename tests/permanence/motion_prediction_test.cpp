@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -482,7 +483,9 @@ TEST(MotionPrediction, TheCombinationsSharpnessShrinksItsWeightsTowardsEqual) {
   const auto samples = history(30.0, 2.0, swing, still, 0.001, 0.0, 3);
   const auto heaviest = [&](double sharpness) {
     MotionPredictionOptions options;
-    options.combination_sharpness = sharpness;
+    // The same k whatever the validation shows.
+    options.combination_sharpness = options.still_sharpness = sharpness;
+    options.misspecified_noise_ratio = 0.0;
     const auto prediction = predict_motion(samples, options);
     EXPECT_TRUE(prediction);
     std::vector<double> weights;
@@ -499,6 +502,74 @@ TEST(MotionPrediction, TheCombinationsSharpnessShrinksItsWeightsTowardsEqual) {
   EXPECT_DOUBLE_EQ(equal, equal_least);
 }
 
+// The weights of the models on `axis` under `options`.
+std::vector<double> axis_weights(const std::vector<MotionSample>& samples,
+                                 const MotionPredictionOptions& options, int axis) {
+  const auto prediction = predict_motion(samples, options);
+  EXPECT_TRUE(prediction);
+  std::vector<double> weights;
+  if (prediction)
+    for (const WeightedFit& m : prediction->translation[static_cast<std::size_t>(axis)])
+      weights.push_back(m.weight);
+  return weights;
+}
+
+// Options whose sharpness is k whatever the validation shows.
+MotionPredictionOptions sharpness_everywhere(double k) {
+  MotionPredictionOptions options;
+  options.combination_sharpness = options.misspecified_sharpness = options.still_sharpness = k;
+  return options;
+}
+
+// The default weights on `axis` are the ones of sharpness `k` everywhere, and not those of `other`.
+void expect_sharpness(const std::vector<MotionSample>& samples, int axis, double k, double other) {
+  const std::vector<double> defaults = axis_weights(samples, MotionPredictionOptions{}, axis);
+  const std::vector<double> expected = axis_weights(samples, sharpness_everywhere(k), axis);
+  const std::vector<double> different = axis_weights(samples, sharpness_everywhere(other), axis);
+  ASSERT_EQ(defaults.size(), expected.size());
+  ASSERT_EQ(defaults.size(), different.size());
+  ASSERT_GT(defaults.size(), 2u);
+  double apart = 0.0;
+  for (std::size_t c = 0; c < defaults.size(); ++c) {
+    EXPECT_DOUBLE_EQ(defaults[c], expected[c]) << "model " << c;
+    apart = std::max(apart, std::abs(defaults[c] - different[c]));
+  }
+  EXPECT_GT(apart, 0.01);
+}
+
+// The sharpness follows what the validation shows on each axis (30 Hz, 2 s of history):
+// - an object at rest, measured with 2 mm noise: holding still predicts best, k = 2;
+// - a line at 0.2 m/s with 2 mm noise, a motion the models describe: a constant velocity predicts
+//   best, to within the noise's variance times 6, and keeps Bates and Granger's k = 1;
+// - a drift with a 2 cm wobble at 1.5 Hz, measured to 0.1 mm: no model describes it, the best
+//   misses by far more than twice that ratio, k = 0.5.
+TEST(MotionPrediction, TheSharpnessFollowsWhatTheValidationShows) {
+  const PositionAt rest = [](double) { return Eigen::Vector3d(0.5, 0.0, 0.02); };
+  expect_sharpness(history(30.0, 2.0, rest, still, 0.002, 0.0, 5), 0, 2.0, 1.0);
+  const PositionAt line = [](double t) { return Eigen::Vector3d(0.2 * t, 0.0, 0.0); };
+  expect_sharpness(history(30.0, 2.0, line, still, 0.002, 0.0, 5), 0, 1.0, 0.5);
+  const PositionAt wobble = [](double t) {
+    return Eigen::Vector3d(0.3 * t + 0.02 * std::sin(3.0 * std::numbers::pi * t), 0.0, 0.0);
+  };
+  expect_sharpness(history(30.0, 2.0, wobble, still, 0.0001, 0.0, 5), 0, 0.5, 1.0);
+}
+
+// Fit windows as long as the history or longer are one fit: with 0.3 s of history the windows
+// 0.2 and 0.4 s join (0.4 s fits the whole history), 0.8 and 1.6 s, the same fit again, do not.
+TEST(MotionPrediction, WindowsLongerThanTheHistoryJoinOnce) {
+  const PositionAt line = [](double t) { return Eigen::Vector3d(0.2 * t, 0.0, 0.0); };
+  const auto prediction =
+      predict_motion(history(30.0, 0.3, line, still, 0.002, 0.0, 5), MotionPredictionOptions{});
+  ASSERT_TRUE(prediction);
+  for (const auto& fits : prediction->translation) {
+    std::vector<double> windows;
+    for (const WeightedFit& m : fits) windows.push_back(m.window);
+    EXPECT_EQ(std::count(windows.begin(), windows.end(), 0.8), 0);
+    EXPECT_EQ(std::count(windows.begin(), windows.end(), 1.6), 0);
+    EXPECT_GT(std::count(windows.begin(), windows.end(), 0.4), 0);
+  }
+}
+
 // A walker's depth read from its apparent size swings with its gait: a 2 cm oscillation once a
 // second about a steady mean, measured at 30 Hz with 1 mm noise. Over the first frames of a gap
 // the current swing's velocity predicts it; half a swing on, only the mean does. Weighted per
@@ -507,8 +578,8 @@ TEST(MotionPrediction, TheCombinationsSharpnessShrinksItsWeightsTowardsEqual) {
 TEST(MotionPrediction, EachHorizonIsLedByTheModelThatPredictedItBest) {
   const double rate = 30.0, amplitude = 0.02, period = 1.0, sigma = 0.001;
   // Without the coast beyond the validation horizon, whose length each combination reads from
-  // its own errors there.
-  MotionPredictionOptions by_horizon_options;
+  // its own errors there, and with Bates and Granger's weights throughout.
+  MotionPredictionOptions by_horizon_options = sharpness_everywhere(1.0);
   by_horizon_options.coast_beyond_validation = false;
   MotionPredictionOptions one_set = by_horizon_options;
   one_set.weights_by_horizon = false;
