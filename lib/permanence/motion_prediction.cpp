@@ -383,10 +383,11 @@ Eigen::Vector3d wander_intensity(const std::vector<double>& t, const Eigen::Matr
 // not, and a few percent of gravity would drop a resting object 0.4 m in 1.5 s). With
 // `sharpness` k the weights go as the excess to the power -k: 1 is Bates and Granger's, 0 equal
 // weights, between them the inverse weights shrunk towards equal ones (the scores are estimates
-// from a few origins).
+// from a few origins), for the candidates whose excess is within `within` times the smallest
+// (0: all of them).
 template <class Barred>
 void inverse_error_weights(std::span<const double> mse, double noise, double sharpness,
-                           Barred barred, std::span<double> weights) {
+                           double within, Barred barred, std::span<double> weights) {
   double smallest = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < mse.size(); ++i) {
     weights[i] = std::max(mse[i] - noise, 0.1 * noise);  // the excess, for now
@@ -397,7 +398,13 @@ void inverse_error_weights(std::span<const double> mse, double noise, double sha
     const double excess = weights[i];
     // Relative to the smallest, so an exact fit (excess 0) is a clean 1 and the rest 0.
     weights[i] = smallest > 0.0 ? smallest / excess : (excess == 0.0 ? 1.0 : 0.0);
-    if (sharpness != 1.0 && weights[i] > 0.0) weights[i] = std::pow(weights[i], sharpness);
+    if (sharpness != 1.0 && weights[i] > 0.0) {
+      // Shrunk (k < 1) only among those within `within` of the smallest excess; beyond, the
+      // weights fall as Bates and Granger's, continuing from there.
+      const double r = weights[i];
+      const double edge = sharpness < 1.0 && within > 0.0 ? 1.0 / within : 0.0;
+      weights[i] = r >= edge ? std::pow(r, sharpness) : std::pow(edge, sharpness - 1.0) * r;
+    }
     if (barred(i, !(excess > smallest))) weights[i] = 0.0;
     total += weights[i];
   }
@@ -407,9 +414,9 @@ void inverse_error_weights(std::span<const double> mse, double noise, double sha
 
 template <class Barred>
 std::vector<double> inverse_error_weights(std::span<const double> mse, double noise,
-                                          double sharpness, Barred barred) {
+                                          double sharpness, double within, Barred barred) {
   std::vector<double> weights(mse.size());
-  inverse_error_weights(mse, noise, sharpness, barred, weights);
+  inverse_error_weights(mse, noise, sharpness, within, barred, weights);
   return weights;
 }
 
@@ -451,7 +458,7 @@ template <class Scored>
 HorizonWeights weights_by_horizon(const std::vector<Scored>& candidates,
                                   const std::vector<double>& overall,
                                   const std::vector<std::size_t>& node_of, int axis, double noise,
-                                  double sharpness) {
+                                  double sharpness, double within) {
   std::size_t nodes = 0;
   for (const std::size_t k : node_of) nodes = std::max(nodes, k + 1);
   const std::size_t n = candidates.size();
@@ -480,7 +487,7 @@ HorizonWeights weights_by_horizon(const std::vector<Scored>& candidates,
     }
     for (std::size_t c = 0; c < n; ++c) mse[c] = sums[c] / count;
     inverse_error_weights(
-        mse, noise, sharpness,
+        mse, noise, sharpness, within,
         [&](std::size_t c, bool) {
           return candidates[c].candidate.ballistic && !(overall[c] > 0.0);
         },
@@ -836,12 +843,12 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
     const double sharpness = axis_sharpness(
         mse[best], noise, candidates[best].model == TranslationModel::kConstantPosition, options);
     const std::vector<double> weights = inverse_error_weights(
-        mse, noise, sharpness,
+        mse, noise, sharpness, options.misspecified_within,
         [&](std::size_t c, bool is_best) { return candidates[c].candidate.ballistic && !is_best; });
     const HorizonWeights node_weights =
-        options.weights_by_horizon
-            ? weights_by_horizon(candidates, weights, node_of, axis, noise, sharpness)
-            : HorizonWeights{weights.size(), weights};
+        options.weights_by_horizon ? weights_by_horizon(candidates, weights, node_of, axis, noise,
+                                                        sharpness, options.misspecified_within)
+                                   : HorizonWeights{weights.size(), weights};
     auto& fits = prediction.translation[static_cast<std::size_t>(axis)];
     // The combination's validation errors, each made with the weights of its horizon.
     Validation combined = candidates.front().validation;
@@ -934,7 +941,7 @@ std::optional<MotionPrediction> predict_motion(std::span<const MotionSample> all
   std::vector<double> rotation_mse;
   for (const Scored& m : rotation_scored) rotation_mse.push_back(m.validation.mean_squared());
   const std::vector<double> rotation_weights = inverse_error_weights(
-      rotation_mse, rotation_noise, 1.0, [](std::size_t, bool) { return false; });
+      rotation_mse, rotation_noise, 1.0, 0.0, [](std::size_t, bool) { return false; });
   Validation combined = rotation_scored.front().validation;
   for (auto& e : combined.errors) e.setZero();
   const double noise = rotation_noise;

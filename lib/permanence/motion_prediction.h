@@ -105,13 +105,17 @@ struct MotionPredictionOptions {
   ///   throw, a slide), whose right model needs its weight;
   /// - misspecified_sharpness where even the best misses by twice that ratio or more: every model
   ///   is wrong (a hand's motion), their scores over the last second say less about the next, and
-  ///   weights shrunk towards equal average their errors out; log-linear in the ratio between;
+  ///   weights shrunk towards equal average their errors out; log-linear in the ratio between.
+  ///   Shrunk among the models whose excess is within misspecified_within times the best's only
+  ///   (beyond, the weights fall as Bates and Granger's): a ratio read from a short history is
+  ///   mostly the fits' parameter error, and the clearly wrong models must not gain;
   /// - still_sharpness where holding still predicts best: the motion seen is jitter about a place
   ///   (a walker's depth read from her size), which the moving models would extrapolate.
   double combination_sharpness = 1.0;
   double misspecified_sharpness = 0.5;
   /// 0: combination_sharpness wherever a moving model predicts best.
   double misspecified_noise_ratio = 6.0;
+  double misspecified_within = 4.0;  ///< 0: every model shrunk alike
   double still_sharpness = 2.0;
   /// Let the prediction's variance grow in proportion to the time hidden too (a1 h: the position
   /// wandering as a random walk) where the validation errors show it: a detector's centroid that
@@ -165,6 +169,8 @@ void describe_options(Visitor& v, MotionPredictionOptions& o) {
            between(0.0, 4.0, "a number from 0 (equal weights) to 4"));
   v.number("misspecified_noise_ratio", o.misspecified_noise_ratio,
            non_negative("a ratio >= 0 (0: off)"));
+  v.number("misspecified_within", o.misspecified_within,
+           non_negative("a factor >= 0 (0: every model)"));
   v.number("still_sharpness", o.still_sharpness,
            between(0.0, 4.0, "a number from 0 (equal weights) to 4"));
   v.flag("diffusion_growth", o.diffusion_growth);
