@@ -393,18 +393,17 @@ void inverse_error_weights(std::span<const double> mse, double noise, double sha
     weights[i] = std::max(mse[i] - noise, 0.1 * noise);  // the excess, for now
     smallest = std::min(smallest, weights[i]);
   }
+  // Shrunk (k < 1) only among those within `within` of the smallest excess; beyond, the weights
+  // fall as Bates and Granger's, continuing from there.
+  const double edge = sharpness < 1.0 && within > 0.0 ? 1.0 / within : 0.0;
   double total = 0.0;
   for (std::size_t i = 0; i < mse.size(); ++i) {
     const double excess = weights[i];
     // Relative to the smallest, so an exact fit (excess 0) is a clean 1 and the rest 0.
-    weights[i] = smallest > 0.0 ? smallest / excess : (excess == 0.0 ? 1.0 : 0.0);
-    if (sharpness != 1.0 && weights[i] > 0.0) {
-      // Shrunk (k < 1) only among those within `within` of the smallest excess; beyond, the
-      // weights fall as Bates and Granger's, continuing from there.
-      const double r = weights[i];
-      const double edge = sharpness < 1.0 && within > 0.0 ? 1.0 / within : 0.0;
-      weights[i] = r >= edge ? std::pow(r, sharpness) : std::pow(edge, sharpness - 1.0) * r;
-    }
+    const double r = smallest > 0.0 ? smallest / excess : (excess == 0.0 ? 1.0 : 0.0);
+    weights[i] = sharpness == 1.0 || !(r > 0.0)
+                     ? r
+                     : (r >= edge ? std::pow(r, sharpness) : std::pow(edge, sharpness - 1.0) * r);
     if (barred(i, !(excess > smallest))) weights[i] = 0.0;
     total += weights[i];
   }
