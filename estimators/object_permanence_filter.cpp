@@ -281,15 +281,19 @@ std::vector<TrajectorySample> ObjectPermanenceFilter::estimate_history() const {
 
 namespace {
 
-// Narrows the translation particles about their mean, per world axis, where the cloud is wider
-// than `scale` times what the history shows of the estimate's error (never widens it): the mean
-// squared distance between the estimates and the measurements, plus the detector's noise read
-// from the measurements (second_difference_noise.h). With e the estimate's error and n the
-// noise, E[e^2] = E[(e - n)^2] - sigma^2 + 2 E[e n] <= E[(e - n)^2] + sigma^2 whenever the
-// estimate does not amplify the noise (E[e n] <= sigma^2): a bound however closely it follows
-// the measurements.
-void narrow_to_measured_discrepancy(PoseParticleFilter& filter,
-                                    std::span<const MotionSample> history, double scale) {
+// Sets the translation particles' spread about their mean, per world axis, to `scale` times what
+// the history shows of the estimate's error where the cloud is wider: the mean squared distance
+// between the estimates and the measurements, plus the detector's noise read from the
+// measurements (second_difference_noise.h). With e the estimate's error and n the noise,
+// E[e^2] = E[(e - n)^2] - sigma^2 + 2 E[e n] <= E[(e - n)^2] + sigma^2 whenever the estimate does
+// not amplify the noise (E[e n] <= sigma^2): a bound however closely it follows the measurements.
+// With `widen`, also where the cloud is narrower and the detector noisier than the configured
+// observation noise (a walker's depth read from her size): the cloud, the posterior under that
+// noise, then claims more than any detection of the object when it reappears can show. Where the
+// detector is finer than configured, the cloud is already cautious and stays as it is.
+void spread_to_measured_discrepancy(PoseParticleFilter& filter,
+                                    std::span<const MotionSample> history, double scale,
+                                    bool widen) {
   if (history.size() < 3) return;
   Eigen::Matrix3Xd measured(3, static_cast<Eigen::Index>(history.size()));
   Eigen::Vector3d squares = Eigen::Vector3d::Zero();
@@ -297,14 +301,17 @@ void narrow_to_measured_discrepancy(PoseParticleFilter& filter,
     measured.col(static_cast<Eigen::Index>(k)) = history[k].measured_position;
     squares += (history[k].estimated_position - history[k].measured_position).cwiseAbs2();
   }
+  const Eigen::Vector3d noise = noise_variance_per_axis(measured);
   const Eigen::Vector3d target =
-      scale * scale *
-      (squares / static_cast<double>(history.size()) + noise_variance_per_axis(measured));
+      scale * scale * (squares / static_cast<double>(history.size()) + noise);
+  const double configured = filter.options().observation_noise_translation;
   const TranslationMoments cloud = filter.translation_moments();
   auto& states = filter.translation().states;
   for (int axis = 0; axis < 3; ++axis) {
     const double variance = cloud.covariance(axis, axis);
-    if (!(variance > target(axis))) continue;
+    const bool widens = widen && noise(axis) > configured * configured;
+    // A collapsed axis (every particle alike) has no shape to widen.
+    if (!(variance > 0.0) || (!widens && !(variance > target(axis)))) continue;
     const double factor = std::sqrt(target(axis) / variance);
     states.row(axis) =
         (cloud.mean(axis) + factor * (states.row(axis).array() - cloud.mean(axis))).matrix();
@@ -369,8 +376,8 @@ bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
     return fallback ? continue_from_last(confirmed_by(*fallback, reappeared_at_, reappeared_where_))
                     : false;
   if (options_.measured_onset_spread)
-    narrow_to_measured_discrepancy(h.filter, samples,
-                                   options_.dynamics.selection.uncertainty_scale);
+    spread_to_measured_discrepancy(h.filter, samples, options_.dynamics.selection.uncertainty_scale,
+                                   options_.widen_onset_spread);
   return follow(std::move(*prediction));
 }
 

@@ -77,9 +77,16 @@ struct OpfOptions {
   /// the estimate's error (its RMS distance from the measurements, with the detector's noise
   /// added), where the cloud is wider: the cloud's spread while visible is the configured
   /// observation noise's (1 cm), which can be twenty times the detector's, and the reported spread
-  /// while hidden would then say nothing of how far off the estimate may be. Never widens. false:
-  /// the cloud as the filter left it.
+  /// while hidden would then say nothing of how far off the estimate may be. false: the cloud as
+  /// the filter left it.
   bool measured_onset_spread = true;
+  /// With measured_onset_spread, also widen the cloud to that spread where it is narrower, on an
+  /// axis whose detector noise (read from the measurements) exceeds the configured observation
+  /// noise: the cloud is then the posterior under a noise finer than the detector's (a walker's
+  /// depth read from her size jitters by centimetres), narrower than how far the next detection
+  /// may lie from the estimate, and a hidden object is checked against that detection when it
+  /// reappears. false: never widens.
+  bool widen_onset_spread = true;
   /// At the first measurement after a gap, where the translation likelihood would leave fewer
   /// than this share of the particles effective (the object turns up in the far tail of the
   /// cloud the gap left), the translation takes the Gaussian posterior of the cloud's moments and
@@ -116,6 +123,7 @@ void describe_options(Visitor& v, OpfOptions& o) {
   v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
   v.flag("adaptive_translation_noise", o.adaptive_translation_noise);
   v.flag("measured_onset_spread", o.measured_onset_spread);
+  v.flag("widen_onset_spread", o.widen_onset_spread);
   v.number("reacquisition_gaussian_share", o.reacquisition_gaussian_share,
            between(0.0, 1.0, "a share from 0 to 1"));
   v.number("velocity_window", o.velocity_window, positive("a positive number of s"));
