@@ -773,8 +773,8 @@ TEST(ObjectPermanenceFilter, AtOnsetTheSpreadWidensToANoisierDetector) {
       ++hidden;
     }
   }
-  // Widened: the 74 mm on z dominate sqrt(trace); never widened: the configured noise's
-  // sqrt(3) x 7.6 mm and a frame of the prediction's growth (23 mm).
+  // Widened: the 74 mm on z dominate sqrt(trace) (73 mm); never widened: the configured noise's
+  // sqrt(3) x 7.6 mm and a frame of the prediction's growth (25 mm).
   EXPECT_GT(widened_spread / 4.0, 0.065);
   EXPECT_LT(widened_spread / 4.0, 0.085);
   EXPECT_LT(narrowed_spread / 4.0, 0.03);
