@@ -96,6 +96,18 @@ double error_at(const SceneRun& r, const Scene& s, const std::string& object, in
   throw std::logic_error("no such object");
 }
 
+// sqrt(trace) of an estimate's position covariance: the spread the OPF reports.
+double position_spread(const SceneRun& r, const std::string& object, int k) {
+  return std::sqrt(r.estimates[k].at(object).pose.cov.asEigen().topLeftCorner<3, 3>().trace());
+}
+
+// A ball moving along a line at 0.18 m/s, hidden over frames [hidden_from, hidden_to).
+ScriptedObject line_ball(int hidden_from, int hidden_to) {
+  return {"ball", [](double t) { return Eigen::Vector3d(0.3 + 0.1 * t, -0.2 + 0.15 * t, 0.0); },
+          [](double) { return Eigen::Quaterniond::Identity(); },
+          [=](int k) { return k < hidden_from || k >= hidden_to; }};
+}
+
 Eigen::Vector3d lerp(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double u) {
   return a + std::clamp(u, 0.0, 1.0) * (b - a);
 }
@@ -677,8 +689,7 @@ TEST(ObjectPermanenceFilter, HiddenUncertaintyCoversTheError) {
     };
     const SceneRun opf = run(scene, opf_factory(OpfOptions{}), seed);
     for (int k = 70; k < 100; ++k) {
-      const Estimate& e = opf.estimates[k].at("ball");
-      const double spread = std::sqrt(e.pose.cov.asEigen().topLeftCorner<3, 3>().trace());
+      const double spread = position_spread(opf, "ball", k);
       const double error = error_at(opf, scene, "ball", k);
       covered += error <= 2.0 * spread;
       ++hidden;
@@ -706,15 +717,10 @@ TEST(ObjectPermanenceFilter, AtOnsetTheSpreadIsWhatTheHistoryShows) {
     Scene scene;
     scene.frames = 100;
     scene.noise_translation = 0.001;
-    scene.objects.push_back(
-        {"ball", [](double t) { return Eigen::Vector3d(0.3 + 0.1 * t, -0.2 + 0.15 * t, 0.0); },
-         [](double) { return Eigen::Quaterniond::Identity(); },
-         [](int k) { return k < 70 || k >= 79; }});
+    scene.objects.push_back(line_ball(70, 79));
     const SceneRun narrowed = run(scene, opf_factory(OpfOptions{}), seed);
     const SceneRun wide = run(scene, opf_factory(configured), seed);
-    const auto spread = [](const SceneRun& r, int k) {
-      return std::sqrt(r.estimates[k].at("ball").pose.cov.asEigen().topLeftCorner<3, 3>().trace());
-    };
+    const auto spread = [](const SceneRun& r, int k) { return position_spread(r, "ball", k); };
     narrowed_spread += spread(narrowed, 70);
     configured_spread += spread(wide, 70);
     for (int k = 70; k < 79; ++k) {
@@ -750,15 +756,10 @@ TEST(ObjectPermanenceFilter, AtOnsetTheSpreadWidensToANoisierDetector) {
     scene.frames = 50;
     scene.noise_translation = 0.008;
     scene.noise_depth = 0.03;
-    scene.objects.push_back(
-        {"ball", [](double t) { return Eigen::Vector3d(0.3 + 0.1 * t, -0.2 + 0.15 * t, 0.0); },
-         [](double) { return Eigen::Quaterniond::Identity(); },
-         [](int k) { return k < 35 || k >= 41; }});
+    scene.objects.push_back(line_ball(35, 41));
     const SceneRun widened = run(scene, opf_factory(OpfOptions{}), seed);
     const SceneRun narrowed = run(scene, opf_factory(narrowing_only), seed);
-    const auto spread = [](const SceneRun& r, int k) {
-      return std::sqrt(r.estimates[k].at("ball").pose.cov.asEigen().topLeftCorner<3, 3>().trace());
-    };
+    const auto spread = [](const SceneRun& r, int k) { return position_spread(r, "ball", k); };
     const auto off_detection = [](const SceneRun& r, int k) {
       return (translation_of(r.estimates[k].at("ball").pose.mean) - r.measured[k].at("ball"))
           .norm();
@@ -797,9 +798,7 @@ TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) 
     scene.objects.push_back(wandering_ball(seed, 0.3, scene.frames, 70, 100));
     const SceneRun gaussian = run(scene, opf_factory(OpfOptions{}), seed);
     const SceneRun reweighted = run(scene, opf_factory(reweighting), seed);
-    const auto spread = [](const SceneRun& r, int k) {
-      return std::sqrt(r.estimates[k].at("ball").pose.cov.asEigen().topLeftCorner<3, 3>().trace());
-    };
+    const auto spread = [](const SceneRun& r, int k) { return position_spread(r, "ball", k); };
     ASSERT_GT(spread(gaussian, 99), 0.2) << "seed " << seed;
     // The measurement's own error at frame 100 is 3 mm (the noise stream is the same for every
     // seed); the prior pulls the posterior from it by R / (P + R) of their distance, under 1 mm.
