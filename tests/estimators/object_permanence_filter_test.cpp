@@ -53,14 +53,14 @@ SceneRun run(const Scene& scene, const EstimatorFactory& factory, std::uint64_t 
   Random noise(99);  // the same measurement stream for every estimator
   Tracker tracker(factory, seed);
   SceneRun result;
+  Eigen::Vector3d sigma = Eigen::Vector3d::Constant(scene.noise_translation);
+  if (scene.noise_depth >= 0.0) sigma.z() = scene.noise_depth;
   for (int k = 0; k < scene.frames; ++k) {
     Frame frame{k / scene.rate, {}};
     result.measured.emplace_back();
     for (const auto& o : scene.objects) {
       const Eigen::Vector3d n(noise.normal(), noise.normal(), noise.normal());
       const Eigen::Vector3d m(noise.normal(), noise.normal(), noise.normal());
-      Eigen::Vector3d sigma = Eigen::Vector3d::Constant(scene.noise_translation);
-      if (scene.noise_depth >= 0.0) sigma.z() = scene.noise_depth;
       const Eigen::Vector3d measured = o.position(frame.t) + sigma.cwiseProduct(n);
       result.measured.back()[o.name] = measured;
       if (!o.visible(k)) continue;
