@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <deque>
 #include <optional>
 #include <vector>
@@ -18,7 +19,9 @@ namespace opf {
 /// The second differences of consecutive measurements at equal intervals (their two increments
 /// subtracted: positions per world axis, orientations as tangent increments per body axis), read
 /// as noise (second_difference_noise.h). Kept over the last `window` seconds; a gap (an interval
-/// unlike the one before) starts them afresh.
+/// unlike the one before) starts them afresh. Each coordinate's squares are also kept sorted, so
+/// the median read every frame costs a binary search and a short move per frame, not a selection
+/// over the window (same values: the median is the same element).
 class DetectorJitter {
  public:
   explicit DetectorJitter(double window) : window_(window) {}
@@ -29,10 +32,10 @@ class DetectorJitter {
   /// The rotation noise's standard deviation (rad), of the noisiest body axis (one spread serves
   /// all three in the filter's likelihood, and must not over-trust any); nothing before
   /// kMinimumDifferences differences are in.
-  std::optional<double> rotation_sigma();
+  std::optional<double> rotation_sigma() const;
   /// The position noise's standard deviation (m) per world axis; nothing before
   /// kMinimumDifferences differences are in.
-  std::optional<Eigen::Vector3d> translation_sigmas();
+  std::optional<Eigen::Vector3d> translation_sigmas() const;
 
   static constexpr std::size_t kMinimumDifferences = 8;
 
@@ -41,8 +44,13 @@ class DetectorJitter {
     double t;
     Eigen::Vector3d translation_squares;  ///< per world axis
     Eigen::Vector3d rotation_squares;     ///< per body axis
+    double square(int channel) const;
   };
-  Eigen::Vector3d sigmas(Eigen::Vector3d Difference::*squares);
+  /// The six coordinates' squares: translation per world axis, then rotation per body axis.
+  static constexpr int kChannels = 6;
+  Eigen::Vector3d sigmas(int first_channel) const;
+  void insert(const Difference& d);
+  void erase(const Difference& d);
 
   double window_;
   std::deque<Difference> differences_;
@@ -52,7 +60,7 @@ class DetectorJitter {
   std::optional<Eigen::Vector3d> last_step_;  ///< position increment
   std::optional<Eigen::Vector3d> last_turn_;  ///< tangent increment
   double last_interval_ = 0.0;
-  std::vector<double> scratch_;  ///< reused: no allocation per frame
+  std::array<std::vector<double>, kChannels> sorted_;  ///< each channel's squares, ascending
 };
 
 }  // namespace opf

@@ -990,6 +990,7 @@ std::optional<RecentVelocity> recent_velocity(const std::deque<MotionSample>& hi
     Channels c;
   };
   std::vector<Sample> samples;
+  samples.reserve(history.size());  // one allocation per step, not one per doubling
   for (auto it = history.rbegin(); it != history.rend() && last.t - it->t <= window; ++it) {
     Sample s{it->t - last.t, Channels()};
     s.c << it->measured_position - last.measured_position,

@@ -6,12 +6,25 @@
 
 namespace opf {
 
+namespace {
+
+double noise_variance_from_median(double median) {
+  constexpr double kChiSquareOneMedian = 0.4549;
+  return median / (6.0 * kChiSquareOneMedian);
+}
+
+}  // namespace
+
 double noise_variance_from_second_differences(std::vector<double>& squares) {
   if (squares.empty()) return 0.0;
-  constexpr double kChiSquareOneMedian = 0.4549;
   const auto middle = squares.begin() + static_cast<std::ptrdiff_t>(squares.size() / 2);
   std::nth_element(squares.begin(), middle, squares.end());
-  return *middle / (6.0 * kChiSquareOneMedian);
+  return noise_variance_from_median(*middle);
+}
+
+double noise_variance_from_sorted_squares(const std::vector<double>& sorted) {
+  if (sorted.empty()) return 0.0;
+  return noise_variance_from_median(sorted[sorted.size() / 2]);
 }
 
 Eigen::Vector3d noise_variance_per_axis(const Eigen::Matrix3Xd& values) {

@@ -15,6 +15,10 @@ namespace opf {
 /// sigma^2 from the squared second differences of one coordinate (reorders them); 0 for none.
 double noise_variance_from_second_differences(std::vector<double>& squares);
 
+/// The same from squares already sorted ascending (their middle element is the median taken
+/// above); 0 for none.
+double noise_variance_from_sorted_squares(const std::vector<double>& sorted);
+
 /// sigma^2 per row of a series of samples at (nearly) equal intervals, one column a sample: three
 /// rows of positions or rotation vectors; zeros under three samples.
 Eigen::Vector3d noise_variance_per_axis(const Eigen::Matrix3Xd& values);

@@ -2,10 +2,13 @@
 
 #include "opf/core/random.h"
 #include "opf/core/so3.h"
+#include "opf/permanence/second_difference_noise.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -115,6 +118,48 @@ TEST(DetectorJitter, ReadsThePositionNoiseOfEachAxisNotTheMotion) {
   for (int k = 0; k < 9; ++k)
     few.add(k / 30.0, Eigen::Vector3d::Zero(), Eigen::Quaterniond::Identity());
   EXPECT_FALSE(few.translation_sigmas());
+}
+
+// The median read every frame is the one a selection over the window's differences gives, to the
+// bit, as the window slides: positions on a 1 mm grid give many equal squares, so removing the
+// oldest must take out one copy of its value, not any other. A measurement with NaN adds no
+// difference (the three it touches are skipped) and leaves the later reads intact.
+TEST(DetectorJitter, TheMedianIsTheWindowsAsTheWindowSlides) {
+  constexpr double kWindow = 0.5;
+  Random random(5);
+  DetectorJitter jitter(kWindow);
+  std::vector<double> times;
+  std::vector<Eigen::Vector3d> positions;
+  for (int k = 0; k < 120; ++k) {
+    const double t = k / 30.0;
+    Eigen::Vector3d p(0.1 * t, 0.02 * std::sin(3.0 * t), 0.8);
+    for (int axis = 0; axis < 3; ++axis)
+      p(axis) = std::round((p(axis) + 0.002 * random.normal()) * 1000.0) / 1000.0;
+    if (k == 60) p.x() = std::numeric_limits<double>::quiet_NaN();
+    jitter.add(t, p, Eigen::Quaterniond::Identity());
+    times.push_back(t);
+    positions.push_back(p);
+    if (k < 20) continue;
+    // The differences still in the window, each as the class forms it: step minus previous step.
+    Eigen::Vector3d expected;
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<double> squares;
+      for (int j = 2; j <= k; ++j) {
+        if (t - times[static_cast<std::size_t>(j)] > kWindow) continue;
+        const Eigen::Vector3d d =
+            (positions[static_cast<std::size_t>(j)] - positions[static_cast<std::size_t>(j - 1)]) -
+            (positions[static_cast<std::size_t>(j - 1)] -
+             positions[static_cast<std::size_t>(j - 2)]);
+        if (d.allFinite()) squares.push_back(d(axis) * d(axis));
+      }
+      expected(axis) = std::sqrt(noise_variance_from_second_differences(squares));
+    }
+    const auto read = jitter.translation_sigmas();
+    ASSERT_TRUE(read) << "frame " << k;
+    ASSERT_TRUE(read->allFinite()) << "frame " << k;
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_EQ((*read)(axis), expected(axis)) << "frame " << k << ", axis " << axis;
+  }
 }
 
 }  // namespace
