@@ -34,10 +34,16 @@ def main():
             print(f"  {label:58s} (not run)")
             return
         verdict = "meets" if value <= target else "MISSES"
-        print(f"  {label:58s} {value:9.1f} {unit}  target <= {target:g} {unit}: {verdict}")
+        digits = 2 if value < 1 else 1
+        print(f"  {label:58s} {value:9.{digits}f} {unit}  target <= {target:g} {unit}: {verdict}")
 
-    show("OPF step, 5000 + 5000 particles", t.get("BM_EstimatorStep/opf/n:5000"), 50)
-    show("PF step, 5000 + 5000 particles", t.get("BM_EstimatorStep/pf/n:5000"), 50)
+    opf_step, pf_step = t.get("BM_EstimatorStep/opf/n:5000"), t.get("BM_EstimatorStep/pf/n:5000")
+    show("OPF step, 5000 + 5000 particles", opf_step, 50)
+    show("PF step, 5000 + 5000 particles", pf_step, 50)
+    if opf_step and pf_step:
+        # The OP update's own cost: a slower CPU or a busy host scales both steps alike.
+        label = "OPF step over the PF step (the OP update's cost)"
+        print(f"  {label:58s} {opf_step / pf_step:9.2f} x")
     base = t.get("BM_EstimatorStep/opf/n:1000")
     if base:
         for n in (3000, 5000, 10000, 30000, 100000):
@@ -46,10 +52,14 @@ def main():
                 ratio = v / (base * n / 1000)
                 print(f"  OPF step at {n:6d}: {v:9.1f} us = {ratio:4.2f} x the linear extrapolation "
                       f"from 1000 (target <= 1.2): {'meets' if ratio <= 1.2 else 'MISSES'}")
-    for threads in (1, 2):
-        v = t.get(f"BM_EnsembleFrame/objects:64/threads:{threads}/real_time")
-        show(f"frame of 64 objects, {threads} thread(s)", v / 1e3 if v else None,
-             2 if threads == 2 else float("inf"), "ms")
+    v = t.get("BM_EnsembleFrame/objects:64/threads:1/real_time")
+    if v:
+        print(f"  {'frame of 64 objects, 1 thread':58s} {v / 1e3:9.1f} ms")
+    v = t.get("BM_EnsembleFrame/objects:64/threads:2/real_time")
+    show("frame of 64 objects, 2 threads", v / 1e3 if v else None, 2, "ms")
+    for rate in (10, 30, 100):
+        v = t.get(f"BM_PredictMotion/rate_hz:{rate}/wandering:1")
+        show(f"model choice at onset, 2 s of history at {rate} Hz", v / 1e3 if v else None, 1, "ms")
     v = t.get("BM_RenderAndDetectFrame")
     show("render + detect a 640x480 frame", v / 1e3 if v else None, 10, "ms")
 
