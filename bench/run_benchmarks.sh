@@ -9,6 +9,9 @@ cd "$(dirname "$0")/.."
 out="${1:-bench/results/$(hostname)-$(date +%Y-%m-%d).json}"
 shift || true
 mkdir -p "$(dirname "$out")"
+# Repetitions interleaved at random across the suite: each benchmark's five spread over its
+# minutes, so a spell of a busy host reaches some repetitions of every benchmark, not all of a few.
 build/bin/opf_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+  --benchmark_enable_random_interleaving=true \
   --benchmark_min_time=0.2 --benchmark_out="$out" --benchmark_out_format=json "$@"
 /usr/bin/python3 bench/summarise.py "$out"

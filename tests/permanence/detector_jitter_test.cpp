@@ -124,7 +124,7 @@ TEST(DetectorJitter, ReadsThePositionNoiseOfEachAxisNotTheMotion) {
 // bit, as the window slides: positions on a 1 mm grid give many equal squares, so removing the
 // oldest must take out one copy of its value, not any other. A measurement with NaN adds no
 // difference (the three it touches are skipped) and leaves the later reads intact.
-TEST(DetectorJitter, TheMedianIsTheWindowsAsTheWindowSlides) {
+TEST(DetectorJitter, TheMedianFollowsTheSlidingWindowExactly) {
   constexpr double kWindow = 0.5;
   Random random(5);
   DetectorJitter jitter(kWindow);
