@@ -3,12 +3,14 @@
 # build-sanitize/) and runs the test suite there: any memory error, leak (LeakSanitizer at each
 # test's exit) or undefined behaviour fails its test. -O1 -g1 halves the compile time of -O2 -g
 # and keeps file:line in the reports; NDEBUG as in the release build, so the same code is
-# checked. Third-party findings are suppressed in scripts/ubsan.supp, each with its reason. The
-# workflow tests that only drive Python and TeX on `opf` output (small result sets, notebooks,
-# report), the install check (an uninstrumented project links the package), the layer probes
-# (compile-only), the Python module (an instrumented module needs an instrumented interpreter)
-# and Table I's accuracy check (20 reproductions; their code runs instrumented in the estimator
-# and driver tests) are left to the regular build.
+# checked. Third-party findings are suppressed in scripts/ubsan.supp, each with its reason. Left to
+# the regular build: the workflow tests that only drive Python and TeX on `opf` output (small
+# result sets, notebooks, report), the install check (an uninstrumented project links the
+# package), the layer probes (compile-only), the Python module (an instrumented module needs an
+# instrumented interpreter), Table I's accuracy check (20 reproductions; their code runs
+# instrumented in the estimator and driver tests) and the benchmark program (speed is not checked
+# here; what it times runs in the tests; `Report\.` excludes its checks). So only the test
+# program and `opf` are built.
 #   bash scripts/run_sanitizers.sh [extra ctest arguments]
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -18,7 +20,7 @@ flags="-fsanitize=address,undefined -fno-omit-frame-pointer"
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags" -DOPF_BUILD_PYTHON=OFF >/dev/null
-cmake --build "$build" -j 2
+cmake --build "$build" -j 2 --target opf_tests opf_cli
 # intercept_tls_get_addr=0: LeakSanitizer misreads some dynamic TLS blocks as glibc 2.19's (by
 # their address alone) and its tracer then crashes scanning a bogus range ("Tracer caught signal
 # 11", google/sanitizers#1322); whether it strikes depends on the process's memory layout. Leaks

@@ -123,7 +123,10 @@ inline std::pair<std::uint32_t, std::uint32_t> window_masks(std::size_t availabl
 }
 
 // Float rows: when a block's particles span fewer than 32, each row's block is the permute of a
-// 32-value window starting at the block's first particle.
+// 32-value window starting at the block's first particle. Rows > 0 fixes the row count at compile
+// time. The sizes are copied into locals: the vector stores may alias anything, and would
+// otherwise make the compiler reload them from the functor after every store.
+template <int Rows>
 struct FloatBlocks {
   const float* in;
   std::size_t n, rows, count;
@@ -131,21 +134,26 @@ struct FloatBlocks {
 
   [[gnu::target("avx512f")]] void operator()(const std::int32_t* p, std::size_t k,
                                              __m512i particles) const {
+    const float* const source = in;
+    float* const target = out;
+    const std::size_t size = n, slots = count;
+    const std::size_t row_count = Rows > 0 ? static_cast<std::size_t>(Rows) : rows;
     const std::int32_t base = p[0];
-    if (p[15] - base >= 32) return scalar_block(p, k, in, n, rows, count, 16, out);
+    if (p[15] - base >= 32) return scalar_block(p, k, source, size, row_count, slots, 16, target);
     const __m512i offsets = _mm512_sub_epi32(particles, _mm512_set1_epi32(base));
-    const auto [low, high] = window_masks(n - static_cast<std::size_t>(base), 16);
-    for (std::size_t r = 0; r < rows; ++r) {
-      const float* window = in + r * n + static_cast<std::size_t>(base);
+    const auto [low, high] = window_masks(size - static_cast<std::size_t>(base), 16);
+    for (std::size_t r = 0; r < row_count; ++r) {
+      const float* window = source + r * size + static_cast<std::size_t>(base);
       const __m512 a = _mm512_maskz_loadu_ps(static_cast<__mmask16>(low), window);
       const __m512 b = high ? _mm512_maskz_loadu_ps(static_cast<__mmask16>(high), window + 16)
                             : _mm512_setzero_ps();
-      _mm512_storeu_ps(out + r * count + k, _mm512_permutex2var_ps(a, offsets, b));
+      _mm512_storeu_ps(target + r * slots + k, _mm512_permutex2var_ps(a, offsets, b));
     }
   }
 };
 
 // Double rows: the same in two halves of eight slots, each from a window of 16 values.
+template <int Rows>
 struct DoubleBlocks {
   const double* in;
   std::size_t n, rows, count;
@@ -153,25 +161,29 @@ struct DoubleBlocks {
 
   [[gnu::target("avx512f")]] void operator()(const std::int32_t* p, std::size_t k,
                                              __m512i particles) const {
+    const double* const source = in;
+    double* const target = out;
+    const std::size_t size = n, slots = count;
+    const std::size_t row_count = Rows > 0 ? static_cast<std::size_t>(Rows) : rows;
     for (std::size_t half = 0; half < 2; ++half) {
       const std::int32_t* q = p + 8 * half;
       const std::size_t slot = k + 8 * half;
       const std::int32_t base = q[0];
       if (q[7] - base >= 16) {
-        scalar_block(q, slot, in, n, rows, count, 8, out);
+        scalar_block(q, slot, source, size, row_count, slots, 8, target);
         continue;
       }
       const __m256i eight =
           half == 0 ? _mm512_castsi512_si256(particles) : _mm512_extracti64x4_epi64(particles, 1);
       const __m512i offsets =
           _mm512_sub_epi64(_mm512_cvtepi32_epi64(eight), _mm512_set1_epi64(base));
-      const auto [low, high] = window_masks(n - static_cast<std::size_t>(base), 8);
-      for (std::size_t r = 0; r < rows; ++r) {
-        const double* window = in + r * n + static_cast<std::size_t>(base);
+      const auto [low, high] = window_masks(size - static_cast<std::size_t>(base), 8);
+      for (std::size_t r = 0; r < row_count; ++r) {
+        const double* window = source + r * size + static_cast<std::size_t>(base);
         const __m512d a = _mm512_maskz_loadu_pd(static_cast<__mmask8>(low), window);
         const __m512d b = high ? _mm512_maskz_loadu_pd(static_cast<__mmask8>(high), window + 8)
                                : _mm512_setzero_pd();
-        _mm512_storeu_pd(out + r * count + slot, _mm512_permutex2var_pd(a, offsets, b));
+        _mm512_storeu_pd(target + r * slots + slot, _mm512_permutex2var_pd(a, offsets, b));
       }
     }
   }
@@ -182,13 +194,19 @@ struct DoubleBlocks {
 void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t count,
                                        const float* in, std::size_t n, std::size_t rows,
                                        float* out) {
-  for_each_block(marks, count, in, n, rows, out, FloatBlocks{in, n, rows, count, out});
+  if (rows == 4)
+    for_each_block(marks, count, in, n, rows, out, FloatBlocks<4>{in, n, rows, count, out});
+  else
+    for_each_block(marks, count, in, n, rows, out, FloatBlocks<0>{in, n, rows, count, out});
 }
 
 void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t count,
                                        const double* in, std::size_t n, std::size_t rows,
                                        double* out) {
-  for_each_block(marks, count, in, n, rows, out, DoubleBlocks{in, n, rows, count, out});
+  if (rows == 3)
+    for_each_block(marks, count, in, n, rows, out, DoubleBlocks<3>{in, n, rows, count, out});
+  else
+    for_each_block(marks, count, in, n, rows, out, DoubleBlocks<0>{in, n, rows, count, out});
 }
 
 #else
