@@ -43,6 +43,10 @@ std::vector<OptionSpec> specs() {
       {"seeds", "N", "runs per estimator, seeds derived from --seed (default 5)"},
       {"out", "FILE.csv|FILE.json",
        "also write the tables: a row per estimator (csv), or with the provenance (json)"},
+      {"hidden-profile", "FILE.csv",
+       "also write the error against time hidden: a row per estimator and 0.1 s bin"},
+      {"alert-distance", "M",
+       "the error the alert should announce, for its precision and recall (default 0.1 m)"},
   };
   for (auto& spec : log_option_specs()) s.push_back(std::move(spec));
   for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
@@ -56,7 +60,10 @@ constexpr const char* kSummary =
     "translation over the frames the object was unobserved. A second table splits the errors\n"
     "into unobserved (hidden) and measured (visible) frames and reports how honest the position\n"
     "covariance was while hidden: the share of hidden frames within 2 sqrt(trace) of it\n"
-    "(coverage) and the median error / sqrt(trace).";
+    "(coverage) and the median error / sqrt(trace). A third table gives the calibration by the\n"
+    "normalised estimation error squared (NEES / 3 and the share inside the 95% ellipsoid, of\n"
+    "position and orientation), reacquisition after gaps and the alert's precision and recall\n"
+    "(definitions: docs/metrics.md).";
 
 /// The ground truth by object, in time order, matched to a frame by the nearest time within the
 /// log's frame tolerance (a log's frames are at the mean time of their rows).
@@ -98,9 +105,9 @@ struct ScoredRun {
 
 ScoredRun run_once(const MeasurementLog& log, const TruthTable& truth, const std::string& name,
                    const EstimatorSettings& settings, std::uint64_t seed, std::size_t threads,
-                   const std::string& truth_path) {
+                   const std::string& truth_path, double alert_distance) {
   Tracker tracker(make_estimator_factory(name, settings), seed, threads);
-  ErrorAccumulator errors;
+  ErrorAccumulator errors(alert_distance);
   ScoredRun run;
   for (const Frame& frame : log.frames) {
     for (const Estimate& estimate : tracker.step(frame)) {
@@ -127,6 +134,16 @@ std::string json_number(double value) {
   return std::isfinite(value) ? csv::format_double(value) : "null";
 }
 
+/// Mean and sample std over the seeds where the value is defined (a seed without an alert has no
+/// alert precision); NaN when none is.
+MeanStd mean_std_defined(const std::vector<double>& values) {
+  std::vector<double> defined;
+  for (double v : values)
+    if (!std::isnan(v)) defined.push_back(v);
+  if (defined.empty()) return {std::nan(""), std::nan("")};
+  return mean_std(defined);
+}
+
 std::string cell(const MeanStd& value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.5f +- %.5f", value.mean, value.std);
@@ -137,7 +154,38 @@ std::string cell(const MeanStd& value) {
 struct Row {
   std::string name;
   std::vector<double> translation, paper, geodesic, hidden_translation, hidden_rotation,
-      visible_translation, visible_rotation, coverage, normalised;
+      visible_translation, visible_rotation, coverage, normalised, nees_translation, nees_rotation,
+      inside95_translation, inside95_rotation, reacquisition_error, reacquisition_frames,
+      alert_precision, alert_recall;
+  /// Error against time hidden over every seed: frames and error sums per 0.1 s bin.
+  std::vector<HiddenErrorBin> profile;
+
+  void add(const RunErrors& r) {
+    translation.push_back(r.translation);
+    paper.push_back(r.rotation_paper);
+    geodesic.push_back(r.rotation_geodesic);
+    hidden_translation.push_back(r.translation_unobserved);
+    hidden_rotation.push_back(r.rotation_unobserved);
+    visible_translation.push_back(r.translation_visible);
+    visible_rotation.push_back(r.rotation_visible);
+    coverage.push_back(r.coverage_unobserved);
+    normalised.push_back(r.normalised_error_unobserved);
+    nees_translation.push_back(r.nees_translation);
+    nees_rotation.push_back(r.nees_rotation);
+    inside95_translation.push_back(r.inside95_translation);
+    inside95_rotation.push_back(r.inside95_rotation);
+    reacquisition_error.push_back(r.reacquisition.first_error);
+    reacquisition_frames.push_back(r.reacquisition.frames_to_settle);
+    alert_precision.push_back(r.alert_precision);
+    alert_recall.push_back(r.alert_recall);
+    if (profile.size() < r.hidden_profile.size()) profile.resize(r.hidden_profile.size());
+    for (std::size_t k = 0; k < r.hidden_profile.size(); ++k) {
+      const HiddenErrorBin& bin = r.hidden_profile[k];
+      profile[k].frames += bin.frames;
+      profile[k].translation += bin.translation * static_cast<double>(bin.frames);
+      profile[k].rotation += bin.rotation * static_cast<double>(bin.frames);
+    }
+  }
 };
 
 /// The columns of --out, each a statistic over seeds of one error of a Row.
@@ -155,7 +203,33 @@ constexpr Column kColumns[] = {
     {"visible_rotation", &Row::visible_rotation},
     {"coverage", &Row::coverage},
     {"error_over_sd", &Row::normalised},
+    {"nees_translation", &Row::nees_translation},
+    {"nees_rotation", &Row::nees_rotation},
+    {"inside95_translation", &Row::inside95_translation},
+    {"inside95_rotation", &Row::inside95_rotation},
+    {"reacquisition_error", &Row::reacquisition_error},
+    {"reacquisition_frames", &Row::reacquisition_frames},
+    {"alert_precision", &Row::alert_precision},
+    {"alert_recall", &Row::alert_recall},
 };
+
+/// The error against time hidden: a row per estimator and non-empty 0.1 s bin, pooled over seeds.
+void write_hidden_profile(const std::filesystem::path& path, const std::vector<Row>& rows) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "estimator,time_hidden_from,time_hidden_to,frames,hidden_translation,hidden_rotation\n";
+    for (const Row& row : rows)
+      for (std::size_t k = 0; k < row.profile.size(); ++k) {
+        const HiddenErrorBin& bin = row.profile[k];
+        if (bin.frames == 0) continue;
+        const auto n = static_cast<double>(bin.frames);
+        out << csv::quote_if_needed(row.name) << ','
+            << csv::format_double(static_cast<double>(k) * HiddenErrorProfile::kBinWidth) << ','
+            << csv::format_double(static_cast<double>(k + 1) * HiddenErrorProfile::kBinWidth) << ','
+            << bin.frames << ',' << csv::format_double(bin.translation / n) << ','
+            << csv::format_double(bin.rotation / n) << '\n';
+      }
+  });
+}
 
 /// The tables as a file: .csv (a row per estimator, mean and std over seeds per error) or .json
 /// (the same with the provenance).
@@ -170,7 +244,7 @@ void write_evaluation(const std::filesystem::path& path, const std::vector<Row>&
       for (const Row& row : rows) {
         out << csv::quote_if_needed(row.name);
         for (const Column& c : kColumns) {
-          const MeanStd m = mean_std(row.*c.values);
+          const MeanStd m = mean_std_defined(row.*c.values);
           out << ',' << csv::format_double(m.mean) << ',' << csv::format_double(m.std);
         }
         out << '\n';
@@ -182,7 +256,7 @@ void write_evaluation(const std::filesystem::path& path, const std::vector<Row>&
       out << "    " << json_string(rows[i].name) << ": {\n";
       out << "      \"seeds\": " << rows[i].translation.size();
       for (const Column& c : kColumns) {
-        const MeanStd m = mean_std(rows[i].*c.values);
+        const MeanStd m = mean_std_defined(rows[i].*c.values);
         out << ",\n      \"" << c.name << "\": {\"mean\": " << json_number(m.mean)
             << ", \"std\": " << json_number(m.std) << "}";
       }
@@ -190,6 +264,28 @@ void write_evaluation(const std::filesystem::path& path, const std::vector<Row>&
     }
     out << "  }\n}\n";
   });
+}
+
+/// The third table: calibration on hidden frames, reacquisition and the alert as a detector.
+void print_calibration(const std::vector<Row>& rows, double alert_distance) {
+  std::printf("\n%-10s %-10s %-10s %-10s %-10s %-12s %-12s %-10s %-10s\n", "estimator", "NEES/3 t",
+              "in95 t", "NEES/3 r", "in95 r", "reacq. [m]", "settle [fr]", "alert P", "alert R");
+  for (const Row& row : rows)
+    std::printf(
+        "%-10s %-10.3g %-10.3f %-10.3g %-10.3f %-12.5f %-12.2f %-10.3f %-10.3f\n", row.name.c_str(),
+        mean_std_defined(row.nees_translation).mean,
+        mean_std_defined(row.inside95_translation).mean, mean_std_defined(row.nees_rotation).mean,
+        mean_std_defined(row.inside95_rotation).mean,
+        mean_std_defined(row.reacquisition_error).mean,
+        mean_std_defined(row.reacquisition_frames).mean, mean_std_defined(row.alert_precision).mean,
+        mean_std_defined(row.alert_recall).mean);
+  std::printf(
+      "\nNEES/3: mean normalised estimation error squared over hidden frames, by dimension "
+      "(1 calibrated,\n< 1 cautious, > 1 over-confident); in95: share of hidden frames inside the "
+      "95%% ellipsoid;\nreacq.: error at the first measured frame after a gap; settle: frames "
+      "until within 2x the visible\nerror; alert P/R: precision and recall of the alert against "
+      "an error above %g m\n",
+      alert_distance);
 }
 
 }  // namespace
@@ -238,6 +334,14 @@ int evaluate_command(const std::vector<std::string>& raw) {
   require_camera_for_line_of_sight(settings);
   const std::uint64_t base_seed = seed_from(args);
   const std::size_t threads = threads_from(args);
+  const double alert_distance =
+      args.get_number("alert-distance").value_or(ErrorAccumulator::kDefaultAlertDistance);
+  if (!(alert_distance > 0.0) || !std::isfinite(alert_distance))
+    throw UsageError{"option '--alert-distance' must be a positive distance in metres"};
+  if (const auto path = args.get("hidden-profile");
+      path && std::filesystem::path(*path).extension() != ".csv")
+    throw UsageError{"option '--hidden-profile': expected a file name ending in .csv, got \"" +
+                     *path + "\""};
 
   const LogReadOptions log_options = log_options_from(args);
   const MeasurementLog log = read_measurement_log(in, log_options);
@@ -257,27 +361,16 @@ int evaluate_command(const std::vector<std::string>& raw) {
   for (const std::string& name : names) {
     Row row;
     row.name = name;
-    auto& translation = row.translation;
-    auto& paper = row.paper;
-    auto& geodesic = row.geodesic;
     for (std::size_t k = 0; k < seeds; ++k) {
-      const ScoredRun run =
-          run_once(log, truth, name, settings, derive_seed(base_seed, k), threads, truth_path);
+      const ScoredRun run = run_once(log, truth, name, settings, derive_seed(base_seed, k), threads,
+                                     truth_path, alert_distance);
       unscored = std::max(unscored, run.unscored);
-      const RunErrors& r = run.errors;
-      translation.push_back(r.translation);
-      paper.push_back(r.rotation_paper);
-      geodesic.push_back(r.rotation_geodesic);
-      row.hidden_translation.push_back(r.translation_unobserved);
-      row.hidden_rotation.push_back(r.rotation_unobserved);
-      row.visible_translation.push_back(r.translation_visible);
-      row.visible_rotation.push_back(r.rotation_visible);
-      row.coverage.push_back(r.coverage_unobserved);
-      row.normalised.push_back(r.normalised_error_unobserved);
+      row.add(run.errors);
     }
     std::printf("%-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
-                cell(mean_std(translation)).c_str(), cell(mean_std(paper)).c_str(),
-                cell(mean_std(geodesic)).c_str(), cell(mean_std(row.hidden_translation)).c_str());
+                cell(mean_std(row.translation)).c_str(), cell(mean_std(row.paper)).c_str(),
+                cell(mean_std(row.geodesic)).c_str(),
+                cell(mean_std(row.hidden_translation)).c_str());
     std::fflush(stdout);
     rows.push_back(std::move(row));
   }
@@ -295,6 +388,8 @@ int evaluate_command(const std::vector<std::string>& raw) {
       "\ncoverage: share of unobserved frames whose translation error is within 2 sqrt(trace) of "
       "the estimate's\nposition covariance; err/sd: median of error / sqrt(trace) over them (means "
       "over seeds)\n");
+  print_calibration(rows, alert_distance);
+  if (const auto path = args.get("hidden-profile")) write_hidden_profile(*path, rows);
   if (const auto path = args.get("out"))
     write_evaluation(*path, rows,
                      provenance_json(command_line("evaluate", raw), {{"", settings}}, 2));

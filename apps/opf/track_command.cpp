@@ -33,6 +33,9 @@ std::vector<OptionSpec> specs() {
        "read --in as a stream (as for -): rows in time order, each frame written and flushed as "
        "soon as the next frame's first row arrives"},
       {"quiet", "", "no summary or warnings on stderr (errors still)"},
+      {"covariance", "",
+       "also write the full pose covariance: its upper triangle as 21 columns cov_x_x ... "
+       "cov_roll_roll"},
   };
   for (auto& spec : log_option_specs()) s.push_back(std::move(spec));
   for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
@@ -55,21 +58,22 @@ constexpr const char* kSummary =
 /// Steps the tracker through frames and writes their estimates, counting what it wrote.
 class EstimateWriter {
  public:
-  EstimateWriter(Tracker& tracker, std::function<void(std::size_t objects)> on_objects)
-      : tracker_(tracker), on_objects_(std::move(on_objects)) {}
+  EstimateWriter(Tracker& tracker, EstimateColumns columns,
+                 std::function<void(std::size_t objects)> on_objects)
+      : tracker_(tracker), columns_(columns), on_objects_(std::move(on_objects)) {}
 
   void write(std::ostream& out, const Frame& frame) {
     for (const Detection& detection : frame.detections)
       if (objects_.insert(detection.object).second) on_objects_(objects_.size());
     for (Estimate estimate : tracker_.step(frame)) {
       estimate.recovery.frame_filled = frame.filled;
-      write_estimate_row(out, estimate);
+      write_estimate_row(out, estimate, columns_);
       ++rows_;
     }
     // Further hypotheses (the OPF's virtual objects) follow as extra rows, hypothesis >= 1.
     for (Estimate hypothesis : tracker_.hypotheses()) {
       hypothesis.recovery.frame_filled = frame.filled;
-      write_estimate_row(out, hypothesis);
+      write_estimate_row(out, hypothesis, columns_);
       ++rows_;
     }
     ++frames_;
@@ -80,6 +84,7 @@ class EstimateWriter {
 
  private:
   Tracker& tracker_;
+  EstimateColumns columns_;
   std::function<void(std::size_t)> on_objects_;
   std::set<std::string> objects_;
   std::size_t rows_ = 0;
@@ -114,7 +119,8 @@ int track_command(const std::vector<std::string>& raw) {
   const bool warn_camera = !quiet && estimator == "opf" && settings.opf.modules.occluder &&
                            occluder.plane == OccluderPlane::kAuto && !occluder.camera_position;
   Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args), threads_from(args));
-  EstimateWriter writer(tracker, [&](std::size_t objects) {
+  const EstimateColumns columns{.covariance = args.has("covariance")};
+  EstimateWriter writer(tracker, columns, [&](std::size_t objects) {
     if (warn_camera && objects == 2)
       std::cerr << "opf track: warning: no camera position (--camera X,Y,Z, or "
                    "opf.occluder.camera_position): the occluder module takes the line of sight "
@@ -133,7 +139,7 @@ int track_command(const std::vector<std::string>& raw) {
       if (!*out_file) throw std::runtime_error("cannot write " + out);
     }
     std::ostream& output = out_file ? static_cast<std::ostream&>(*out_file) : std::cout;
-    write_estimate_header(output);
+    write_estimate_header(output, columns);
     output.flush();
     while (const std::optional<Frame> frame = frames.next()) {
       writer.write(output, *frame);
@@ -144,7 +150,7 @@ int track_command(const std::vector<std::string>& raw) {
     const MeasurementLog log = read_measurement_log(in, log_options);
     assembly = log.report;
     const auto write_all = [&](std::ostream& os) {
-      write_estimate_header(os);
+      write_estimate_header(os, columns);
       for (const Frame& frame : log.frames) writer.write(os, frame);
     };
     if (out == "-") {

@@ -1,12 +1,18 @@
 #pragma once
 // Accumulates an estimator's per-frame errors against ground truth over one run and returns the
-// paper's "error distance" (mean over frames), overall and over the frames without a measurement.
+// paper's "error distance" (mean over frames), overall and over the frames without a measurement,
+// with the calibration of the reported covariance, the error against time hidden, reacquisition
+// after gaps and the alert's precision and recall (definitions: docs/metrics.md).
 
 #include "opf/core/estimate.h"
+#include "opf/core/hidden_error_profile.h"
+#include "opf/core/reacquisition.h"
 
 #include <mrpt/poses/CPose3D.h>
 
 #include <cstddef>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace opf {
@@ -29,12 +35,32 @@ struct RunErrors {
   /// useless caution.
   double coverage_unobserved = 0.0;
   double normalised_error_unobserved = 0.0;
+  /// Calibration over the frames without a measurement (core/calibration.h): the mean NEES over
+  /// its dimension, 3 (1 calibrated, below 1 cautious, above 1 over-confident; infinite where a
+  /// covariance was singular), and the share of frames inside the 95% ellipsoid. NaN if none.
+  double nees_translation = 0.0;
+  double nees_rotation = 0.0;
+  double inside95_translation = 0.0;
+  double inside95_rotation = 0.0;
+  ReacquisitionResult reacquisition;
+  /// The alert as a detector of "translation error above the alert distance", over all frames:
+  /// precision (NaN without an alert) and recall (NaN without such a frame).
+  double alert_precision = 0.0;
+  double alert_recall = 0.0;
+  std::vector<HiddenErrorBin> hidden_profile;  ///< means per 0.1 s of time hidden
   std::size_t frames = 0;
   std::size_t unobserved_frames = 0;
 };
 
 class ErrorAccumulator {
  public:
+  /// The error an alert should announce, m (docs/metrics.md).
+  static constexpr double kDefaultAlertDistance = 0.1;
+
+  /// Throws std::invalid_argument unless `alert_distance` is positive and finite.
+  explicit ErrorAccumulator(double alert_distance = kDefaultAlertDistance);
+
+  /// One estimate of one object, in time order per object.
   void add(const Estimate& estimate, const mrpt::poses::CPose3D& truth);
   /// Throws std::logic_error when nothing was added.
   RunErrors result() const;
@@ -49,6 +75,15 @@ class ErrorAccumulator {
   double rotation_visible_ = 0.0;
   std::size_t covered_ = 0;
   std::vector<double> normalised_;  ///< error / sqrt(trace) of each unobserved frame
+  double nees_translation_ = 0.0;
+  double nees_rotation_ = 0.0;
+  std::size_t inside95_translation_ = 0;
+  std::size_t inside95_rotation_ = 0;
+  double alert_distance_;
+  std::size_t alerts_ = 0, large_errors_ = 0, alerts_on_large_errors_ = 0;
+  std::map<std::string, double> last_measured_;  ///< per object, s
+  HiddenErrorProfile profile_;
+  Reacquisition reacquisition_;
   std::size_t frames_ = 0;
   std::size_t unobserved_frames_ = 0;
 };

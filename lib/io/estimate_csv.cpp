@@ -25,14 +25,21 @@ constexpr std::array<std::string_view, 11> kReadColumns = {
 // Written quaternions are unit to rounding; the log reader's tolerance still catches edited files.
 constexpr double kQuaternionNormTolerance = 0.01;
 
+constexpr std::array<std::string_view, 6> kPoseAxes = {"x", "y", "z", "yaw", "pitch", "roll"};
+
 }  // namespace
 
-void write_estimate_header(std::ostream& out) {
+void write_estimate_header(std::ostream& out, EstimateColumns columns) {
   out << "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
-         "hypothesis,alert,occlusion_probability,model\n";
+         "hypothesis,alert,occlusion_probability,model";
+  if (columns.covariance)
+    for (std::size_t i = 0; i < kPoseAxes.size(); ++i)
+      for (std::size_t j = i; j < kPoseAxes.size(); ++j)
+        out << ",cov_" << kPoseAxes[i] << '_' << kPoseAxes[j];
+  out << '\n';
 }
 
-void write_estimate_row(std::ostream& out, const Estimate& estimate) {
+void write_estimate_row(std::ostream& out, const Estimate& estimate, EstimateColumns columns) {
   const mrpt::poses::CPose3D& mean = estimate.pose.mean;
   Eigen::Quaterniond q = orientation_of(mean);
   // q and -q are the same rotation; one sign makes files comparable. Adding 0.0 turns -0 into 0.
@@ -51,6 +58,9 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate) {
   // Empty for estimators that do not model occlusion.
   if (estimate.occlusion_probability) row += csv::format_double(*estimate.occlusion_probability);
   row += ',' + csv::quote_if_needed(estimate.motion_model);
+  if (columns.covariance)
+    for (int i = 0; i < 6; ++i)
+      for (int j = i; j < 6; ++j) row += ',' + csv::format_double(estimate.pose.cov(i, j));
   out << row << '\n';
 }
 

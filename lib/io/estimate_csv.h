@@ -14,8 +14,16 @@
 
 namespace opf {
 
-void write_estimate_header(std::ostream& out);
-void write_estimate_row(std::ostream& out, const Estimate& estimate);
+/// Opt-in columns of the estimate file.
+struct EstimateColumns {
+  /// The full 6x6 pose covariance over (x, y, z, yaw, pitch, roll), its upper triangle row by row
+  /// as 21 columns cov_x_x, cov_x_y, ..., cov_roll_roll (m^2, m rad, rad^2), so calibration can
+  /// be checked with other tools.
+  bool covariance = false;
+};
+
+void write_estimate_header(std::ostream& out, EstimateColumns columns = {});
+void write_estimate_row(std::ostream& out, const Estimate& estimate, EstimateColumns columns = {});
 
 /// One row of an estimate file. The standard deviations are not read back.
 struct EstimateRecord {

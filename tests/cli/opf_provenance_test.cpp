@@ -67,7 +67,11 @@ TEST_F(OpfProgram, EvaluateWritesItsTablesAsCsvOrJson) {
             "rotation_geodesic,rotation_geodesic_std,hidden_translation,hidden_translation_std,"
             "hidden_rotation,hidden_rotation_std,visible_translation,visible_translation_std,"
             "visible_rotation,visible_rotation_std,coverage,coverage_std,error_over_sd,"
-            "error_over_sd_std");
+            "error_over_sd_std,nees_translation,nees_translation_std,nees_rotation,"
+            "nees_rotation_std,inside95_translation,inside95_translation_std,inside95_rotation,"
+            "inside95_rotation_std,reacquisition_error,reacquisition_error_std,"
+            "reacquisition_frames,reacquisition_frames_std,alert_precision,alert_precision_std,"
+            "alert_recall,alert_recall_std");
   EXPECT_TRUE(contains(csv, "\ncvkf,")) << csv;
   EXPECT_TRUE(contains(csv, "\npf,")) << csv;
   ASSERT_EQ(run(common + (dir_ / "table.json").string()), 0) << err();

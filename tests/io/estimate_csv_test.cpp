@@ -88,6 +88,33 @@ TEST(EstimateCsvFormat, RowUsesShortestNumbersModeAndStandardDeviations) {
   EXPECT_EQ(split_row(third.str())[0], "0.3333333333333333");
 }
 
+TEST(EstimateCsvFormat, CovarianceColumnsAreTheUpperTriangleOnRequest) {
+  std::ostringstream header;
+  write_estimate_header(header, {.covariance = true});
+  const auto names = split_row(header.str());
+  ASSERT_EQ(names.size(), split_row(kHeader).size() + 21);
+  EXPECT_EQ(names[split_row(kHeader).size()], "cov_x_x");
+  EXPECT_EQ(names[split_row(kHeader).size() + 1], "cov_x_y");
+  EXPECT_EQ(names[split_row(kHeader).size() + 6], "cov_y_y");
+  EXPECT_EQ(names.back(), "cov_roll_roll");
+
+  Estimate estimate = make_estimate(0.0, "cup", mrpt::poses::CPose3D(0, 0, 0, 0, 0, 0));
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) estimate.pose.cov(i, j) = (i == j ? 1.0 : 0.0) + 0.01 * (i + j);
+  std::ostringstream row;
+  write_estimate_row(row, estimate, {.covariance = true});
+  const auto cells = split_row(row.str());
+  ASSERT_EQ(cells.size(), names.size());
+  std::size_t k = split_row(kHeader).size();
+  for (int i = 0; i < 6; ++i)
+    for (int j = i; j < 6; ++j, ++k)
+      EXPECT_EQ(cells[k], csv::format_double(estimate.pose.cov(i, j)));
+  // Without the request the row is the default one.
+  std::ostringstream plain;
+  write_estimate_row(plain, estimate);
+  EXPECT_EQ(split_row(plain.str()).size(), split_row(kHeader).size());
+}
+
 TEST(EstimateCsvFormat, QuaternionHasNonNegativeW) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> angle(-3.14, 3.14);
