@@ -116,4 +116,4 @@ def test_errors_carry_the_programs_messages(tmp_path):
 
 
 def test_the_estimator_names_are_the_registrys():
-    assert opf.estimators() == ["opf", "pf", "cvkf", "oapf"]
+    assert opf.estimators() == ["opf", "pf", "cvkf", "imm", "oapf"]
