@@ -1,13 +1,14 @@
 // One full filter step per estimator (predict, measurement or OP update, normalise, resample,
 // estimate) over particle counts 100 ... 100 000 per portion, reported as particles per second
 // (both portions: 2N per step) so the cost curve over N is visible; the OPF's step while the
-// object is hidden (moved and spread by the dynamics module's prediction); and the CV
-// Kalman filter, which has no particles.
+// object is hidden (moved and spread by the dynamics module's prediction); and the CV and IMM
+// Kalman filters, which have no particles.
 
 #include "opf/core/pose_conversion.h"
 #include "opf/core/random.h"
 #include "opf/core/so3.h"
 #include "opf/estimators/cv_kalman.h"
+#include "opf/estimators/imm_kalman.h"
 #include "opf/estimators/object_permanence_filter.h"
 #include "opf/estimators/registry.h"
 
@@ -107,6 +108,20 @@ void BM_CvKalmanStep(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_CvKalmanStep)->Unit(benchmark::kMicrosecond);
+
+// Three models per axis: mixing, three model-matched filters and the combination, per axis.
+void BM_ImmStep(benchmark::State& state) {
+  ImmKalman imm(ImmOptions{});
+  const auto stream = measurements(256);
+  imm.initialise(0.0, stream[0]);
+  std::size_t k = 1;
+  double t = 0.0;
+  for (auto _ : state) {
+    t += kDt;
+    benchmark::DoNotOptimize(imm.step(t, &stream[k++ % stream.size()], empty_ensemble()));
+  }
+}
+BENCHMARK(BM_ImmStep)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace opf

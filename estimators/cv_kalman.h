@@ -3,10 +3,9 @@
 // error-state KF on orientation + body-frame angular velocity; it predicts through gaps.
 
 #include "opf/core/estimator.h"
+#include "opf/core/linear_kalman.h"
 #include "opf/estimators/cv_kalman_options.h"
-
-#include <Eigen/Core>
-#include <Eigen/Geometry>
+#include "opf/estimators/orientation_kalman.h"
 
 namespace opf {
 
@@ -27,8 +26,6 @@ class ConstantVelocityKalman final : public Estimator {
                 const EnsembleView& ensemble) override;
 
  private:
-  using Matrix6 = Eigen::Matrix<double, 6, 6>;
-
   void predict(double dt);
   void update(const mrpt::poses::CPose3D& measurement);
   Estimate make_estimate(EstimateMode mode) const;
@@ -37,13 +34,9 @@ class ConstantVelocityKalman final : public Estimator {
   bool initialised_ = false;
   double t_ = 0.0;
 
-  Eigen::Vector3d position_ = Eigen::Vector3d::Zero();
-  Eigen::Vector3d velocity_ = Eigen::Vector3d::Zero();
-  Matrix6 translation_covariance_ = Matrix6::Identity();  ///< over (position, velocity)
-
-  Eigen::Quaterniond orientation_ = Eigen::Quaterniond::Identity();
-  Eigen::Vector3d angular_velocity_ = Eigen::Vector3d::Zero();  ///< body frame
-  Matrix6 rotation_covariance_ = Matrix6::Identity();  ///< over the error state (dtheta, dw)
+  kalman::Vector<6> translation_ = kalman::Vector<6>::Zero();  ///< (position, velocity)
+  kalman::Matrix<6> translation_covariance_ = kalman::Matrix<6>::Identity();
+  OrientationKalman rotation_;
 };
 
 }  // namespace opf

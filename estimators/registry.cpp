@@ -1,6 +1,7 @@
 #include "opf/estimators/registry.h"
 
 #include "opf/estimators/cv_kalman.h"
+#include "opf/estimators/imm_kalman.h"
 #include "opf/estimators/object_permanence_filter.h"
 #include "opf/estimators/random_walk_oapf.h"
 #include "opf/estimators/standard_pf.h"
@@ -10,7 +11,7 @@
 namespace opf {
 
 std::vector<std::string> estimator_names() {
-  return {"opf", "pf", "cvkf", "oapf"};
+  return {"opf", "pf", "cvkf", "imm", "oapf"};
 }
 
 EstimatorFactory make_estimator_factory(const std::string& name,
@@ -35,6 +36,12 @@ EstimatorFactory make_estimator_factory(const std::string& name,
     const ConstantVelocityKalman probe(settings.cvkf);  // its constructor validates
     return [options = settings.cvkf](const std::string&, std::uint64_t) {
       return std::make_unique<ConstantVelocityKalman>(options);
+    };
+  }
+  if (name == "imm") {
+    const ImmKalman probe(settings.imm);  // its constructor validates
+    return [options = settings.imm](const std::string&, std::uint64_t) {
+      return std::make_unique<ImmKalman>(options);
     };
   }
   if (name == "oapf") {

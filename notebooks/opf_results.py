@@ -43,16 +43,18 @@ OBJECT_OF_INTEREST = {"general_op": "ball", "sugar_drop": "mug", "baseball": "ba
 
 # How each estimator is drawn, the same as the PNG charts of `opf run`/`reproduce`
 # (style_of in experiments/drivers/figures.cpp): the paper's colours (OPF red, PF blue; the other
-# baselines green and orange) and a line style of its own, so that curves on the same values and
+# baselines green, purple and orange) and a line style of its own, so that curves on the same values and
 # grey print still tell them apart. Wider lines are drawn first, narrower ones on top of them.
 # This is the one definition for the notebooks (and paper/make_report.py, which draws with
 # plot_sweep and figure_three).
-ESTIMATOR_COLOURS = {"opf": "#dc1e1e", "pf": "#1e3cdc", "cvkf": "#1ea03c", "oapf": "#f08c00"}
+ESTIMATOR_COLOURS = {"opf": "#dc1e1e", "pf": "#1e3cdc", "cvkf": "#1ea03c", "imm": "#8c3cc8",
+                     "oapf": "#f08c00"}
 OTHER_COLOUR = "#5a5a5a"
 ESTIMATOR_STYLES = {
     "opf": dict(linestyle="-", linewidth=1.5, marker="D"),
     "pf": dict(linestyle="--", linewidth=2.6, marker="s"),
     "cvkf": dict(linestyle="-.", linewidth=1.5, marker="^"),
+    "imm": dict(linestyle="--", linewidth=1.5, marker="v"),
     "oapf": dict(linestyle=":", linewidth=2.25, marker="X"),
 }
 UNSEEN_COLOUR = "0.88"  # the shading of the frames in which the object had no measurement

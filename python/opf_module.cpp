@@ -206,7 +206,7 @@ PYBIND11_MODULE(_opf, m) {
                     const py::object&>(),
            py::arg("estimator") = "opf", py::arg("seed") = 1, py::arg("particles") = 5000,
            py::arg("config") = py::none(),
-           "estimator: opf, pf, cvkf or oapf; particles: per portion (None: the config's); "
+           "estimator: opf, pf, cvkf, imm or oapf; particles: per portion (None: the config's); "
            "config: None (the defaults), a settings file's path, or a dict in its shape")
       .def("step", &PyTracker::step, py::arg("t"), py::arg("detections"),
            "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}. "

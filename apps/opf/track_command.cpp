@@ -28,7 +28,7 @@ std::vector<OptionSpec> specs() {
        "standard input as a stream"},
       {"out", "EST.csv",
        "estimates: t,object,x,y,z,qx,qy,qz,qw,trace,mode,... (required); - writes standard output"},
-      {"estimator", "NAME", "estimator to run: opf (default), pf, cvkf or oapf"},
+      {"estimator", "NAME", "estimator to run: opf (default), pf, cvkf, imm or oapf"},
       {"stream", "",
        "read --in as a stream (as for -): rows in time order, each frame written and flushed as "
        "soon as the next frame's first row arrives"},

@@ -19,9 +19,9 @@ namespace opf::experiments {
 namespace {
 
 /// How an estimator is drawn in every figure: the paper's colours (OPF red, PF blue; the other
-/// baselines green and orange), and a line style and marker of its own so that curves on the same
-/// values, grey print and colour-blind readers still tell them apart. The notebooks and the report
-/// use the same colours (notebooks/opf_results.py, paper/make_report.py).
+/// baselines green, purple and orange), and a line style and marker of its own so that curves on
+/// the same values, grey print and colour-blind readers still tell them apart. The notebooks and
+/// the report use the same colours (notebooks/opf_results.py, paper/make_report.py).
 struct EstimatorStyle {
   std::array<std::uint8_t, 3> rgb;
   LineStyle line;
@@ -34,6 +34,7 @@ EstimatorStyle style_of(const std::string& estimator) {
       {"opf", {{220, 30, 30}, LineStyle::kSolid, 2, cv::MARKER_DIAMOND}},
       {"pf", {{30, 60, 220}, LineStyle::kDashed, 4, cv::MARKER_SQUARE}},
       {"cvkf", {{30, 160, 60}, LineStyle::kDashDot, 2, cv::MARKER_TRIANGLE_UP}},
+      {"imm", {{140, 60, 200}, LineStyle::kDashed, 2, cv::MARKER_TRIANGLE_DOWN}},
       {"oapf", {{240, 140, 0}, LineStyle::kDotted, 3, cv::MARKER_TILTED_CROSS}}};
   const auto it = styles.find(estimator);
   return it == styles.end() ? EstimatorStyle{{90, 90, 90}, LineStyle::kSolid, 1, cv::MARKER_CROSS}

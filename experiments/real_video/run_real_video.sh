@@ -12,7 +12,7 @@
 # placements (phases.csv, and a table in table.md).
 #
 # Usage: experiments/real_video/run_real_video.sh OUT_DIR
-#   OPF=path/to/opf (default <repo>/build/bin/opf), SEEDS=5, ESTIMATORS=opf,pf,cvkf,oapf,
+#   OPF=path/to/opf (default <repo>/build/bin/opf), SEEDS=5, ESTIMATORS=opf,pf,cvkf,imm,oapf,
 #   PHASES=10 (0: no phase sweep), CLIPS="box vtest cup" (a subset runs only those),
 #   DROPOUTS="0.3 0.6" (the dropout lengths in s, each under the 2 s period: "1.0 1.5" leaves
 #   glimpses of 1 s and 0.5 s between long gaps),
@@ -35,7 +35,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 repo="$(cd "$here/../.." && pwd)"
 opf="${OPF:-$repo/build/bin/opf}"
 seeds="${SEEDS:-5}"
-estimators="${ESTIMATORS:-opf,pf,cvkf,oapf}"
+estimators="${ESTIMATORS:-opf,pf,cvkf,imm,oapf}"
 phases="${PHASES:-10}"
 every="${EVERY:-1}"
 [[ "$every" =~ ^[1-9][0-9]*$ ]] || { echo "$0: EVERY must be a positive integer, not '$every'" >&2; exit 2; }

@@ -27,7 +27,7 @@ commands="$("$opf" --help | awk '/^Commands:/ {on = 1; next} on && NF == 0 {on =
 [ "$(wc -w <<<"$commands")" -ge 9 ] || { echo "no command list in opf --help" >&2; exit 1; }
 expect "commands" "$(complete_line opf '')" "$(echo $commands) --help --version"
 expect "a prefix" "$(complete_line opf tr)" "track"
-expect "estimator names" "$(complete_line opf track --estimator '')" "opf pf cvkf oapf"
+expect "estimator names" "$(complete_line opf track --estimator '')" "opf pf cvkf imm oapf"
 expect "presets" "$(complete_line opf reproduce --preset p)" "paper"
 expect "a free value" "$(complete_line opf track --seed '')" ""
 checked=0

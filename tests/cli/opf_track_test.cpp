@@ -108,7 +108,9 @@ TEST_F(OpfProgram, TrackReportsRescuedFramesInTheModeColumn) {
     EXPECT_EQ(modes(std::string("--estimator ") + estimator),
               expected("measured+reset", "measured+reset"))
         << estimator;
-  EXPECT_EQ(modes("--estimator cvkf"), expected("measured", "measured"));
+  for (const char* estimator : {"cvkf", "imm"})
+    EXPECT_EQ(modes(std::string("--estimator ") + estimator), expected("measured", "measured"))
+        << estimator;
   const std::string no_gate = " --config " + (dir_ / "no_gate.yaml").string();
   for (const char* estimator : {"opf", "pf"})
     EXPECT_EQ(modes(std::string("--estimator ") + estimator + no_gate),
@@ -117,14 +119,15 @@ TEST_F(OpfProgram, TrackReportsRescuedFramesInTheModeColumn) {
 }
 
 TEST_F(OpfProgram, SameSeedGivesByteIdenticalOutputDifferentSeedDoesNot) {
-  for (const char* estimator : {"opf", "pf", "cvkf", "oapf"}) {
+  for (const char* estimator : {"opf", "pf", "cvkf", "imm", "oapf"}) {
     const std::string common =
         "track --in " + kData + "example_log.csv --particles 500 --estimator " + estimator;
     ASSERT_EQ(run(common + " --seed 8 --out " + (dir_ / "a.csv").string()), 0) << err();
     ASSERT_EQ(run(common + " --seed 8 --out " + (dir_ / "b.csv").string()), 0) << err();
     ASSERT_EQ(run(common + " --seed 9 --out " + (dir_ / "c.csv").string()), 0) << err();
     EXPECT_EQ(read(dir_ / "a.csv"), read(dir_ / "b.csv")) << estimator;
-    if (std::string(estimator) != "cvkf") {  // the Kalman filter draws no random numbers
+    // The Kalman filters draw no random numbers.
+    if (std::string(estimator) != "cvkf" && std::string(estimator) != "imm") {
       EXPECT_NE(read(dir_ / "a.csv"), read(dir_ / "c.csv"));
     }
   }

@@ -68,7 +68,8 @@ TEST(TrackerThreads, OpfEnsembleIsBitIdenticalForAnyThreadCount) {
 }
 
 TEST(TrackerThreads, OtherEstimatorsToo) {
-  for (const char* name : {"pf", "oapf", "cvkf"}) expect_identical(run(name, 1), run(name, 3));
+  for (const char* name : {"pf", "oapf", "cvkf", "imm"})
+    expect_identical(run(name, 1), run(name, 3));
 }
 
 }  // namespace

@@ -181,7 +181,7 @@ TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
   EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf, kalman]\n"),
             file +
                 ":2: key 'estimators': unknown estimator 'kalman'; expected one of opf, pf, "
-                "cvkf, oapf");
+                "cvkf, imm, oapf");
   EXPECT_EQ(error_of("experiments: [no_such_experiment]\nestimators: [opf]\n"),
             file + ":1: key 'experiments': no experiment file " +
                 (opf::experiments::bundled_experiments() / "no_such_experiment.yaml").string() +

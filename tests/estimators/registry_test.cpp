@@ -7,7 +7,7 @@ namespace {
 
 TEST(Registry, BuildsEveryRegisteredEstimatorUnderItsName) {
   const EstimatorSettings settings;
-  ASSERT_EQ(estimator_names(), (std::vector<std::string>{"opf", "pf", "cvkf", "oapf"}));
+  ASSERT_EQ(estimator_names(), (std::vector<std::string>{"opf", "pf", "cvkf", "imm", "oapf"}));
   for (const auto& name : estimator_names()) {
     const auto estimator = make_estimator_factory(name, settings)("ball", 1);
     ASSERT_NE(estimator, nullptr);
@@ -20,7 +20,7 @@ TEST(Registry, UnknownNameListsTheKnownOnes) {
     make_estimator_factory("opff", EstimatorSettings{});
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown estimator 'opff' (known: opf, pf, cvkf, oapf)");
+    EXPECT_STREQ(e.what(), "unknown estimator 'opff' (known: opf, pf, cvkf, imm, oapf)");
   }
 }
 
@@ -31,6 +31,9 @@ TEST(Registry, ValidatesOptionsWhenTheFactoryIsMade) {
   settings = {};
   settings.cvkf.acceleration_noise = -1.0;
   EXPECT_THROW(make_estimator_factory("cvkf", settings), std::invalid_argument);
+  settings = {};
+  settings.imm.mean_sojourn = 0.0;
+  EXPECT_THROW(make_estimator_factory("imm", settings), std::invalid_argument);
   settings = {};
   settings.oapf.miss_probability = 0.0;
   EXPECT_THROW(make_estimator_factory("oapf", settings), std::invalid_argument);

@@ -33,6 +33,7 @@ TEST(EstimatorSettingsDump, ReadsBackToTheSameSettings) {
   s.opf.dynamics.selection.fit_windows = {0.25, 0.75};
   s.opf.dynamics.predictor = DynamicsPredictor::kPaper;
   s.oapf.spread_growth = 3.5;
+  s.imm.mean_sojourn = 0.75;
   const std::string dumped = dump_estimator_settings(s);
   const EstimatorSettings back = parse_estimator_settings(dumped, "dump.yaml");
   // Byte-identical dumps: every value the dump holds came back.
@@ -45,6 +46,7 @@ TEST(EstimatorSettingsDump, ReadsBackToTheSameSettings) {
   EXPECT_EQ(back.opf.dynamics.selection.fit_windows, (std::vector<double>{0.25, 0.75}));
   EXPECT_EQ(back.opf.dynamics.predictor, DynamicsPredictor::kPaper);
   EXPECT_EQ(back.oapf.spread_growth, 3.5);
+  EXPECT_EQ(back.imm.mean_sojourn, 0.75);
   // Different settings dump differently.
   EXPECT_NE(dump_estimator_settings(EstimatorSettings{}), dumped);
 }

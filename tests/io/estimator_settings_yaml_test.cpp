@@ -47,6 +47,10 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.cvkf.observation_noise_rotation, d.cvkf.observation_noise_rotation);
   EXPECT_EQ(s.cvkf.initial_velocity_std, d.cvkf.initial_velocity_std);
   EXPECT_EQ(s.cvkf.initial_angular_velocity_std, d.cvkf.initial_angular_velocity_std);
+  EXPECT_EQ(s.imm.position_noise, d.imm.position_noise);
+  EXPECT_EQ(s.imm.acceleration_noise, d.imm.acceleration_noise);
+  EXPECT_EQ(s.imm.jerk_noise, d.imm.jerk_noise);
+  EXPECT_EQ(s.imm.mean_sojourn, d.imm.mean_sojourn);
   EXPECT_EQ(s.opf.modules.dynamics, d.opf.modules.dynamics);
   EXPECT_EQ(s.opf.modules.occluder, d.opf.modules.occluder);
   EXPECT_EQ(s.opf.modules.uncertainty, d.opf.modules.uncertainty);
@@ -124,6 +128,28 @@ TEST(EstimatorSettingsYaml, EveryKeyOverrides) {
   EXPECT_EQ(s.cvkf.observation_noise_rotation, 0.03);
   EXPECT_EQ(s.cvkf.initial_velocity_std, 0.25);
   EXPECT_EQ(s.cvkf.initial_angular_velocity_std, 0.75);
+}
+
+TEST(EstimatorSettingsYaml, EveryImmKeyOverrides) {
+  const EstimatorSettings s = parse_estimator_settings(
+      "imm:\n"
+      "  process_noise: {position: 0.1, acceleration: 0.2, jerk: 0.3, angular_acceleration: 0.4}\n"
+      "  mean_sojourn: 0.5\n"
+      "  observation_noise: {translation: 0.6, rotation: 0.7}\n"
+      "  initial_velocity_std: 0.8\n"
+      "  initial_acceleration_std: 0.9\n"
+      "  initial_angular_velocity_std: 1.1\n",
+      "settings.yaml");
+  EXPECT_EQ(s.imm.position_noise, 0.1);
+  EXPECT_EQ(s.imm.acceleration_noise, 0.2);
+  EXPECT_EQ(s.imm.jerk_noise, 0.3);
+  EXPECT_EQ(s.imm.angular_acceleration_noise, 0.4);
+  EXPECT_EQ(s.imm.mean_sojourn, 0.5);
+  EXPECT_EQ(s.imm.observation_noise_translation, 0.6);
+  EXPECT_EQ(s.imm.observation_noise_rotation, 0.7);
+  EXPECT_EQ(s.imm.initial_velocity_std, 0.8);
+  EXPECT_EQ(s.imm.initial_acceleration_std, 0.9);
+  EXPECT_EQ(s.imm.initial_angular_velocity_std, 1.1);
 }
 
 TEST(EstimatorSettingsYaml, EveryOapfKeyOverrides) {

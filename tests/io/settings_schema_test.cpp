@@ -3,6 +3,7 @@
 // file and in the struct, and both must refuse it under the same key path.
 
 #include "opf/estimators/cv_kalman.h"
+#include "opf/estimators/imm_kalman.h"
 #include "opf/estimators/object_permanence_filter.h"
 #include "opf/estimators/random_walk_oapf.h"
 #include "opf/io/estimator_settings_yaml.h"
@@ -153,6 +154,7 @@ void construct_owner(const std::string& path, const EstimatorSettings& s) {
   const std::string section = path.substr(0, path.find('.'));
   if (section == "pf") PoseParticleFilter(s.pf, 1);
   if (section == "cvkf") ConstantVelocityKalman{s.cvkf};
+  if (section == "imm") ImmKalman{s.imm};
   if (section == "opf") ObjectPermanenceFilter(s.opf, "x", 1);
   if (section == "oapf") OcclusionAwareParticleFilter(s.oapf, 1);
 }
@@ -161,9 +163,10 @@ TEST(SettingsSchema, ListsEveryBoundedFieldOfEverySection) {
   const std::vector<SpoiledField> fields = spoiled_fields();
   std::set<std::string> sections;
   for (const SpoiledField& f : fields) sections.insert(f.path.substr(0, f.path.find('.')));
-  EXPECT_EQ(sections, (std::set<std::string>{"pf", "cvkf", "opf", "oapf"}));
-  // 8 of pf, 6 of cvkf, 5 of oapf and 38 of the OPF: a field dropped from a description shows.
-  EXPECT_EQ(fields.size(), 57u);
+  EXPECT_EQ(sections, (std::set<std::string>{"pf", "cvkf", "imm", "opf", "oapf"}));
+  // 8 of pf, 6 of cvkf, 10 of imm, 5 of oapf and 38 of the OPF: a field dropped from a
+  // description shows.
+  EXPECT_EQ(fields.size(), 67u);
 }
 
 TEST(SettingsSchema, TheReaderAndTheConstructorsRefuseTheSameValues) {

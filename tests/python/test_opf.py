@@ -101,7 +101,7 @@ def test_a_config_dict_is_read_like_the_settings_file(tmp_path):
 
 
 def test_errors_carry_the_programs_messages(tmp_path):
-    with pytest.raises(ValueError, match=r"unknown estimator 'kalman' \(known: opf, pf, cvkf, oapf\)"):
+    with pytest.raises(ValueError, match=r"unknown estimator 'kalman' \(known: opf, pf, cvkf, imm, oapf\)"):
         opf.Tracker("kalman")
     with pytest.raises(ValueError, match=r"<config dict>:1: key 'opf.modules.occluder'"):
         opf.Tracker(config={"opf": {"modules": {"occluder": "sometimes"}}})
@@ -116,4 +116,4 @@ def test_errors_carry_the_programs_messages(tmp_path):
 
 
 def test_the_estimator_names_are_the_registrys():
-    assert opf.estimators() == ["opf", "pf", "cvkf", "oapf"]
+    assert opf.estimators() == ["opf", "pf", "cvkf", "imm", "oapf"]

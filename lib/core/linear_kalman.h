@@ -1,0 +1,109 @@
+#pragma once
+// The linear-Gaussian Kalman filter's two steps, shared by every Kalman estimator (cvkf, imm) and
+// by anything else that propagates a Gaussian through a linear model: the prediction with a
+// transition F and process noise Q, and the update with an observation matrix H, noise R and a
+// measurement z, which also returns the innovation r = z - H x and its log-likelihood
+// log N(r; 0, S), S = H P H^T + R (what an interacting-multiple-model filter weighs its models
+// by). Fixed-size Eigen throughout: the sizes are template parameters, so the small products are
+// unrolled. The kinematic models' discretisations that more than one filter uses live here too.
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include <cmath>
+#include <numbers>
+
+namespace opf::kalman {
+
+template <int N>
+using Vector = Eigen::Matrix<double, N, 1>;
+template <int Rows, int Cols = Rows>
+using Matrix = Eigen::Matrix<double, Rows, Cols>;
+
+/// The covariance half of a prediction, P <- F P F^T + Q: for error-state filters, whose mean
+/// moves by its own nonlinear rule.
+template <int N>
+void predict_covariance(Matrix<N>& covariance, const Matrix<N>& transition,
+                        const Matrix<N>& process_noise) {
+  covariance = transition * covariance * transition.transpose() + process_noise;
+}
+
+/// x <- F x, P <- F P F^T + Q.
+template <int N>
+void predict(Vector<N>& mean, Matrix<N>& covariance, const Matrix<N>& transition,
+             const Matrix<N>& process_noise) {
+  mean = transition * mean;
+  predict_covariance(covariance, transition, process_noise);
+}
+
+/// What an update did: the state correction K r it applied (an error-state filter injects it into
+/// its own mean), the innovation r and its log-likelihood under N(0, S).
+template <int N, int M>
+struct Correction {
+  Vector<N> correction;
+  Vector<M> innovation;
+  double log_likelihood = 0.0;
+};
+
+/// The update for a given innovation r (z - H x for a linear filter, a tangent-space difference
+/// for an error-state one): P <- (I - K H) P (I - K H)^T + K R K^T, symmetrised. The Joseph form
+/// keeps P symmetric positive definite under rounding, which the short form (I - K H) P does not
+/// once the gain is large. Returns K r without applying it. S must be positive definite (R is).
+template <int N, int M>
+Correction<N, M> update_covariance(Matrix<N>& covariance, const Matrix<M, N>& observation,
+                                   const Matrix<M>& noise, const Vector<M>& innovation) {
+  const Matrix<M> s = observation * covariance * observation.transpose() + noise;
+  const Eigen::LDLT<Matrix<M>> ldlt(s);
+  // K = P H^T S^-1, solved as S K^T = H P since both P and S are symmetric.
+  const Matrix<N, M> gain = ldlt.solve(observation * covariance).transpose();
+  Matrix<N> a = Matrix<N>::Identity();
+  a -= gain * observation;
+  covariance = a * covariance * a.transpose() + gain * noise * gain.transpose();
+  covariance = 0.5 * (covariance + covariance.transpose()).eval();
+
+  Correction<N, M> out;
+  out.correction = gain * innovation;
+  out.innovation = innovation;
+  // log N(r; 0, S) = -(r^T S^-1 r + log det S + M log 2 pi) / 2; det S = prod D of S = L D L^T.
+  const double mahalanobis = innovation.dot(ldlt.solve(innovation));
+  const double log_det = ldlt.vectorD().array().log().sum();
+  out.log_likelihood = -0.5 * (mahalanobis + log_det + M * std::log(2.0 * std::numbers::pi));
+  return out;
+}
+
+/// The linear update with measurement z: r = z - H x, x <- x + K r, and P as update_covariance.
+template <int N, int M>
+Correction<N, M> update(Vector<N>& mean, Matrix<N>& covariance, const Matrix<M, N>& observation,
+                        const Matrix<M>& noise, const Vector<M>& measurement) {
+  const Vector<M> innovation = measurement - observation * mean;
+  Correction<N, M> out = update_covariance(covariance, observation, noise, innovation);
+  mean += out.correction;
+  return out;
+}
+
+/// The exact discretisation over dt of continuous white-noise acceleration of density q (per
+/// axis, units of the value / s^2 / sqrt(Hz)) for a 3-D (value, rate) state ordered
+/// (value x, y, z, rate x, y, z): the covariance the pair accumulates while the rate random-walks.
+Matrix<6> white_noise_acceleration(double q, double dt);
+
+/// The transition of that state over dt: value <- value_block value + dt rate, rate kept.
+Matrix<6> constant_rate_transition(const Eigen::Matrix3d& value_block, double dt);
+
+/// A linear model's transition and process noise over one step.
+template <int N>
+struct LinearModel {
+  Matrix<N> transition;
+  Matrix<N> process_noise;
+};
+
+/// One axis's kinematic models over the state (position, velocity, acceleration), exactly
+/// discretised over dt; the states a model does not have are held at zero (their rows of F and
+/// Q zero), so models of different orders share the state (an interacting-multiple-model bank).
+/// Constant position: the position random-walks, white velocity of density q (m/s/sqrt(Hz)).
+LinearModel<3> constant_position_model(double q, double dt);
+/// Constant velocity: white-noise acceleration of density q (m/s^2/sqrt(Hz)).
+LinearModel<3> constant_velocity_model(double q, double dt);
+/// Constant acceleration: Wiener-process acceleration, white jerk of density q (m/s^3/sqrt(Hz)).
+LinearModel<3> constant_acceleration_model(double q, double dt);
+
+}  // namespace opf::kalman
