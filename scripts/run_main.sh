@@ -3,7 +3,8 @@
 # experiments (every estimator, 5 seeds, 5000 + 5000 particles), print Table I beside the paper's
 # numbers and write per-frame CSVs, summary.json and figures under results/; then the real-video
 # benchmark (OpenCV's sample clips through `opf detect`, with dropouts) into results/real_video/;
-# last, the notebooks executed against these results into results/notebooks/ (.ipynb and .html;
+# then the real-motion benchmark (public recordings and the clips, every estimator under both
+# presets, 3 seeds: about two minutes on 2 cores) into results/real_motion/; last, the notebooks executed against these results into results/notebooks/ (.ipynb and .html;
 # about 30 s; the sweeps, not run here, are skipped there with the command that runs them).
 # Extra arguments go to `opf reproduce` (see `build/bin/opf reproduce --help`).
 set -euo pipefail
@@ -18,5 +19,8 @@ echo
 OPF="$repo/build/bin/opf" bash "$repo/experiments/real_video/run_real_video.sh" \
   "$repo/results/real_video"
 cat "$repo/results/real_video/table.md"
+echo
+/usr/bin/python3 "$repo/experiments/real_motion/run_benchmark.py" "$repo/results/real_motion" \
+  --opf "$repo/build/bin/opf"
 echo
 bash "$repo/notebooks/run_notebooks.sh" "$repo/results/notebooks"

@@ -271,7 +271,9 @@ def summarise(rows):
 def markdown(summary, rows, args):
     """summary.md: the summary table, then every row."""
     lines = ["# Real-motion benchmark", "",
-             f"`{' '.join(sys.argv[1:])}`: {args.seeds} seed(s); hidden errors are means over "
+             f"{'The subset: ' if args.subset else ''}{args.seeds} seed(s), estimators "
+             f"`{args.estimators}` (the paper preset: {', '.join(PAPER_ESTIMATORS)}); "
+             "hidden errors are means over "
              "the frames without a measurement; ratios are over the constant-velocity Kalman "
              "filter's (`cvkf`, default preset) on the same log; calibration by the NEES / 3 "
              "and the share of hidden frames inside the 95% ellipsoid, means over the logs "
@@ -280,8 +282,10 @@ def markdown(summary, rows, args):
              "rotation / cvkf | NEES/3 position | inside 95% | NEES/3 rotation | inside 95% |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     for s in summary:
+        worst = ("–" if (s["estimator"], s["preset"]) == REFERENCE
+                 else f"{s['worst']:.2f} ({s['worst_row']})")
         lines.append(f"| {s['estimator']} | {s['preset']} | {s['rows']} | "
-                     f"{s['hidden_ratio']:.3f} | {s['worst']:.2f} ({s['worst_row']}) | "
+                     f"{s['hidden_ratio']:.3f} | {worst} | "
                      f"{100 * s['best_share']:.0f}% | {s['rotation_ratio']:.3f} | "
                      f"{s['nees_translation']:.3g} | {100 * s['inside95_translation']:.0f}% | "
                      f"{s['nees_rotation']:.3g} | {100 * s['inside95_rotation']:.0f}% |")
@@ -303,12 +307,33 @@ def markdown(summary, rows, args):
     return "\n".join(lines) + "\n"
 
 
+def draw_curves(ax, curves, styles):
+    """One kind's curves: wider lines first, so that a curve on the same values as another still
+    shows; the paper preset dotted and pale in its estimator's colour."""
+    def drawing_order(curve):
+        (estimator, preset), _ = curve
+        return (preset == "paper", -styles.ESTIMATOR_STYLES.get(estimator, {}).get("linewidth",
+                                                                                   1.5), estimator)
+
+    for (estimator, preset), points in sorted(curves.items(), key=drawing_order):
+        times = sorted(points)
+        values = [points[t][1] / points[t][0] for t in times]
+        style = dict(styles.ESTIMATOR_STYLES.get(estimator, {}))
+        style.update(color=styles.ESTIMATOR_COLOURS.get(estimator, styles.OTHER_COLOUR),
+                     markevery=max(1, len(times) // 8), markersize=4)
+        label = estimator
+        if preset == "paper":
+            style.update(linestyle=(0, (1, 1)), alpha=0.6, marker=None)
+            label = f"{estimator}, paper preset"
+        ax.plot(times, values, label=label, **style)
+
+
 def figures(out, bins):
     """Error against time hidden per kind: the frame-weighted mean over its logs, per estimator."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    import opf_results
+    import opf_results  # the colours and line styles of every other figure
 
     by_kind = defaultdict(lambda: defaultdict(lambda: defaultdict(lambda: [0, 0.0])))
     for b in bins:
@@ -318,20 +343,12 @@ def figures(out, bins):
     written = []
     for kind, curves in sorted(by_kind.items()):
         fig, ax = plt.subplots(figsize=(6.4, 4.0), dpi=150)
-        for (estimator, preset), points in sorted(curves.items(), key=lambda c: (c[0][1], c[0][0])):
-            times = sorted(points)
-            values = [points[t][1] / points[t][0] for t in times]
-            style = dict(opf_results.ESTIMATOR_STYLES.get(estimator, {}))
-            style["color"] = opf_results.ESTIMATOR_COLOURS.get(estimator,
-                                                               opf_results.OTHER_COLOUR)
-            style["markevery"] = max(1, len(times) // 8)
-            style["markersize"] = 4
-            if preset == "paper":
-                style.update(linestyle=(0, (1, 1)), alpha=0.6, marker=None)
-            ax.plot(times, values, label=f"{estimator} ({preset})", **style)
+        draw_curves(ax, curves, opf_results)
         ax.set_yscale("log")
         ax.set_xlabel("time hidden [s] (end of each 0.1 s bin)")
-        ax.set_ylabel("hidden translation error [m]")
+        # The pedestrians' positions are image positions at the protocol's 1 px = 1 mm.
+        unit = "[m; here 1 px = 1 mm]" if kind == "pedestrian" else "[m]"
+        ax.set_ylabel(f"hidden translation error {unit}")
         ax.set_title(f"Real motion, {kind}: error against time hidden")
         ax.grid(True, which="both", alpha=0.3)
         ax.legend(fontsize=7, ncol=2)
