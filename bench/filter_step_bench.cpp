@@ -96,30 +96,28 @@ void BM_OpfHiddenStep(benchmark::State& state) {
 }
 BENCHMARK(BM_OpfHiddenStep)->Apply(particle_counts);
 
-void BM_CvKalmanStep(benchmark::State& state) {
-  ConstantVelocityKalman kf(CvKalmanOptions{});
+// One step of a Kalman filter estimator per iteration, on a measured stream.
+template <class Filter, class Options>
+void kalman_steps(benchmark::State& state) {
+  Filter filter{Options{}};
   const auto stream = measurements(256);
-  kf.initialise(0.0, stream[0]);
+  filter.initialise(0.0, stream[0]);
   std::size_t k = 1;
   double t = 0.0;
   for (auto _ : state) {
     t += kDt;
-    benchmark::DoNotOptimize(kf.step(t, &stream[k++ % stream.size()], empty_ensemble()));
+    benchmark::DoNotOptimize(filter.step(t, &stream[k++ % stream.size()], empty_ensemble()));
   }
+}
+
+void BM_CvKalmanStep(benchmark::State& state) {
+  kalman_steps<ConstantVelocityKalman, CvKalmanOptions>(state);
 }
 BENCHMARK(BM_CvKalmanStep)->Unit(benchmark::kMicrosecond);
 
 // Three models per axis: mixing, three model-matched filters and the combination, per axis.
 void BM_ImmStep(benchmark::State& state) {
-  ImmKalman imm(ImmOptions{});
-  const auto stream = measurements(256);
-  imm.initialise(0.0, stream[0]);
-  std::size_t k = 1;
-  double t = 0.0;
-  for (auto _ : state) {
-    t += kDt;
-    benchmark::DoNotOptimize(imm.step(t, &stream[k++ % stream.size()], empty_ensemble()));
-  }
+  kalman_steps<ImmKalman, ImmOptions>(state);
 }
 BENCHMARK(BM_ImmStep)->Unit(benchmark::kMicrosecond);
 

@@ -3,7 +3,6 @@
 #include "opf/core/pose_conversion.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace opf {
@@ -40,13 +39,7 @@ Estimate ConstantVelocityKalman::initialise(double t,
 Estimate ConstantVelocityKalman::step(double t, const mrpt::poses::CPose3D* measurement,
                                       const EnsembleView& /*ensemble*/) {
   if (!initialised_) throw std::logic_error("ConstantVelocityKalman: step() before initialise()");
-  const double dt = t - t_;
-  if (!(dt > 0.0)) {
-    std::ostringstream msg;
-    msg << "ConstantVelocityKalman: time " << t << " s does not follow the previous time " << t_
-        << " s";
-    throw std::invalid_argument(msg.str());
-  }
+  const double dt = time_step("ConstantVelocityKalman", t_, t);
   t_ = t;
   predict(dt);
   if (measurement == nullptr) return make_estimate(EstimateMode::kPredicted);

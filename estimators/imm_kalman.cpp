@@ -3,7 +3,6 @@
 #include "opf/core/pose_conversion.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace opf {
@@ -42,12 +41,7 @@ Estimate ImmKalman::initialise(double t, const mrpt::poses::CPose3D& first_measu
 Estimate ImmKalman::step(double t, const mrpt::poses::CPose3D* measurement,
                          const EnsembleView& /*ensemble*/) {
   if (!initialised_) throw std::logic_error("ImmKalman: step() before initialise()");
-  const double dt = t - t_;
-  if (!(dt > 0.0)) {
-    std::ostringstream msg;
-    msg << "ImmKalman: time " << t << " s does not follow the previous time " << t_ << " s";
-    throw std::invalid_argument(msg.str());
-  }
+  const double dt = time_step("ImmKalman", t_, t);
   t_ = t;
   const double sigma_r = options_.observation_noise_rotation;
   rotation_.predict(dt, options_.angular_acceleration_noise);

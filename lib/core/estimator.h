@@ -21,6 +21,10 @@ struct EnsembleView {
   std::span<const Estimate> previous_estimates;
 };
 
+/// The time step from `previous` to `t` (s); throws std::invalid_argument naming `estimator` when
+/// `t` does not follow `previous`, so a filter is never stepped backwards or by zero.
+double time_step(std::string_view estimator, double previous, double t);
+
 class Estimator {
  public:
   virtual ~Estimator() = default;
