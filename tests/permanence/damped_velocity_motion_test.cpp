@@ -22,9 +22,21 @@ TEST(DampedVelocityMotion, MatchesTheHandComputedDiscretisation) {
   EXPECT_EQ(step.offset, kalman::Vector<2>::Zero());
 }
 
-// Exact: two steps of dt are one of 2 dt, on both sides of the series' switch (x = 0.01).
+// The same at dt = 0.002 s (x = 0.004), where the position variance is summed as its series:
+// to 1e-12 of its value.
+TEST(DampedVelocityMotion, MatchesTheHandComputedSeriesForAShortStep) {
+  const AxisMotionStep step = damped_velocity_motion(2.0, 0.5, 0.002);
+  EXPECT_NEAR(step.transition(0, 1), 0.001996005328004263823846806710261216541737, 1e-17);
+  EXPECT_NEAR(step.transition(1, 1), 0.9960079893439914723523063865794775669165, 1e-15);
+  EXPECT_NEAR(step.process_noise(0, 0) / 1.063472631476733896151225965458068642933e-8, 1.0, 1e-12);
+  EXPECT_NEAR(step.process_noise(0, 1) / 7.968074538842817628463554958257755151418e-6, 1.0, 1e-12);
+  EXPECT_NEAR(step.process_noise(1, 1) / 0.007968085162939369660130299731128350656639, 1.0, 1e-12);
+}
+
+// Exact: two steps of dt are one of 2 dt; at T = 0.3 s, dt = 0.0015 s steps by the series
+// (x = 0.005) and 2 dt by the closed form (x = 0.01), dt = 0.2 s both by the closed form.
 TEST(DampedVelocityMotion, TwoHalfStepsAreOneStep) {
-  for (const double dt : {0.004, 0.2}) {  // T = 0.3: x = 0.0067 / 0.013 and 0.33 / 0.67
+  for (const double dt : {0.0015, 0.2}) {
     const AxisMotionStep half = damped_velocity_motion(1.5, 0.3, dt);
     const AxisMotionStep whole = damped_velocity_motion(1.5, 0.3, 2.0 * dt);
     const kalman::Matrix<2> composed =
