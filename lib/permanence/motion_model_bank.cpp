@@ -7,27 +7,13 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace opf {
 namespace {
 
 // The position is measured directly: H = [1 0].
 const kalman::Matrix<1, 2> kObservation(1.0, 0.0);
-
-// Sets w = exp(log w) normalised, floored at kBankWeightFloor and renormalised, and log w to
-// match; log w may be unnormalised (and very negative) on entry.
-void normalise(std::vector<double>& log_weights, std::vector<double>& weights) {
-  const double top = *std::max_element(log_weights.begin(), log_weights.end());
-  double sum = 0.0;
-  for (std::size_t j = 0; j < weights.size(); ++j)
-    sum += weights[j] = std::exp(log_weights[j] - top);
-  double floored = 0.0;
-  for (double& w : weights) floored += w = std::max(w / sum, kBankWeightFloor);
-  for (std::size_t j = 0; j < weights.size(); ++j) {
-    weights[j] /= floored;
-    log_weights[j] = std::log(weights[j]);
-  }
-}
 
 void check_axis(int axis) {
   if (axis < 0 || axis > 2)
@@ -81,14 +67,11 @@ MotionModelBank::MotionModelBank(const MotionModelBankOptions& options) : option
     // Each model 1 / model_count, shared equally by its members.
     std::vector<int> members_of_model(static_cast<std::size_t>(model_count), 0);
     for (const int m : model_of_member) ++members_of_model[static_cast<std::size_t>(m)];
-    log_priors_[axis].clear();
+    std::vector<double> priors;
     for (const int m : model_of_member)
-      log_priors_[axis].push_back(
-          -std::log(static_cast<double>(model_count) *
-                    static_cast<double>(members_of_model[static_cast<std::size_t>(m)])));
-    log_weights_[axis] = log_priors_[axis];
-    weights_[axis].assign(models.size(), 0.0);
-    normalise(log_weights_[axis], weights_[axis]);
+      priors.push_back(1.0 / (static_cast<double>(model_count) *
+                              static_cast<double>(members_of_model[static_cast<std::size_t>(m)])));
+    weights_.emplace_back(std::move(priors));
     filters_[axis].resize(models.size());
   }
 }
@@ -106,8 +89,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
         f.mean << position[axis], 0.0;
         f.covariance << r, 0.0, 0.0, pinned ? 0.0 : sigma_v * sigma_v;
       }
-      log_weights_[axis] = log_priors_[axis];
-      normalise(log_weights_[axis], weights_[axis]);
+      weights_[axis].reset();
     }
     t_ = t;
     initialised_ = true;
@@ -118,21 +100,19 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
     throw std::invalid_argument("MotionModelBank: update() at t = " + std::to_string(t) +
                                 " s, before the last one at " + std::to_string(t_) + " s");
   t_ = t;
-  const double lambda = std::exp(-dt / options_.memory);
   const kalman::Matrix<1> noise = kalman::Matrix<1>::Constant(r);
   for (int axis = 0; axis < 3; ++axis) {
     const kalman::Vector<1> z = kalman::Vector<1>::Constant(position[axis]);
-    std::vector<double>& log_w = log_weights_[axis];
+    log_likelihoods_.resize(filters_[axis].size());
     for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
       Filter& f = filters_[axis][j];
       const AxisMotionStep step = models_[axis][j].step(dt);
       kalman::predict(f.mean, f.covariance, step.transition, step.process_noise);
       f.mean += step.offset;
-      const auto correction = kalman::update(f.mean, f.covariance, kObservation, noise, z);
-      log_w[j] =
-          lambda * log_w[j] + (1.0 - lambda) * log_priors_[axis][j] + correction.log_likelihood;
+      log_likelihoods_[j] =
+          kalman::update(f.mean, f.covariance, kObservation, noise, z).log_likelihood;
     }
-    normalise(log_w, weights_[axis]);
+    weights_[axis].update(dt, options_.memory, log_likelihoods_);
   }
 }
 
@@ -152,7 +132,7 @@ MemberPrediction MotionModelBank::member_prediction(int axis, std::size_t index,
   const double variance =
       (step.transition.row(0) * f.covariance * step.transition.row(0).transpose())(0, 0) +
       step.process_noise(0, 0);
-  return {model_name(model.model), weights_[axis][index], mean[0], variance};
+  return {model_name(model.model), weights_[axis].weights()[index], mean[0], variance};
 }
 
 BankPrediction MotionModelBank::predict(double horizon) const {
@@ -170,13 +150,13 @@ double MotionModelBank::model_weight(int axis, MotionModel model) const {
   check_axis(axis);
   double sum = 0.0;
   for (std::size_t j = 0; j < models_[axis].size(); ++j)
-    if (models_[axis][j].model == model) sum += weights_[axis][j];
+    if (models_[axis][j].model == model) sum += weights_[axis].weights()[j];
   return sum;
 }
 
 std::size_t MotionModelBank::sample_member(int axis, double uniform01) const {
   check_axis(axis);
-  return weighted_choice(weights_[axis], uniform01);
+  return weighted_choice(weights_[axis].weights(), uniform01);
 }
 
 }  // namespace opf

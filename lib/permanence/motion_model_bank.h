@@ -18,9 +18,9 @@
 // members are left out there when constant velocity is in the bank, so that it is not counted
 // twice.
 //
-// Weights: each model has the prior 1 / (models on the axis), shared equally by its members
-// (pi_j). At each measurement, after a step dt, every member predicts and updates, and with its
-// innovation r_j and variance S_j
+// Weights (model_weights.h): each model has the prior 1 / (models on the axis), shared equally by
+// its members (pi_j). At each measurement, after a step dt, every member predicts and updates,
+// and with its innovation r_j and variance S_j
 //
 //   log w_j <- lambda log w_j + (1 - lambda) log pi_j + log N(r_j; 0, S_j),
 //   lambda = exp(-dt / T_memory),
@@ -30,6 +30,7 @@
 // uniform over members, the prior term is a constant that the normalisation removes.
 
 #include "opf/permanence/axis_motion_model.h"
+#include "opf/permanence/model_weights.h"
 #include "opf/permanence/motion_model_bank_options.h"
 #include "opf/permanence/predictive_mixture.h"
 
@@ -50,8 +51,8 @@ inline constexpr double kBankPositionNoiseBase = 0.01;
 inline constexpr double kBankAccelerationNoiseBase = 0.3;
 /// The damped model's time constants (s).
 inline constexpr std::array<double, 3> kBankDampingTimeConstants = {0.3, 1.0, 3.0};
-/// The floor of a member's probability.
-inline constexpr double kBankWeightFloor = 1e-12;
+/// The floor of a member's probability (model_weights.h).
+inline constexpr double kBankWeightFloor = kModelWeightFloor;
 
 /// The predictive mixture for a horizon, per world axis.
 struct BankPrediction {
@@ -86,7 +87,7 @@ class MotionModelBank {
   /// The members on an axis, in the order of the weights.
   std::span<const AxisMotionModel> members(int axis) const { return models_[axis]; }
   /// Their probabilities (summing to 1).
-  std::span<const double> weights(int axis) const { return weights_[axis]; }
+  std::span<const double> weights(int axis) const { return weights_[axis].weights(); }
   /// The total probability of a model's members on an axis.
   double model_weight(int axis, MotionModel model) const;
   /// The member that a uniform draw in [0, 1) maps to, each taking its weight's share of [0, 1)
@@ -103,10 +104,9 @@ class MotionModelBank {
 
   MotionModelBankOptions options_;
   std::array<std::vector<AxisMotionModel>, 3> models_;
-  std::array<std::vector<double>, 3> log_priors_;
   std::array<std::vector<Filter>, 3> filters_;
-  std::array<std::vector<double>, 3> log_weights_;
-  std::array<std::vector<double>, 3> weights_;
+  std::vector<ModelWeights> weights_;  ///< one per axis
+  std::vector<double> log_likelihoods_;
   double t_ = 0.0;
   bool initialised_ = false;
 };
