@@ -1,0 +1,13 @@
+#include "opf/permanence/ballistic_motion.h"
+
+#include "opf/permanence/constant_velocity_motion.h"
+
+namespace opf {
+
+AxisMotionStep ballistic_motion(double q, double g, double dt) {
+  AxisMotionStep step = constant_velocity_motion(q, dt);
+  step.offset << g * dt * dt / 2.0, g * dt;
+  return step;
+}
+
+}  // namespace opf

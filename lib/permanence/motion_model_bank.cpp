@@ -1,0 +1,162 @@
+#include "opf/permanence/motion_model_bank.h"
+
+#include "opf/permanence/ballistic_motion.h"
+#include "opf/permanence/weighted_choice.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace opf {
+namespace {
+
+// The position is measured directly: H = [1 0].
+const kalman::Matrix<1, 2> kObservation(1.0, 0.0);
+
+void check_axis(int axis) {
+  if (axis < 0 || axis > 2)
+    throw std::out_of_range("MotionModelBank: axis " + std::to_string(axis) + " is not 0, 1 or 2");
+}
+
+}  // namespace
+
+Eigen::Vector3d BankPrediction::mean() const {
+  return {axes[0].mean(), axes[1].mean(), axes[2].mean()};
+}
+
+Eigen::Vector3d BankPrediction::variance() const {
+  return {axes[0].variance(), axes[1].variance(), axes[2].variance()};
+}
+
+MotionModelBank::MotionModelBank(const MotionModelBankOptions& options) : options_(options) {
+  validate(options_);
+  const Eigen::Vector3d up = options_.up.normalized();
+  const double scale = options_.intensity_scale;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double g = -kStandardGravity * up[axis];
+    std::vector<AxisMotionModel>& models = models_[axis];
+    std::vector<int> model_of_member;
+    int model_count = 0;
+    const auto add = [&](AxisMotionModel m, double base, bool damped) {
+      for (const double factor : kBankIntensityFactors) {
+        m.intensity = factor * base * scale;
+        if (damped) {
+          for (const double time_constant : kBankDampingTimeConstants) {
+            m.time_constant = time_constant;
+            models.push_back(m);
+            model_of_member.push_back(model_count);
+          }
+        } else {
+          models.push_back(m);
+          model_of_member.push_back(model_count);
+        }
+      }
+      ++model_count;
+    };
+    if (options_.constant_position)
+      add({MotionModel::kConstantPosition, 0.0, 1.0, 0.0}, kBankPositionNoiseBase, false);
+    if (options_.constant_velocity)
+      add({MotionModel::kConstantVelocity, 0.0, 1.0, 0.0}, kBankAccelerationNoiseBase, false);
+    if (options_.damped_velocity)
+      add({MotionModel::kDampedVelocity, 0.0, 1.0, 0.0}, kBankAccelerationNoiseBase, true);
+    if (options_.ballistic && !(g == 0.0 && options_.constant_velocity))
+      add({MotionModel::kBallistic, 0.0, 1.0, g}, kBankAccelerationNoiseBase, false);
+
+    // Each model 1 / model_count, shared equally by its members.
+    std::vector<int> members_of_model(static_cast<std::size_t>(model_count), 0);
+    for (const int m : model_of_member) ++members_of_model[static_cast<std::size_t>(m)];
+    std::vector<double> priors;
+    for (const int m : model_of_member)
+      priors.push_back(1.0 / (static_cast<double>(model_count) *
+                              static_cast<double>(members_of_model[static_cast<std::size_t>(m)])));
+    weights_.emplace_back(std::move(priors));
+    filters_[axis].resize(models.size());
+  }
+}
+
+void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
+  if (!std::isfinite(t) || !position.allFinite())
+    throw std::invalid_argument("MotionModelBank: update() with a non-finite time or position");
+  const double r = options_.observation_noise * options_.observation_noise;
+  if (!initialised_) {
+    const double sigma_v = options_.initial_velocity_std;
+    for (int axis = 0; axis < 3; ++axis) {
+      for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
+        Filter& f = filters_[axis][j];
+        const bool pinned = models_[axis][j].model == MotionModel::kConstantPosition;
+        f.mean << position[axis], 0.0;
+        f.covariance << r, 0.0, 0.0, pinned ? 0.0 : sigma_v * sigma_v;
+      }
+      weights_[axis].reset();
+    }
+    t_ = t;
+    initialised_ = true;
+    return;
+  }
+  const double dt = t - t_;
+  if (dt < 0.0)
+    throw std::invalid_argument("MotionModelBank: update() at t = " + std::to_string(t) +
+                                " s, before the last one at " + std::to_string(t_) + " s");
+  t_ = t;
+  const kalman::Matrix<1> noise = kalman::Matrix<1>::Constant(r);
+  for (int axis = 0; axis < 3; ++axis) {
+    const kalman::Vector<1> z = kalman::Vector<1>::Constant(position[axis]);
+    log_likelihoods_.resize(filters_[axis].size());
+    for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
+      Filter& f = filters_[axis][j];
+      const AxisMotionStep step = models_[axis][j].step(dt);
+      kalman::predict(f.mean, f.covariance, step.transition, step.process_noise);
+      f.mean += step.offset;
+      log_likelihoods_[j] =
+          kalman::update(f.mean, f.covariance, kObservation, noise, z).log_likelihood;
+    }
+    weights_[axis].update(dt, options_.memory, log_likelihoods_);
+  }
+}
+
+MemberPrediction MotionModelBank::member_prediction(int axis, std::size_t index,
+                                                    double horizon) const {
+  check_axis(axis);
+  if (index >= models_[axis].size())
+    throw std::out_of_range("MotionModelBank: no member " + std::to_string(index) + " on axis " +
+                            std::to_string(axis));
+  if (!initialised_) throw std::logic_error("MotionModelBank: predict() before any update()");
+  if (!(horizon >= 0.0) || !std::isfinite(horizon))
+    throw std::invalid_argument("MotionModelBank: the horizon must be a finite number >= 0 (s)");
+  const AxisMotionModel& model = models_[axis][index];
+  const Filter& f = filters_[axis][index];
+  const AxisMotionStep step = model.step(horizon);
+  const kalman::Vector<2> mean = step.transition * f.mean + step.offset;
+  const double variance =
+      (step.transition.row(0) * f.covariance * step.transition.row(0).transpose())(0, 0) +
+      step.process_noise(0, 0);
+  return {model_name(model.model), weights_[axis].weights()[index], mean[0], variance};
+}
+
+BankPrediction MotionModelBank::predict(double horizon) const {
+  BankPrediction out;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<MemberPrediction>& members = out.axes[static_cast<std::size_t>(axis)].members;
+    members.reserve(models_[axis].size());
+    for (std::size_t j = 0; j < models_[axis].size(); ++j)
+      members.push_back(member_prediction(axis, j, horizon));
+  }
+  return out;
+}
+
+double MotionModelBank::model_weight(int axis, MotionModel model) const {
+  check_axis(axis);
+  double sum = 0.0;
+  for (std::size_t j = 0; j < models_[axis].size(); ++j)
+    if (models_[axis][j].model == model) sum += weights_[axis].weights()[j];
+  return sum;
+}
+
+std::size_t MotionModelBank::sample_member(int axis, double uniform01) const {
+  check_axis(axis);
+  return weighted_choice(weights_[axis].weights(), uniform01);
+}
+
+}  // namespace opf

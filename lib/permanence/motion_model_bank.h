@@ -1,0 +1,114 @@
+#pragma once
+// A bank of linear-Gaussian motion models for an object's translation, combined by Bayesian model
+// averaging: per world axis, each model (axis_motion_model.h) at a few stated intensities is a
+// member with its own Kalman filter over the object's visible history, weighted by how well it
+// predicted each measurement one step ahead. No intensity is tuned on data: the grid is stated
+// here and the data weigh its members.
+//
+// The members, per axis (each white-noise density times options.intensity_scale):
+//   constant position   q in {0.001, 0.01, 0.1} m/s/sqrt(Hz)       (0.1, 1, 10 x 0.01)
+//   constant velocity   q in {0.03, 0.3, 3} m/s^2/sqrt(Hz)         (0.1, 1, 10 x 0.3)
+//   damped velocity     q in {0.03, 0.3, 3} m/s^2/sqrt(Hz) x T in {0.3, 1, 3} s
+//   ballistic           q in {0.03, 0.3, 3} m/s^2/sqrt(Hz), g = -9.81 up[axis] m/s^2
+// The bases: a still object on a table or in a hand jitters by millimetres a second (0.01 m/s per
+// sqrt(Hz) is 1 cm after 1 s); a hand-carried object changes its velocity by about 0.3 m/s within
+// a second (0.3 m/s^2/sqrt(Hz) over 1 s); a decade either side covers resting to thrown. The time
+// constants span a push that dies out within a frame-gap (0.3 s) to a glide (3 s). On an axis
+// that gravity does not reach (g = 0), the ballistic model is the constant-velocity model; its
+// members are left out there when constant velocity is in the bank, so that it is not counted
+// twice.
+//
+// Weights (model_weights.h): each model has the prior 1 / (models on the axis), shared equally by
+// its members (pi_j). At each measurement, after a step dt, every member predicts and updates,
+// and with its innovation r_j and variance S_j
+//
+//   log w_j <- lambda log w_j + (1 - lambda) log pi_j + log N(r_j; 0, S_j),
+//   lambda = exp(-dt / T_memory),
+//
+// then normalised and floored at 1e-12 (renormalised), so that no member dies for good. The
+// forgetting is stated in continuous time: n frames of dt forget as one of n dt. With the prior
+// uniform over members, the prior term is a constant that the normalisation removes.
+
+#include "opf/permanence/axis_motion_model.h"
+#include "opf/permanence/model_weights.h"
+#include "opf/permanence/motion_model_bank_options.h"
+#include "opf/permanence/predictive_mixture.h"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+namespace opf {
+
+/// The intensity grid's factors on each model's base density.
+inline constexpr std::array<double, 3> kBankIntensityFactors = {0.1, 1.0, 10.0};
+/// Constant position's base velocity density (m/s/sqrt(Hz)).
+inline constexpr double kBankPositionNoiseBase = 0.01;
+/// The other models' base acceleration density (m/s^2/sqrt(Hz)).
+inline constexpr double kBankAccelerationNoiseBase = 0.3;
+/// The damped model's time constants (s).
+inline constexpr std::array<double, 3> kBankDampingTimeConstants = {0.3, 1.0, 3.0};
+/// The floor of a member's probability (model_weights.h).
+inline constexpr double kBankWeightFloor = kModelWeightFloor;
+
+/// The predictive mixture for a horizon, per world axis.
+struct BankPrediction {
+  std::array<AxisMixture, 3> axes;
+
+  Eigen::Vector3d mean() const;
+  Eigen::Vector3d variance() const;
+};
+
+class MotionModelBank {
+ public:
+  /// Throws std::invalid_argument naming the first bad option.
+  explicit MotionModelBank(const MotionModelBankOptions& options = {});
+
+  /// A measured position (m) at time t (s), not before the last one. The first starts every
+  /// member's filter (position measured, velocity 0 with options.initial_velocity_std, constant
+  /// position's pinned at 0) with the prior weights; a later one steps every member across the
+  /// interval (a gap just predicts across) and updates it and the weights.
+  void update(double t, const Eigen::Vector3d& position);
+
+  bool initialised() const { return initialised_; }
+  /// The time of the last update (s).
+  double last_time() const { return t_; }
+
+  /// The predictive mixture of the position `horizon` s (>= 0) after the last update: per axis,
+  /// every member's weight, mean and variance (of the position itself; its measurement adds
+  /// options.observation_noise^2).
+  BankPrediction predict(double horizon) const;
+  /// One member's prediction (its weight included), member indices as members(axis).
+  MemberPrediction member_prediction(int axis, std::size_t index, double horizon) const;
+
+  /// The members on an axis, in the order of the weights.
+  std::span<const AxisMotionModel> members(int axis) const { return models_[axis]; }
+  /// Their probabilities (summing to 1).
+  std::span<const double> weights(int axis) const { return weights_[axis].weights(); }
+  /// The total probability of a model's members on an axis.
+  double model_weight(int axis, MotionModel model) const;
+  /// The member that a uniform draw in [0, 1) maps to, each taking its weight's share of [0, 1)
+  /// (weighted_choice.h): a particle's member, drawn at the onset of a gap.
+  std::size_t sample_member(int axis, double uniform01) const;
+
+  const MotionModelBankOptions& options() const { return options_; }
+
+ private:
+  struct Filter {
+    kalman::Vector<2> mean;
+    kalman::Matrix<2> covariance;
+  };
+
+  MotionModelBankOptions options_;
+  std::array<std::vector<AxisMotionModel>, 3> models_;
+  std::array<std::vector<Filter>, 3> filters_;
+  std::vector<ModelWeights> weights_;  ///< one per axis
+  std::vector<double> log_likelihoods_;
+  double t_ = 0.0;
+  bool initialised_ = false;
+};
+
+}  // namespace opf

@@ -1,0 +1,88 @@
+#include "opf/permanence/rotation_model_bank.h"
+
+#include "opf/permanence/weighted_choice.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace opf {
+namespace {
+
+std::vector<TangentRotationFilter> members_of(const RotationModelBankOptions& options) {
+  validate(options);
+  std::vector<TangentRotationFilter> members;
+  for (const double factor : kRotationBankIntensityFactors)
+    members.emplace_back(RotationModel::kConstantOrientation,
+                         factor * kRotationBankOrientationNoiseBase * options.intensity_scale);
+  for (const double factor : kRotationBankIntensityFactors)
+    members.emplace_back(
+        RotationModel::kConstantAngularVelocity,
+        factor * kRotationBankAngularAccelerationNoiseBase * options.intensity_scale);
+  return members;
+}
+
+}  // namespace
+
+RotationModelBank::RotationModelBank(const RotationModelBankOptions& options)
+    : options_(options),
+      filters_(members_of(options)),
+      weights_(std::vector<double>(filters_.size(), 1.0)),  // 2 models x 3 members: equal
+      log_likelihoods_(filters_.size(), 0.0) {}
+
+void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) {
+  if (!std::isfinite(t) || !orientation.coeffs().allFinite() || orientation.norm() == 0.0)
+    throw std::invalid_argument(
+        "RotationModelBank: update() with a non-finite time or orientation");
+  const double sigma = options_.observation_noise;
+  if (!initialised_) {
+    for (TangentRotationFilter& f : filters_)
+      f.initialise(orientation, sigma, options_.initial_angular_velocity_std);
+    weights_.reset();
+    t_ = t;
+    initialised_ = true;
+    return;
+  }
+  const double dt = t - t_;
+  if (dt < 0.0)
+    throw std::invalid_argument("RotationModelBank: update() at t = " + std::to_string(t) +
+                                " s, before the last one at " + std::to_string(t_) + " s");
+  t_ = t;
+  for (std::size_t j = 0; j < filters_.size(); ++j) {
+    filters_[j].predict(dt);
+    log_likelihoods_[j] = filters_[j].update(orientation, sigma * sigma);
+  }
+  weights_.update(dt, options_.memory, log_likelihoods_);
+}
+
+RotationMemberPrediction RotationModelBank::member_prediction(std::size_t index,
+                                                              double horizon) const {
+  if (index >= filters_.size())
+    throw std::out_of_range("RotationModelBank: no member " + std::to_string(index));
+  if (!initialised_) throw std::logic_error("RotationModelBank: predict() before any update()");
+  if (!(horizon >= 0.0) || !std::isfinite(horizon))
+    throw std::invalid_argument("RotationModelBank: the horizon must be a finite number >= 0 (s)");
+  const TangentRotationFilter::Prediction p = filters_[index].predicted(horizon);
+  return {rotation_model_name(filters_[index].model()), weights_.weights()[index], p.orientation,
+          p.covariance};
+}
+
+std::vector<RotationMemberPrediction> RotationModelBank::predict(double horizon) const {
+  std::vector<RotationMemberPrediction> out;
+  out.reserve(filters_.size());
+  for (std::size_t j = 0; j < filters_.size(); ++j) out.push_back(member_prediction(j, horizon));
+  return out;
+}
+
+double RotationModelBank::model_weight(RotationModel model) const {
+  double sum = 0.0;
+  for (std::size_t j = 0; j < filters_.size(); ++j)
+    if (filters_[j].model() == model) sum += weights_.weights()[j];
+  return sum;
+}
+
+std::size_t RotationModelBank::sample_member(double uniform01) const {
+  return weighted_choice(weights_.weights(), uniform01);
+}
+
+}  // namespace opf

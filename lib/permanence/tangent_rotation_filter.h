@@ -1,0 +1,70 @@
+#pragma once
+// One orientation model's error-state Kalman filter in the body tangent space: the state is the
+// orientation R and its body-frame angular velocity w, the error (dtheta, dw) with R_true =
+// R exp(dtheta) (core/so3.h), measured by H = [I 0] with isotropic variance (rad^2). Two models:
+//
+//   constant orientation       the orientation random-walks, white angular velocity of density
+//                              q (rad/s/sqrt(Hz)): F = [I 0; 0 0], Q = [q^2 dt I 0; 0 0] (w
+//                              pinned at 0);
+//   constant angular velocity  R <- R exp(w dt), white angular acceleration q
+//                              (rad/s^2/sqrt(Hz)): F = [exp(-w dt) dt I; 0 I] (the error carried
+//                              through the step's own rotation, dw -> dtheta to first order),
+//                              Q = q^2 [dt^3/3 I  dt^2/2 I; dt^2/2 I  dt I].
+//
+// The rotation counterparts of constant position and constant velocity (Bar-Shalom, Li &
+// Kirubarajan 2001, ch. 6, per tangent axis).
+
+#include "opf/core/linear_kalman.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <string_view>
+
+namespace opf {
+
+enum class RotationModel { kConstantOrientation, kConstantAngularVelocity };
+
+/// "constant_orientation", "constant_angular_velocity".
+std::string_view rotation_model_name(RotationModel model);
+
+class TangentRotationFilter {
+ public:
+  /// `intensity` q: rad/s/sqrt(Hz) for constant orientation, rad/s^2/sqrt(Hz) for constant
+  /// angular velocity.
+  TangentRotationFilter(RotationModel model, double intensity)
+      : model_(model), intensity_(intensity) {}
+
+  /// At `orientation` with std `orientation_std` (rad per tangent axis), the rate zero with std
+  /// `rate_std` (rad/s; zero for constant orientation, whose rate is pinned).
+  void initialise(const Eigen::Quaterniond& orientation, double orientation_std, double rate_std);
+  /// Steps the state over dt >= 0 (s).
+  void predict(double dt);
+  /// Updates with a measured orientation of tangent variance `variance` (rad^2 per axis); returns
+  /// the innovation's log-likelihood log N(r; 0, S). The quaternion's sign is irrelevant.
+  double update(const Eigen::Quaterniond& measured, double variance);
+
+  /// The orientation `horizon` s ahead and its tangent covariance (rad^2) there.
+  struct Prediction {
+    Eigen::Quaterniond orientation;
+    Eigen::Matrix3d covariance;
+  };
+  Prediction predicted(double horizon) const;
+
+  RotationModel model() const { return model_; }
+  double intensity() const { return intensity_; }
+  const Eigen::Quaterniond& orientation() const { return orientation_; }
+  const Eigen::Vector3d& angular_velocity() const { return angular_velocity_; }
+
+ private:
+  /// F and Q over dt at the current rate.
+  kalman::LinearModel<6> step(double dt) const;
+
+  RotationModel model_;
+  double intensity_;
+  Eigen::Quaterniond orientation_ = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d angular_velocity_ = Eigen::Vector3d::Zero();  ///< body frame
+  kalman::Matrix<6> covariance_ = kalman::Matrix<6>::Identity();
+};
+
+}  // namespace opf

@@ -1,0 +1,369 @@
+#include "opf/permanence/motion_model_bank.h"
+
+#include "opf/core/random.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace opf {
+namespace {
+
+constexpr double kRate = 30.0;  // Hz
+
+// A draw of N(0, Q) for a 2 x 2 covariance that may be singular (constant position's).
+kalman::Vector<2> draw_noise(const kalman::Matrix<2>& q, Random& random) {
+  const double a = std::sqrt(std::max(q(0, 0), 0.0));
+  const double c = a > 0.0 ? q(1, 0) / a : 0.0;
+  const double d = std::sqrt(std::max(q(1, 1) - c * c, 0.0));
+  const double u = random.normal(), w = random.normal();
+  return {a * u, c * u + d * w};
+}
+
+// One step of a model's state with its exact noise.
+void advance(const AxisMotionModel& model, double dt, kalman::Vector<2>& x, Random& random) {
+  const AxisMotionStep step = model.step(dt);
+  x = step.transition * x + step.offset + draw_noise(step.process_noise, random);
+}
+
+// A track drawn from one model per axis at 30 Hz, measured with `sigma` m of noise per axis; the
+// bank has seen every frame; `truth` holds the states after the last frame.
+struct Drawn {
+  MotionModelBank bank;
+  std::array<kalman::Vector<2>, 3> truth;
+};
+
+Drawn draw(const std::array<AxisMotionModel, 3>& models,
+           const std::array<kalman::Vector<2>, 3>& start, double sigma, int frames,
+           std::uint64_t seed, MotionModelBankOptions options = {}) {
+  Random random(seed);
+  options.observation_noise = sigma;
+  Drawn out{MotionModelBank(options), start};
+  for (int k = 0; k < frames; ++k) {
+    Eigen::Vector3d z;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (k > 0) advance(models[axis], 1.0 / kRate, out.truth[axis], random);
+      z[axis] = out.truth[axis][0] + sigma * random.normal();
+    }
+    out.bank.update(k / kRate, z);
+  }
+  return out;
+}
+
+std::array<kalman::Vector<2>, 3> at_rest() {
+  const kalman::Vector<2> zero = kalman::Vector<2>::Zero();
+  return {zero, zero, zero};
+}
+
+std::array<AxisMotionModel, 3> on_every_axis(const AxisMotionModel& m) {
+  return {m, m, m};
+}
+
+// The model whose members carry the most weight on an axis.
+MotionModel winner(const MotionModelBank& bank, int axis) {
+  MotionModel best = MotionModel::kConstantPosition;
+  for (int m = 0; m < kMotionModelCount; ++m)
+    if (bank.model_weight(axis, static_cast<MotionModel>(m)) > bank.model_weight(axis, best))
+      best = static_cast<MotionModel>(m);
+  return best;
+}
+
+double weight_sum(const MotionModelBank& bank, int axis) {
+  double sum = 0.0;
+  for (const double w : bank.weights(axis)) sum += w;
+  return sum;
+}
+
+// Default bank, up = z: x and y hold constant position, constant velocity (3 intensities each)
+// and damped velocity (3 x 3); gravity does not reach them, so ballistic (= constant velocity
+// there) is left out. z adds ballistic at g = -9.81. Each model starts with an equal share.
+TEST(MotionModelBank, MembersAreTheStatedGrid) {
+  const MotionModelBank bank;
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::size_t expected = axis == 2 ? 18u : 15u;
+    ASSERT_EQ(bank.members(axis).size(), expected) << axis;
+    std::multiset<double> cp, cv, dv, ballistic;
+    std::set<double> time_constants;
+    for (const AxisMotionModel& m : bank.members(axis)) {
+      switch (m.model) {
+        case MotionModel::kConstantPosition:
+          cp.insert(m.intensity);
+          break;
+        case MotionModel::kConstantVelocity:
+          cv.insert(m.intensity);
+          break;
+        case MotionModel::kDampedVelocity:
+          dv.insert(m.intensity);
+          time_constants.insert(m.time_constant);
+          break;
+        case MotionModel::kBallistic:
+          ballistic.insert(m.intensity);
+          EXPECT_DOUBLE_EQ(m.acceleration, -9.81);
+          break;
+      }
+    }
+    const auto near = [](const std::multiset<double>& s, std::vector<double> v) {
+      if (s.size() != v.size()) return false;
+      std::size_t i = 0;
+      for (const double x : s)
+        if (std::abs(x - v[i++]) > 1e-12) return false;
+      return true;
+    };
+    EXPECT_TRUE(near(cp, {0.001, 0.01, 0.1}));
+    EXPECT_TRUE(near(cv, {0.03, 0.3, 3.0}));
+    EXPECT_TRUE(near(dv, {0.03, 0.03, 0.03, 0.3, 0.3, 0.3, 3.0, 3.0, 3.0}));
+    EXPECT_EQ(time_constants, (std::set<double>{0.3, 1.0, 3.0}));
+    EXPECT_EQ(ballistic.size(), axis == 2 ? 3u : 0u);
+    const double share = axis == 2 ? 0.25 : 1.0 / 3.0;
+    EXPECT_NEAR(bank.model_weight(axis, MotionModel::kConstantPosition), share, 1e-12);
+    EXPECT_NEAR(bank.model_weight(axis, MotionModel::kDampedVelocity), share, 1e-12);
+    EXPECT_NEAR(weight_sum(bank, axis), 1.0, 1e-12);
+  }
+}
+
+// A tilted up reaches every axis (g = -9.81 up[axis], up normalised); without constant velocity
+// ballistic stays on a horizontal axis, as the only velocity model there.
+TEST(MotionModelBank, GravityFollowsUp) {
+  MotionModelBankOptions options;
+  options.up = Eigen::Vector3d(0.0, 3.0, 4.0);
+  const MotionModelBank tilted(options);
+  EXPECT_EQ(tilted.members(0).size(), 15u);
+  for (const int axis : {1, 2}) {
+    ASSERT_EQ(tilted.members(axis).size(), 18u);
+    EXPECT_DOUBLE_EQ(tilted.members(axis).back().acceleration, -9.81 * (axis == 1 ? 0.6 : 0.8));
+  }
+  options = {};
+  options.constant_velocity = false;
+  EXPECT_EQ(MotionModelBank(options).members(0).size(), 15u);
+}
+
+// Data drawn from each model for 3 s at 30 Hz with 5 mm noise, at an intensity where a 1 s
+// memory can tell it from its neighbours: that model's members hold the most weight at the end.
+// (Constant position at 0.01 m/s/sqrt(Hz), a 1 cm walk in a second under 5 mm of noise, is won
+// by damped velocity at T = 0.3 s, q T ~ 0.01, in about 1 draw in 10; constant velocity at 1 m/s
+// by damped velocity at T = 3 s in 1 in 20: those neighbours predict almost alike within the
+// memory.) Over 10 seeds x 3 axes the drawing model wins at least 29 of the 30 draws (on 40
+// seeds each it won 120, 120 and 119 of 120) and holds the largest mean weight.
+TEST(MotionModelBank, TheModelThatDrewTheDataWins) {
+  struct Case {
+    AxisMotionModel model;
+    kalman::Vector<2> start;
+  };
+  const std::vector<Case> cases = {
+      {{MotionModel::kConstantPosition, 0.1, 1.0, 0.0}, {0.0, 0.0}},
+      {{MotionModel::kConstantVelocity, 0.3, 1.0, 0.0}, {0.0, 2.0}},
+      {{MotionModel::kDampedVelocity, 3.0, 0.3, 0.0}, {0.0, 1.0}},
+  };
+  for (const Case& c : cases) {
+    int wins = 0;
+    std::array<double, kMotionModelCount> mean_weight{};
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+      const Drawn d = draw(on_every_axis(c.model), {c.start, c.start, c.start}, 0.005, 90, seed);
+      for (int axis = 0; axis < 3; ++axis) {
+        wins += winner(d.bank, axis) == c.model.model;
+        for (int m = 0; m < kMotionModelCount; ++m)
+          mean_weight[m] += d.bank.model_weight(axis, static_cast<MotionModel>(m)) / 30.0;
+      }
+    }
+    EXPECT_GE(wins, 29) << model_name(c.model.model);
+    const auto best = std::max_element(mean_weight.begin(), mean_weight.end());
+    EXPECT_EQ(best - mean_weight.begin(), static_cast<int>(c.model.model))
+        << model_name(c.model.model) << " " << *best;
+  }
+}
+
+// A throw along z (up 3 m/s, 0.5 m/s sideways), 2 mm noise, 0.8 s of flight: ballistic wins z.
+TEST(MotionModelBank, BallisticWinsAThrow) {
+  const AxisMotionModel flight{MotionModel::kBallistic, 0.03, 1.0, -9.81};
+  const AxisMotionModel sideways{MotionModel::kConstantVelocity, 0.03, 1.0, 0.0};
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Drawn d = draw(
+        {sideways, sideways, flight},
+        {kalman::Vector<2>(0.0, 0.5), kalman::Vector<2>(0.0, 0.0), kalman::Vector<2>(1.0, 3.0)},
+        0.002, 24, seed);
+    EXPECT_EQ(winner(d.bank, 2), MotionModel::kBallistic) << seed;
+    EXPECT_GT(d.bank.model_weight(2, MotionModel::kBallistic), 0.9) << seed;
+  }
+}
+
+// A still object measured with 2 mm noise for 3 s: constant position wins every axis.
+TEST(MotionModelBank, ConstantPositionWinsAStillObject) {
+  const AxisMotionModel still{MotionModel::kConstantPosition, 0.0, 1.0, 0.0};
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const Drawn d = draw(on_every_axis(still), at_rest(), 0.002, 90, seed);
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_EQ(winner(d.bank, axis), MotionModel::kConstantPosition)
+          << "seed " << seed << " axis " << axis;
+  }
+}
+
+// Calibration: 600 tracks drawn from constant velocity at 0.3 m/s^2/sqrt(Hz) (a member), the
+// initial velocity from the bank's prior N(0, 1 m/s), 2 s at 30 Hz with 1 cm noise; then the true
+// position h s later against the mixture's mean and variance. Each normalised squared error is
+// about chi-square with 1 degree of freedom (variance 2), so the mean of 3 x 600 has a standard
+// deviation of sqrt(2 / 1800) = 0.033: 15% is 4.5 of them.
+TEST(MotionModelBank, PredictiveNeesIsCalibrated) {
+  const AxisMotionModel model{MotionModel::kConstantVelocity, 0.3, 1.0, 0.0};
+  constexpr int kDraws = 600;
+  for (const double horizon : {0.3, 1.0}) {
+    double sum = 0.0;
+    int count = 0;
+    for (int n = 0; n < kDraws; ++n) {
+      Random start(1000 + static_cast<std::uint64_t>(n));
+      std::array<kalman::Vector<2>, 3> x0;
+      for (auto& x : x0) x = kalman::Vector<2>(0.0, start.normal());
+      Drawn d = draw(on_every_axis(model), x0, 0.01, 60, 5000 + static_cast<std::uint64_t>(n));
+      const BankPrediction prediction = d.bank.predict(horizon);
+      for (int axis = 0; axis < 3; ++axis) {
+        advance(model, horizon, d.truth[axis], start);
+        const double error = d.truth[axis][0] - prediction.axes[axis].mean();
+        sum += error * error / prediction.axes[axis].variance();
+        ++count;
+      }
+    }
+    const double mean_nees = sum / count;
+    EXPECT_NEAR(mean_nees, 1.0, 0.15) << "horizon " << horizon;
+  }
+}
+
+// Weights sum to 1 after every update; a 10 s gap and a 5 m outlier leave every weight, mean and
+// variance finite, with weights still summing to 1 and none below the floor.
+TEST(MotionModelBank, GapsAndOutliersLeaveEverythingFinite) {
+  MotionModelBank bank;
+  Random random(3);
+  double t = 0.0;
+  const auto check = [&](const char* when) {
+    const BankPrediction p = bank.predict(0.5);
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_NEAR(weight_sum(bank, axis), 1.0, 1e-12) << when;
+      for (const double w : bank.weights(axis)) {
+        EXPECT_TRUE(std::isfinite(w)) << when;
+        EXPECT_GE(w, 0.99 * kBankWeightFloor) << when;
+      }
+      for (const MemberPrediction& m : p.axes[axis].members) {
+        EXPECT_TRUE(std::isfinite(m.mean) && std::isfinite(m.variance)) << when;
+        EXPECT_GT(m.variance, 0.0) << when;
+      }
+    }
+    EXPECT_TRUE(p.mean().allFinite() && p.variance().allFinite()) << when;
+  };
+  for (int k = 0; k < 30; ++k, t += 1.0 / kRate) {
+    bank.update(
+        t, Eigen::Vector3d(0.5 * t, 0.0, 1.0) + 0.01 * random.normal() * Eigen::Vector3d::Ones());
+    check("tracking");
+  }
+  t += 10.0;
+  bank.update(t, Eigen::Vector3d(5.5, 0.0, 1.0));
+  check("after the gap");
+  bank.update(t + 1.0 / kRate, Eigen::Vector3d(5.5, 5.0, -4.0));
+  check("after the outlier");
+  bank.update(t + 2.0 / kRate, Eigen::Vector3d(5.5, 0.0, 1.0));
+  check("after the outlier's next frame");
+}
+
+// Every member keeps at least the floor: after an outlier that only the widest member could
+// explain, the others are floored at 1e-12, not zero, and recover within the memory.
+TEST(MotionModelBank, NoMemberDiesForGood) {
+  MotionModelBank bank;
+  for (int k = 0; k < 60; ++k) bank.update(k / kRate, Eigen::Vector3d::Zero());
+  const double still_before = bank.model_weight(0, MotionModel::kConstantPosition);
+  bank.update(60 / kRate, Eigen::Vector3d(2.0, 0.0, 0.0));
+  for (const double w : bank.weights(0)) EXPECT_GE(w, 0.99 * kBankWeightFloor);
+  for (int k = 61; k < 200; ++k) bank.update(k / kRate, Eigen::Vector3d(2.0, 0.0, 0.0));
+  EXPECT_GT(still_before, 0.5);
+  EXPECT_GT(bank.model_weight(0, MotionModel::kConstantPosition), 0.5);
+}
+
+// sample_member maps uniform draws to members in proportion to their weights: a stratified grid
+// of N draws falls on member j round(N w_j) times, give or take one.
+TEST(MotionModelBank, SampleMemberFollowsTheWeights) {
+  const AxisMotionModel model{MotionModel::kConstantVelocity, 0.3, 1.0, 0.0};
+  const Drawn d =
+      draw(on_every_axis(model),
+           {kalman::Vector<2>(0.0, 1.0), kalman::Vector<2>::Zero(), kalman::Vector<2>::Zero()},
+           0.005, 20, 11);
+  constexpr int kGrid = 100000;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<int> counts(d.bank.members(axis).size(), 0);
+    for (int k = 0; k < kGrid; ++k) ++counts[d.bank.sample_member(axis, (k + 0.5) / kGrid)];
+    for (std::size_t j = 0; j < counts.size(); ++j)
+      EXPECT_NEAR(counts[j], kGrid * d.bank.weights(axis)[j], 1.0) << axis << " " << j;
+  }
+}
+
+// predict() lists member_prediction() for every member; horizon 0 is each filter's position; a
+// member's prediction of a noise-free line is the line.
+TEST(MotionModelBank, PredictListsEveryMembersPrediction) {
+  MotionModelBank bank;
+  for (int k = 0; k < 60; ++k) {
+    const double t = k / kRate;
+    bank.update(t, Eigen::Vector3d(1.0 + 2.0 * t, -0.5 * t, 0.0));
+  }
+  const double t_last = 59 / kRate;
+  const BankPrediction p = bank.predict(0.5);
+  for (int axis = 0; axis < 3; ++axis) {
+    ASSERT_EQ(p.axes[axis].members.size(), bank.members(axis).size());
+    for (std::size_t j = 0; j < bank.members(axis).size(); ++j) {
+      const MemberPrediction m = bank.member_prediction(axis, j, 0.5);
+      EXPECT_EQ(p.axes[axis].members[j].model, m.model);
+      EXPECT_EQ(p.axes[axis].members[j].mean, m.mean);
+      EXPECT_EQ(p.axes[axis].members[j].variance, m.variance);
+      EXPECT_EQ(p.axes[axis].members[j].weight, bank.weights(axis)[j]);
+      EXPECT_EQ(m.model, model_name(bank.members(axis)[j].model));
+    }
+  }
+  // Constant velocity at its lowest intensity extrapolates the line to within millimetres.
+  const MemberPrediction cv = bank.member_prediction(0, 3, 0.5);
+  ASSERT_EQ(bank.members(0)[3].model, MotionModel::kConstantVelocity);
+  EXPECT_NEAR(cv.mean, 1.0 + 2.0 * (t_last + 0.5), 0.005);
+  EXPECT_NEAR(p.axes[0].mean(), 1.0 + 2.0 * (t_last + 0.5), 0.02);
+  EXPECT_GT(bank.model_weight(0, MotionModel::kConstantVelocity) +
+                bank.model_weight(0, MotionModel::kDampedVelocity),
+            0.99);
+}
+
+// The first position starts every member from the prior: position measured (variance R),
+// velocity 0 with variance sigma_v^2 (constant position's pinned), so a member's prediction h
+// ahead has the variance R + sigma_v^2 T(h)^2 + Q_pp(h), T(h) = F(h)_pv; the weights are the
+// priors.
+TEST(MotionModelBank, TheFirstPositionStartsFromThePrior) {
+  MotionModelBankOptions options;
+  options.observation_noise = 0.02;
+  options.initial_velocity_std = 0.7;
+  MotionModelBank bank(options);
+  bank.update(2.0, Eigen::Vector3d(1.0, 2.0, 3.0));
+  const double r = 0.02 * 0.02, v = 0.7 * 0.7, h = 0.4;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (std::size_t j = 0; j < bank.members(axis).size(); ++j) {
+      const AxisMotionModel& model = bank.members(axis)[j];
+      const AxisMotionStep step = model.step(h);
+      const double pinned = model.model == MotionModel::kConstantPosition ? 0.0 : 1.0;
+      const double f = step.transition(0, 1);
+      const MemberPrediction m = bank.member_prediction(axis, j, h);
+      EXPECT_NEAR(m.mean, 1.0 + axis + step.offset[0], 1e-12);
+      EXPECT_NEAR(m.variance, r + pinned * v * f * f + step.process_noise(0, 0), 1e-12);
+    }
+    EXPECT_NEAR(bank.model_weight(axis, MotionModel::kConstantVelocity),
+                axis == 2 ? 0.25 : 1.0 / 3.0, 1e-12);
+  }
+}
+
+TEST(MotionModelBank, RejectsMisuse) {
+  MotionModelBank bank;
+  EXPECT_THROW(bank.predict(0.1), std::logic_error);
+  bank.update(1.0, Eigen::Vector3d::Zero());
+  EXPECT_THROW(bank.update(0.5, Eigen::Vector3d::Zero()), std::invalid_argument);
+  EXPECT_THROW(bank.predict(-0.1), std::invalid_argument);
+  EXPECT_THROW(bank.member_prediction(3, 0, 0.1), std::out_of_range);
+  EXPECT_THROW(bank.member_prediction(0, 99, 0.1), std::out_of_range);
+  MotionModelBankOptions options;
+  options.memory = -1.0;
+  EXPECT_THROW(MotionModelBank{options}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace opf
