@@ -21,6 +21,13 @@ std::string_view model_name(MotionModel model) {
   return "unknown";
 }
 
+AxisMotionStep position_velocity_block(const kalman::LinearModel<3>& model) {
+  AxisMotionStep step;
+  step.transition = model.transition.topLeftCorner<2, 2>();
+  step.process_noise = model.process_noise.topLeftCorner<2, 2>();
+  return step;
+}
+
 AxisMotionStep AxisMotionModel::step(double dt) const {
   switch (model) {
     case MotionModel::kConstantPosition:

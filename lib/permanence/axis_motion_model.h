@@ -24,6 +24,10 @@ struct AxisMotionStep {
   kalman::Vector<2> offset = kalman::Vector<2>::Zero();
 };
 
+/// A step of the Kalman core's per-axis model over (p, v, a) (core/linear_kalman.h), restricted
+/// to (p, v): the models they share, with b = 0.
+AxisMotionStep position_velocity_block(const kalman::LinearModel<3>& model);
+
 /// The four models, in the order a bank lists them.
 enum class MotionModel { kConstantPosition, kConstantVelocity, kDampedVelocity, kBallistic };
 inline constexpr int kMotionModelCount = 4;
