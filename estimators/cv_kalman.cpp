@@ -17,7 +17,9 @@ kalman::Matrix<3, 6> position_observation() {
 
 }  // namespace
 
-ConstantVelocityKalman::ConstantVelocityKalman(const CvKalmanOptions& options) : options_(options) {
+ConstantVelocityKalman::ConstantVelocityKalman(const CvKalmanOptions& options)
+    : options_(options),
+      rotation_(RotationModel::kConstantAngularVelocity, options.angular_acceleration_noise) {
   check_options(options_, "cvkf");
 }
 
@@ -51,7 +53,7 @@ void ConstantVelocityKalman::predict(double dt) {
   kalman::predict(translation_, translation_covariance_,
                   kalman::constant_rate_transition(Eigen::Matrix3d::Identity(), dt),
                   kalman::white_noise_acceleration(options_.acceleration_noise, dt));
-  rotation_.predict(dt, options_.angular_acceleration_noise);
+  rotation_.predict(dt);
 }
 
 void ConstantVelocityKalman::update(const mrpt::poses::CPose3D& measurement) {

@@ -5,7 +5,7 @@
 #include "opf/core/estimator.h"
 #include "opf/core/linear_kalman.h"
 #include "opf/estimators/cv_kalman_options.h"
-#include "opf/estimators/orientation_kalman.h"
+#include "opf/permanence/tangent_rotation_filter.h"
 
 namespace opf {
 
@@ -36,7 +36,7 @@ class ConstantVelocityKalman final : public Estimator {
 
   kalman::Vector<6> translation_ = kalman::Vector<6>::Zero();  ///< (position, velocity)
   kalman::Matrix<6> translation_covariance_ = kalman::Matrix<6>::Identity();
-  OrientationKalman rotation_;
+  TangentRotationFilter rotation_;  ///< constant angular velocity
 };
 
 }  // namespace opf

@@ -13,7 +13,9 @@ const kalman::Matrix<1, 3> kPositionObservation(1.0, 0.0, 0.0);
 
 }  // namespace
 
-ImmKalman::ImmKalman(const ImmOptions& options) : options_(options) {
+ImmKalman::ImmKalman(const ImmOptions& options)
+    : options_(options),
+      rotation_(RotationModel::kConstantAngularVelocity, options.angular_acceleration_noise) {
   check_options(options_, "imm");
 }
 
@@ -44,7 +46,7 @@ Estimate ImmKalman::step(double t, const mrpt::poses::CPose3D* measurement,
   const double dt = time_step("ImmKalman", t_, t);
   t_ = t;
   const double sigma_r = options_.observation_noise_rotation;
-  rotation_.predict(dt, options_.angular_acceleration_noise);
+  rotation_.predict(dt);
   if (measurement == nullptr) {
     predict_and_update(dt, nullptr);
     return make_estimate(EstimateMode::kPredicted);

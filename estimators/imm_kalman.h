@@ -8,7 +8,7 @@
 #include "opf/core/estimator.h"
 #include "opf/core/linear_kalman.h"
 #include "opf/estimators/imm_options.h"
-#include "opf/estimators/orientation_kalman.h"
+#include "opf/permanence/tangent_rotation_filter.h"
 
 #include <array>
 
@@ -67,7 +67,7 @@ class ImmKalman final : public Estimator {
   std::array<Bank, 3> banks_;  ///< per axis x, y, z
   Eigen::Matrix3d probabilities_ = Eigen::Matrix3d::Constant(1.0 / kModels);
   std::array<Gaussian, 3> combined_;  ///< per axis
-  OrientationKalman rotation_;
+  TangentRotationFilter rotation_;    ///< constant angular velocity, as cvkf's
 };
 
 }  // namespace opf

@@ -20,6 +20,7 @@
 
 #include "opf/core/enum_names.h"
 #include "opf/core/option_schema.h"
+#include "opf/permanence/rotation_model.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -44,7 +45,6 @@ enum class TranslationModel {
   kConstantAcceleration,
   kBallistic
 };
-enum class RotationModel { kConstantOrientation, kConstantAngularVelocity };
 /// The words of the `model` column of estimate files.
 inline constexpr EnumNames<TranslationModel, 4> kTranslationModelNames = {
     {{TranslationModel::kConstantPosition, "cp"},

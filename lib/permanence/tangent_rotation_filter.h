@@ -15,6 +15,7 @@
 // Kirubarajan 2001, ch. 6, per tangent axis).
 
 #include "opf/core/linear_kalman.h"
+#include "opf/permanence/rotation_model.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -22,8 +23,6 @@
 #include <string_view>
 
 namespace opf {
-
-enum class RotationModel { kConstantOrientation, kConstantAngularVelocity };
 
 /// "constant_orientation", "constant_angular_velocity".
 std::string_view rotation_model_name(RotationModel model);
@@ -55,6 +54,8 @@ class TangentRotationFilter {
   double intensity() const { return intensity_; }
   const Eigen::Quaterniond& orientation() const { return orientation_; }
   const Eigen::Vector3d& angular_velocity() const { return angular_velocity_; }
+  /// Over the error state (dtheta, dw).
+  const kalman::Matrix<6>& covariance() const { return covariance_; }
 
  private:
   /// F and Q over dt at the current rate.
