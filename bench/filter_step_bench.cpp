@@ -79,9 +79,8 @@ BENCHMARK_CAPTURE(BM_EstimatorStep, opf, std::string("opf"))->Apply(particle_cou
 BENCHMARK_CAPTURE(BM_EstimatorStep, pf, std::string("pf"))->Apply(particle_counts);
 BENCHMARK_CAPTURE(BM_EstimatorStep, oapf, std::string("oapf"))->Apply(particle_counts);
 
-// An OPF step while the object is hidden: the particles moved by the prediction's change and
-// spread by the growth of its covariance (until Q~ reaches its cap). The model choice happens
-// once at occlusion onset, before the timed loop (see motion_prediction_bench.cpp for its cost).
+// An OPF step while the object is hidden: every particle moved by its bank member's predicted
+// motion and spread by the growth of its variance (permanence/mixture_particle_motion.h).
 void BM_OpfHiddenStep(benchmark::State& state) {
   OpfOptions options;
   options.particles.translation_particles = options.particles.rotation_particles =

@@ -5,7 +5,6 @@
 #include "opf/core/so3.h"
 #include "opf/permanence/motion_classifier.h"
 #include "opf/permanence/occluder_selection.h"
-#include "opf/permanence/second_difference_noise.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,11 +24,28 @@ Eigen::Matrix3d translation_covariance(const Estimate& estimate) {
   return estimate.pose.cov.asEigen().topLeftCorner<3, 3>();
 }
 
+// The detector's jitter is read over the last 2 s of measurements: tens of samples at video
+// rates, recent enough to follow a detector whose noise changes with the view.
+constexpr double kDetectorNoiseWindow = 2.0;
+
+// Each gap's member draws come from their own stream of the filter's seed.
+constexpr std::uint64_t kMixtureStreams = 1000;
+
+// The banks' validation gate: the chi-square 99.9% quantile with 3 degrees of freedom, on the
+// position's squared Mahalanobis distance from the mixture's one-step prediction.
+constexpr double kBankGateChiSquare = 16.266;
+
 }  // namespace
 
 void validate(const OpfOptions& options) {
   validate(options.particles);
   check_options(options, "OPF");
+  const OptionChecker fixed("OPF");  // the constants that are not settings
+  fixed.number("history_reset_gap", options.history_reset_gap,
+               non_negative("a number of seconds >= 0"));
+  fixed.number("occluder.departure_margin", options.occluder.departure_margin,
+               non_negative("metres >= 0"));
+  fixed.number("occluder.gate_sigmas", options.occluder.gate_sigmas, non_negative());
   if (options.occluder.plane == OccluderPlane::kLineOfSight && !options.occluder.camera_position)
     throw std::invalid_argument(
         "OPF option occluder.plane is line_of_sight but no camera position is given "
@@ -38,12 +54,14 @@ void validate(const OpfOptions& options) {
 
 ObjectPermanenceFilter::ObjectPermanenceFilter(const OpfOptions& options, std::string object,
                                                std::uint64_t seed)
-    : options_(options),
+    : options_((validate(options), options)),  // before the banks check their share
       object_(std::move(object)),
       seed_(seed),
-      detector_jitter_(options.dynamics.selection.history_window) {
-  validate(options_);
-}
+      detector_jitter_(kDetectorNoiseWindow),
+      translation_bank_(translation_bank_options(options.dynamics,
+                                                 options.particles.observation_noise_translation)),
+      rotation_bank_(
+          rotation_bank_options(options.dynamics, options.particles.observation_noise_rotation)) {}
 
 Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D& first) {
   hypotheses_.clear();
@@ -52,8 +70,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
   hypotheses_[0].filter.initialise(translation_of(first), orientation_of(first));
   history_.clear();
   detector_jitter_.clear();
-  displacement_spread_.clear();
-  confirmed_motion_.reset();
+  restart_banks();
   t_ = t;
   hidden_ = false;
   initialised_ = true;
@@ -66,29 +83,51 @@ void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
                                       const Estimate& estimate) {
   detector_jitter_.add(t, position, orientation);
-  displacement_spread_.add(t, position);
-  history_.push_back({t, position, orientation, translation_of(estimate.pose.mean),
-                      orientation_of(estimate.pose.mean)});
-  if (options_.dynamics.predictor == DynamicsPredictor::kPaper) {
-    while (history_.size() > options_.history_length) history_.pop_front();
-  } else {
-    const double window =
-        std::max(options_.dynamics.selection.history_window, options_.velocity_window);
-    while (history_.size() > 2 && t - history_.front().t > window) history_.pop_front();
-  }
+  update_banks(t, position, orientation);
+  history_.push_back({t, translation_of(estimate.pose.mean), orientation_of(estimate.pose.mean)});
+  while (history_.size() > options_.history_length) history_.pop_front();
 }
 
-void ObjectPermanenceFilter::predict_with_recent_velocity(Hypothesis& h, double dt) {
-  const auto velocity = recent_velocity(history_, options_.velocity_window);
-  if (!velocity) {
-    h.filter.predict(dt);
-    return;
+void ObjectPermanenceFilter::restart_banks() {
+  translation_bank_ = MotionModelBank(translation_bank_.options());
+  rotation_bank_ = RotationModelBank(rotation_bank_.options());
+  held_.reset();
+}
+
+bool ObjectPermanenceFilter::bank_expects(double t, const Eigen::Vector3d& position) const {
+  if (!translation_bank_.initialised()) return true;
+  const BankPrediction p = translation_bank_.predict(t - translation_bank_.last_time());
+  const double r = translation_bank_.options().observation_noise;
+  const Eigen::Vector3d innovation = position - p.mean();
+  const Eigen::Vector3d variance = p.variance().array() + r * r;
+  return innovation.cwiseAbs2().cwiseQuotient(variance).sum() <= kBankGateChiSquare;
+}
+
+void ObjectPermanenceFilter::update_banks(double t, const Eigen::Vector3d& position,
+                                          const Eigen::Quaterniond& orientation) {
+  // A validation gate with two-in-a-row confirmation: one measurement the models cannot explain
+  // is held back (a wrong detection must not set the velocity the particles drift by); when the
+  // next one is outside too, both are taken (the object moved as no model predicted).
+  if (!bank_expects(t, position)) {
+    if (!held_) {
+      held_ = HeldMeasurement{t, position, orientation};
+      return;
+    }
+    translation_bank_.update(held_->t, held_->position);
+    rotation_bank_.update(held_->t, held_->orientation);
   }
+  held_.reset();
+  translation_bank_.update(t, position);
+  rotation_bank_.update(t, orientation);
+}
+
+void ObjectPermanenceFilter::predict_with_bank_velocity(Hypothesis& h, double dt) {
   // The body-frame angular velocity turns the estimate's orientation; as a world rotation it
   // turns every particle about the same axis (they lie within a few degrees of the estimate).
-  const Eigen::Quaterniond q = history_.back().estimated_orientation.normalized();
-  const Eigen::Quaterniond turn = q * so3::exp(velocity->angular * dt) * q.conjugate();
-  h.filter.predict(dt, velocity->linear * dt, turn.normalized());
+  const Eigen::Quaterniond q = history_.back().orientation.normalized();
+  const Eigen::Quaterniond turn =
+      q * so3::exp(rotation_bank_.angular_velocity() * dt) * q.conjugate();
+  h.filter.predict(dt, translation_bank_.velocity() * dt, turn.normalized());
 }
 
 // The detector's jitter is never taken wider than configured (a moving object's differences
@@ -105,14 +144,6 @@ void ObjectPermanenceFilter::adapt_rotation_noise(Hypothesis& h) {
       std::clamp(*sigma, kJitterFloorShare * configured, configured));
 }
 
-void ObjectPermanenceFilter::adapt_translation_noise(Hypothesis& h) {
-  const auto sigmas = detector_jitter_.translation_sigmas();
-  if (!sigmas) return;
-  const double configured = options_.particles.observation_noise_translation;
-  h.filter.set_translation_likelihood_noise(
-      sigmas->cwiseMax(kJitterFloorShare * configured).cwiseMin(configured));
-}
-
 Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* measurement,
                                       const EnsembleView& ensemble) {
   if (!initialised_) throw std::logic_error("ObjectPermanenceFilter::step before initialise");
@@ -126,11 +157,11 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
   t_ = t;
 
   if (measurement) {
-    // The object was seen in the previous frame too: its recent velocity carries the particles.
-    const bool drifts = options_.velocity_drift && !hidden_;
+    // The object was seen in the previous frame too: the banks' velocity carries the particles.
+    const bool drifts = options_.velocity_drift && !hidden_ && !history_.empty();
     for (std::size_t i = 0; i < hypotheses_.size(); ++i) {
       if (i == 0 && drifts)
-        predict_with_recent_velocity(hypotheses_[0], dt);
+        predict_with_bank_velocity(hypotheses_[0], dt);
       else
         hypotheses_[i].filter.predict(dt);
     }
@@ -140,22 +171,14 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     Hypothesis& h = hypotheses_[0];
     const Source hidden_by = h.source;
     if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
-    if (options_.adaptive_translation_noise) adapt_translation_noise(h);
     const bool lost = h.filter.update_with_measurement(
         position, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
-    if (h.filter.translation_was_reset())
-      confirmed_motion_.reset();
-    else if (h.prediction) {
-      confirmed_motion_ = std::move(h.prediction);
-      reappeared_at_ = t;
-      reappeared_where_ = position;
-    }
     const ResampleReport report = h.filter.normalise_and_resample();
     h.recovery = {.sensor_reset = lost, .weights_underflow = report.weights_underflow()};
     h.inflation.reset();
     h.source = Source::kMeasurement;
     h.trajectory.reset();
-    h.prediction.reset();
+    h.mixture.reset();
     h.prediction_trace = 0.0;
     h.occluder.clear();
     h.last_carrier_position.reset();
@@ -170,6 +193,8 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     if (h.filter.translation_was_reset() || (hidden_ && hidden_by != Source::kTrajectory &&
                                              t - hidden_since_ > options_.history_reset_gap))
       history_.clear();
+    // Carried by another object, it moved as nothing in its own history did.
+    if (hidden_ && hidden_by == Source::kOccluder) restart_banks();
     hidden_ = false;
     // The history sample holds the estimate itself: its moments are computed once per step.
     const Estimate estimate = make_estimate(h, 0);
@@ -180,11 +205,17 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
   if (!hidden_) {
     hidden_ = true;
     hidden_since_ = last_seen;
+    // A held measurement is the last word before the gap: no next one will judge it.
+    if (held_) {
+      translation_bank_.update(held_->t, held_->position);
+      rotation_bank_.update(held_->t, held_->orientation);
+      held_.reset();
+    }
     start_occlusion(last_seen, ensemble);
   }
   for (Hypothesis& h : hypotheses_) {
-    if (h.prediction) {
-      follow_prediction(h, last_seen, t);
+    if (h.mixture) {
+      follow_mixture(h, last_seen, t);
       continue;
     }
     h.filter.predict(dt);
@@ -214,35 +245,62 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
   hypotheses_.erase(hypotheses_.begin() + 1, hypotheses_.end());
   Hypothesis& h = hypotheses_[0];
   h.source = Source::kNone;
+  const bool bank = options_.dynamics.predictor == DynamicsPredictor::kBank;
+  // A moving object goes to the dynamics module, a static one to the occluder module (paper
+  // Sec. III-B); with the bank, a static object no occluder hides is predicted by the bank too
+  // (whose constant-position members then carry the weight).
+  if (options_.modules.dynamics && history_moves()) {
+    if (bank) {
+      start_mixture(h);
+      return;
+    }
+    if (start_trajectory(h, last_seen)) return;
+  }
+  if (options_.modules.occluder && start_occluders(ensemble)) return;
+  if (options_.modules.dynamics && bank) start_mixture(h);
+}
 
-  if (options_.modules.dynamics && options_.dynamics.predictor == DynamicsPredictor::kSelected &&
-      start_dynamics(h))
-    return;
-  const std::vector<TrajectorySample> window = estimate_history();
+bool ObjectPermanenceFilter::history_moves() const {
+  const std::vector<TrajectorySample> window(history_.begin(), history_.end());
+  if (window.size() < 2) return false;
+  if (options_.motion.test == MotionTest::kMaxPairwise)
+    return classify_motion(window, options_.motion) == Motion::kMoving;
+  try {
+    const TrajectoryModel line = fit_trajectory(window, options_.trajectory);
+    return classify_fitted_motion(line, window.front().t, window.back().t, options_.motion) ==
+           Motion::kMoving;
+  } catch (const std::exception&) {
+    return false;  // a degenerate window: treat the object as static
+  }
+}
+
+bool ObjectPermanenceFilter::start_trajectory(Hypothesis& h, double last_seen) {
+  const std::vector<TrajectorySample> window(history_.begin(), history_.end());
   const int needed =
       std::max(options_.trajectory.translation_order, options_.trajectory.rotation_order) + 1;
-  if (options_.modules.dynamics && options_.dynamics.predictor == DynamicsPredictor::kPaper &&
-      static_cast<int>(window.size()) >= std::max(needed, 2)) {
-    const bool pairwise = options_.motion.test == MotionTest::kMaxPairwise;
-    if (!pairwise || classify_motion(window, options_.motion) == Motion::kMoving) {
-      try {
-        TrajectoryModel model = fit_trajectory(window, options_.trajectory);
-        if (pairwise || classify_fitted_motion(model, window.front().t, window.back().t,
-                                               options_.motion) == Motion::kMoving) {
-          h.trajectory = std::move(model);
-          h.source = Source::kTrajectory;
-          h.last_carrier_position = h.trajectory->position(last_seen);
-          h.last_carrier_orientation = h.trajectory->orientation(last_seen);
-          return;
-        }
-      } catch (const std::exception&) {
-        // A degenerate window cannot be fitted: treat the object as static and let the occluder
-        // module try.
-      }
-    }
+  if (static_cast<int>(window.size()) < std::max(needed, 2)) return false;
+  try {
+    h.trajectory = fit_trajectory(window, options_.trajectory);
+  } catch (const std::exception&) {
+    // A degenerate window cannot be fitted: treat the object as static and let the occluder
+    // module try.
+    return false;
   }
-  if (!options_.modules.occluder) return;
+  h.source = Source::kTrajectory;
+  h.last_carrier_position = h.trajectory->position(last_seen);
+  h.last_carrier_orientation = h.trajectory->orientation(last_seen);
+  return true;
+}
 
+void ObjectPermanenceFilter::start_mixture(Hypothesis& h) {
+  h.mixture.emplace(derive_seed(seed_, kMixtureStreams + ++occlusions_));
+  h.mixture->start(translation_bank_, rotation_bank_, h.filter);
+  h.prediction_trace = 0.0;
+  h.source = Source::kTrajectory;
+}
+
+bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
+  Hypothesis& h = hypotheses_[0];
   std::vector<OccluderCandidate> candidates;
   std::vector<const Estimate*> candidate_estimates;
   for (const Estimate& e : ensemble.previous_estimates) {
@@ -253,7 +311,7 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
   const TranslationMoments own = h.filter.translation_moments();
   const OccluderChoice choice =
       choose_occluders(own.mean, own.covariance, candidates, options_.occluder);
-  if (!choice.nearest) return;
+  if (!choice.nearest) return false;
 
   h.position_at_onset = own.mean;
   h.orientation_at_onset = h.filter.rotation_moments().mean;
@@ -269,144 +327,20 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
     follow_occluder(h, candidates[*choice.nearest].object, *candidate_estimates[*choice.nearest],
                     ensemble);
   }
+  return true;
 }
 
-std::vector<TrajectorySample> ObjectPermanenceFilter::estimate_history() const {
-  std::vector<TrajectorySample> window;
-  window.reserve(history_.size());
-  for (const MotionSample& sample : history_)
-    window.push_back({sample.t, sample.estimated_position, sample.estimated_orientation});
-  return window;
-}
-
-namespace {
-
-// Sets the translation particles' spread about their mean, per world axis, to `scale` times what
-// the history shows of the estimate's error where the cloud is wider: the mean squared distance
-// between the estimates and the measurements, plus the detector's noise read from the
-// measurements (second_difference_noise.h). With e the estimate's error and n the noise,
-// E[e^2] = E[(e - n)^2] - sigma^2 + 2 E[e n] <= E[(e - n)^2] + sigma^2 whenever the estimate does
-// not amplify the noise (E[e n] <= sigma^2): a bound however closely it follows the measurements.
-// With `widen`, also where the cloud is narrower and the detector noisier than the configured
-// observation noise (a walker's depth read from her size): the cloud, the posterior under that
-// noise, then claims more than any detection of the object when it reappears can show. Where the
-// detector is finer than configured, the cloud is already cautious and stays as it is.
-void spread_to_measured_discrepancy(PoseParticleFilter& filter,
-                                    std::span<const MotionSample> history, double scale,
-                                    bool widen) {
-  if (history.size() < 3) return;
-  Eigen::Matrix3Xd measured(3, static_cast<Eigen::Index>(history.size()));
-  Eigen::Vector3d squares = Eigen::Vector3d::Zero();
-  for (std::size_t k = 0; k < history.size(); ++k) {
-    measured.col(static_cast<Eigen::Index>(k)) = history[k].measured_position;
-    squares += (history[k].estimated_position - history[k].measured_position).cwiseAbs2();
-  }
-  const Eigen::Vector3d noise = noise_variance_per_axis(measured);
-  const Eigen::Vector3d target =
-      scale * scale * (squares / static_cast<double>(history.size()) + noise);
-  const double configured = filter.options().observation_noise_translation;
-  const TranslationMoments cloud = filter.translation_moments();
-  auto& states = filter.translation().states;
-  for (int axis = 0; axis < 3; ++axis) {
-    const double variance = cloud.covariance(axis, axis);
-    const bool widens = widen && noise(axis) > configured * configured;
-    // A collapsed axis (every particle alike) has no shape to widen.
-    if (!(variance > 0.0) || (!widens && !(variance > target(axis)))) continue;
-    const double factor = std::sqrt(target(axis) / variance);
-    states.row(axis) =
-        (cloud.mean(axis) + factor * (states.row(axis).array() - cloud.mean(axis))).matrix();
-  }
-}
-
-}  // namespace
-
-bool ObjectPermanenceFilter::start_dynamics(Hypothesis& h) {
-  // Seen again only briefly since the dynamics module last carried it, where that prediction
-  // said: the motion goes on. (A glimpse of a few frames would read as static, handing a moving
-  // object to its occluder; fitted together with the frames before the gap, a model through a
-  // hole of seconds runs wild.) Brief: since the history's last gap longer than
-  // `velocity_window`, under four samples or under `velocity_window` of time.
-  std::size_t first = history_.empty() ? 0 : history_.size() - 1;
-  while (first > 0 && history_[first].t - history_[first - 1].t <= options_.velocity_window)
-    --first;
-  const bool brief = history_.size() - first < 4 ||
-                     history_.back().t - history_[first].t < options_.velocity_window;
-  const auto follow = [&](MotionPrediction prediction) {
-    if (options_.dynamics.selection.spread_beyond_validation)
-      prediction.track_spread = displacement_spread_.profile();
-    h.prediction = std::move(prediction);
-    h.prediction_trace = 0.0;
-    h.source = Source::kTrajectory;
-    return true;
-  };
-  const auto continue_from_last = [&](const MotionPrediction& confirmed) {
-    const MotionSample& last = history_.back();
-    return follow(
-        continued(confirmed, last.t, last.estimated_position, last.estimated_orientation));
-  };
-  if (brief && confirmed_motion_ && !history_.empty())
-    return continue_from_last(*confirmed_motion_);
-  // The motion the last gap confirmed stays the fallback while the history cannot be fitted
-  // anew: seen again for a few frames after a long gap, the history is those frames and the
-  // ones before the gap, with no second of consecutive frames to validate a model on.
-  const std::optional<MotionPrediction> fallback = std::move(confirmed_motion_);
-  confirmed_motion_.reset();
-  // Moving or static is decided as with the paper's predictor (the motion test over the
-  // history), so a static object still goes to the occluder module.
-  const std::vector<TrajectorySample> window = estimate_history();
-  if (window.size() < 2) return false;
-  if (options_.motion.test == MotionTest::kMaxPairwise) {
-    if (classify_motion(window, options_.motion) != Motion::kMoving) return false;
-  } else {
-    try {
-      const TrajectoryModel line = fit_trajectory(window, options_.trajectory);
-      if (classify_fitted_motion(line, window.front().t, window.back().t, options_.motion) !=
-          Motion::kMoving)
-        return false;
-    } catch (const std::exception&) {
-      return false;  // a degenerate window: treat the object as static
-    }
-  }
-  const std::vector<MotionSample> samples(history_.begin(), history_.end());
-  auto prediction = predict_motion(samples, options_.dynamics.selection);
-  // Seen for longer than a glimpse, the object has had time to change its motion: an axis whose
-  // motion did not bring it nearer where it reappeared than holding still would have holds still
-  // (a walker who turned back during a gap is not carried on the old way through every next one).
-  if (!prediction)
-    return fallback ? continue_from_last(confirmed_by(*fallback, reappeared_at_, reappeared_where_))
-                    : false;
-  if (options_.measured_onset_spread)
-    spread_to_measured_discrepancy(h.filter, samples, options_.dynamics.selection.uncertainty_scale,
-                                   options_.widen_onset_spread);
-  return follow(std::move(*prediction));
-}
-
-void ObjectPermanenceFilter::follow_prediction(Hypothesis& h, double t_previous, double t) {
-  // The particles ARE the prediction: moved by the model's motion since the previous step and
-  // spread by the growth of its covariance, with no virtual measurement pulling them back onto
-  // the model (that would claim the model's own output as evidence and shrink the cloud).
-  const MotionPrediction& p = *h.prediction;
-  const double h0 = t_previous - p.t_last;
-  const double h1 = t - p.t_last;
-  // The spread stops growing where Q~ reaches the uncertainty module's cap, as Q~ itself does.
-  const double q = h.filter.observation_trace(1.0);
-  const double cap = (options_.uncertainty.max_scale - 1.0) * q;
-  const double trace = p.translation_variance(h1).sum() + 3.0 * p.rotation_variance(h1);
-  const bool capped = trace >= cap;
-  // Bounded: after hold_after s, or once capped, the object is held where the prediction left it.
-  if (!capped && h0 < options_.hold_after) {
-    const double until = std::min(h1, options_.hold_after);
-    h.filter.shift(p.position(until) - p.position(h0),
-                   (p.orientation(until) * p.orientation(h0).conjugate()).normalized());
-  }
-  if (!capped) {
-    const Eigen::Vector3d translation_growth =
-        (p.translation_variance(h1) - p.translation_variance(h0)).cwiseMax(0.0);
-    const double rotation_growth = std::max(0.0, p.rotation_variance(h1) - p.rotation_variance(h0));
-    h.filter.diffuse(translation_growth.cwiseSqrt(), std::sqrt(rotation_growth));
-  }
+void ObjectPermanenceFilter::follow_mixture(Hypothesis& h, double t_previous, double t) {
+  // The particles ARE the prediction: moved along the mixture with no virtual measurement
+  // pulling them back onto it (that would claim the model's own output as evidence).
+  const double last = translation_bank_.last_time();
+  const double h1 = t - last;
+  h.mixture->advance(translation_bank_, rotation_bank_, t_previous - last, h1, h.filter);
+  // Q~ = Q plus the prediction's added covariance, capped where the uncertainty module caps it.
+  const double cap = (options_.uncertainty.max_scale - 1.0) * h.filter.observation_trace(1.0);
+  const double trace = MixtureParticleMotion::added_trace(translation_bank_, rotation_bank_, h1);
   h.prediction_trace = std::min(trace, cap);
-  h.recovery = {.trace_capped = capped && options_.modules.uncertainty};
+  h.recovery = {.trace_capped = trace >= cap && options_.modules.uncertainty};
 }
 
 namespace {
@@ -451,7 +385,7 @@ void ObjectPermanenceFilter::follow_occluder(Hypothesis& hypothesis, const std::
   hypothesis.carrier_track.clear();
   // A cover at the object's level (a cup slid over a ball) moves it only by pushing it: it waits
   // for the occluder's departure. One above it (a hand, a lifted tray) is followed from onset.
-  const Eigen::Vector3d up = options_.dynamics.selection.up.normalized();
+  const Eigen::Vector3d up = options_.dynamics.up.normalized();
   const bool level = std::abs(up.dot(reference.position - hypothesis.position_at_onset)) <=
                      options_.occluder.reach;
   const bool wait = options_.occluder.carry_from_departure && level;
@@ -478,7 +412,7 @@ ObjectPermanenceFilter::virtual_measurement(Hypothesis& h, double t, const Ensem
     if (!occluder_estimate && !occluder_detection) return std::nullopt;
     const CarrierPose occluder = carrier_pose(occluder_detection, occluder_estimate,
                                               options_.occluder.orientation_from_estimate);
-    const Eigen::Vector3d up = options_.dynamics.selection.up.normalized();
+    const Eigen::Vector3d up = options_.dynamics.up.normalized();
     if (!h.carrying) {
       // Still closing in over the object: it stays where it was covered, and the carry will
       // start from the occluder's closest approach. Read from its measurements: its filtered
@@ -565,9 +499,9 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
   estimate.object = object_;
   estimate.t = t_;
   estimate.pose = h.filter.estimate();
-  // Q~: the inflated Q of the uncertainty module, or, for the selected predictor, Q plus the
-  // prediction's covariance (the same uncertainty the particles carry).
-  estimate.observation_trace = h.prediction
+  // Q~: the inflated Q of the uncertainty module, or, for the bank, Q plus the prediction's
+  // added covariance (the same uncertainty the particles carry).
+  estimate.observation_trace = h.mixture
                                    ? h.filter.observation_trace(1.0) +
                                          (options_.modules.uncertainty ? h.prediction_trace : 0.0)
                                    : h.filter.observation_trace(h.inflation.scale());
@@ -580,7 +514,8 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
       break;
     case Source::kTrajectory:
       estimate.mode = EstimateMode::kDynamics;
-      if (h.prediction) estimate.motion_model = describe(*h.prediction);
+      if (h.mixture)
+        estimate.motion_model = MixtureParticleMotion::label(translation_bank_, rotation_bank_);
       break;
     case Source::kOccluder:
       estimate.mode = EstimateMode::kOccluder;

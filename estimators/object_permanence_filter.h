@@ -10,7 +10,9 @@
 #include "opf/estimators/opf_options.h"
 #include "opf/particles/pose_particle_filter.h"
 #include "opf/permanence/detector_jitter.h"
-#include "opf/permanence/displacement_spread.h"
+#include "opf/permanence/mixture_particle_motion.h"
+#include "opf/permanence/motion_model_bank.h"
+#include "opf/permanence/rotation_model_bank.h"
 
 #include <cstdint>
 #include <deque>
@@ -41,9 +43,9 @@ class ObjectPermanenceFilter final : public Estimator {
     PoseParticleFilter filter;
     CovarianceInflation inflation;
     Source source = Source::kMeasurement;
-    std::optional<TrajectoryModel> trajectory;   ///< the `paper` predictor's fit
-    std::optional<MotionPrediction> prediction;  ///< the `selected` predictor's models
-    // trace of the prediction's covariance at this step (added to Q for Q~).
+    std::optional<TrajectoryModel> trajectory;     ///< the `paper` predictor's fit
+    std::optional<MixtureParticleMotion> mixture;  ///< the bank's: the particles follow it
+    // The trace the bank's prediction added to the cloud's covariance (added to Q for Q~).
     double prediction_trace = 0.0;
     std::string occluder;
     // The occluder's pose when the carry starts (at onset, or at its closest approach with
@@ -79,16 +81,24 @@ class ObjectPermanenceFilter final : public Estimator {
     Eigen::Quaterniond carrier_rotation = Eigen::Quaterniond::Identity();
   };
 
+  void restart_banks();
+  /// Whether a measured position lies within the translation bank's validation gate.
+  bool bank_expects(double t, const Eigen::Vector3d& position) const;
+  void update_banks(double t, const Eigen::Vector3d& position,
+                    const Eigen::Quaterniond& orientation);
   void start_occlusion(double last_seen, const EnsembleView& ensemble);
-  bool start_dynamics(Hypothesis& hypothesis);
-  /// The history's estimates as samples for the motion test and the paper predictor's fit.
-  std::vector<TrajectorySample> estimate_history() const;
-  void follow_prediction(Hypothesis& hypothesis, double t_previous, double t);
-  /// The random walk, after a drift by the recent measurements' velocity (one pass).
-  void predict_with_recent_velocity(Hypothesis& hypothesis, double dt);
+  /// The motion test (paper Eq. 10-11, or the fitted displacement) over the history.
+  bool history_moves() const;
+  /// The paper predictor: the Ceres fit of the history, if it can be fitted.
+  bool start_trajectory(Hypothesis& hypothesis, double last_seen);
+  /// The bank predictor: the particles start following the banks' mixture.
+  void start_mixture(Hypothesis& hypothesis);
+  bool start_occluders(const EnsembleView& ensemble);
+  void follow_mixture(Hypothesis& hypothesis, double t_previous, double t);
+  /// The random walk, after a drift by the banks' velocity (one pass).
+  void predict_with_bank_velocity(Hypothesis& hypothesis, double dt);
   /// The rotation likelihood's spread from the detector's own jitter (adaptive_rotation_noise).
   void adapt_rotation_noise(Hypothesis& hypothesis);
-  void adapt_translation_noise(Hypothesis& hypothesis);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 const Estimate& estimate);
   void follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
@@ -102,18 +112,23 @@ class ObjectPermanenceFilter final : public Estimator {
   std::string object_;
   std::uint64_t seed_;
   std::uint64_t spawned_ = 0;
-  std::vector<Hypothesis> hypotheses_;  ///< [0] is the object's main estimate
-  std::deque<MotionSample> history_;    ///< measured frames: measurement and estimate
-  DetectorJitter detector_jitter_;      ///< the detector's own noise, for the likelihood
-  /// How far the object moved in a given time over its whole track (not restarted with the
-  /// history): the spread of a prediction held still beyond its validation horizon.
-  DisplacementSpread displacement_spread_;
-  /// The dynamics module's last prediction, kept when the object was seen again where it said
-  /// (no translation reset): a glimpse too brief to fit anything new continues it; a longer one
-  /// that still cannot be fitted continues the axes where it reappeared confirmed (confirmed_by).
-  std::optional<MotionPrediction> confirmed_motion_;
-  double reappeared_at_ = 0.0;  ///< s: when it was seen again after that gap
-  Eigen::Vector3d reappeared_where_ = Eigen::Vector3d::Zero();  ///< and where it was measured
+  std::vector<Hypothesis> hypotheses_;    ///< [0] is the object's main estimate
+  std::deque<TrajectorySample> history_;  ///< the estimates of the last H measured frames
+  DetectorJitter detector_jitter_;        ///< the detector's own noise, for the likelihood
+  /// The motion models over the measurements (all of them, across gaps, until an occluder
+  /// carried the object): the dynamics module's prediction and the visible drift.
+  MotionModelBank translation_bank_;
+  RotationModelBank rotation_bank_;
+  std::uint64_t occlusions_ = 0;  ///< numbers each gap's draws
+  /// A measurement outside the banks' gate, held back until the next one says whether it was an
+  /// outlier (the next is inside: dropped) or the object moved as no model predicted (outside
+  /// too: both are taken).
+  struct HeldMeasurement {
+    double t;
+    Eigen::Vector3d position;
+    Eigen::Quaterniond orientation;
+  };
+  std::optional<HeldMeasurement> held_;
   double t_ = 0.0;
   double hidden_since_ = 0.0;
   bool hidden_ = false;

@@ -6,13 +6,19 @@
 #include "opf/core/option_schema.h"
 #include "opf/fit/trajectory_fit.h"
 #include "opf/particles/particle_filter_options.h"
+#include "opf/permanence/axis_motion_model.h"
 #include "opf/permanence/covariance_inflation.h"
 #include "opf/permanence/motion_classifier.h"
-#include "opf/permanence/motion_prediction.h"
+#include "opf/permanence/motion_model_bank_options.h"
 #include "opf/permanence/occluder_selection.h"
+#include "opf/permanence/rotation_model.h"
+#include "opf/permanence/rotation_model_bank_options.h"
 #include "opf/permanence/safety_feedback.h"
 
+#include <Eigen/Core>
+
 #include <cstddef>
+#include <vector>
 
 namespace opf {
 
@@ -22,30 +28,55 @@ struct OpfModules {
   bool uncertainty = true;  ///< inflate Q while hidden (Sec. III-B.3); off: Q~ = Q
 };
 
-/// How the dynamics module extrapolates a moving hidden object.
+/// How the dynamics module extrapolates a hidden object.
 enum class DynamicsPredictor {
-  /// The model chosen from the object's own history (permanence/motion_prediction.h): continuous
-  /// with the last estimate, with a prediction covariance that spreads the particles and sets
-  /// Q~. The toolkit's default.
-  kSelected,
+  /// The motion-model banks (permanence/motion_model_bank.h, rotation_model_bank.h) run over the
+  /// object's measurements; while it is hidden its particles follow their predictive mixture
+  /// (permanence/mixture_particle_motion.h). The toolkit's default.
+  kBank,
   /// The paper's rule (Eq. 12): the Ceres polynomial fit of `trajectory` to the last H estimates,
   /// fed as a virtual measurement with Q~ inflated by the uncertainty module.
   kPaper,
 };
 inline constexpr EnumNames<DynamicsPredictor, 2> kDynamicsPredictorNames = {
-    {{DynamicsPredictor::kSelected, "selected"}, {DynamicsPredictor::kPaper, "paper"}}};
+    {{DynamicsPredictor::kBank, "bank"}, {DynamicsPredictor::kPaper, "paper"}}};
+
+/// The translation models' names in `dynamics.models`.
+inline constexpr EnumNames<MotionModel, 4> kBankModelNames = {
+    {{MotionModel::kConstantPosition, "position"},
+     {MotionModel::kConstantVelocity, "velocity"},
+     {MotionModel::kDampedVelocity, "damped"},
+     {MotionModel::kBallistic, "ballistic"}}};
+/// The rotation models' names in `dynamics.rotation_models`.
+inline constexpr EnumNames<RotationModel, 2> kRotationBankModelNames = {
+    {{RotationModel::kConstantOrientation, "orientation"},
+     {RotationModel::kConstantAngularVelocity, "angular_velocity"}}};
 
 struct DynamicsOptions {
-  DynamicsPredictor predictor = DynamicsPredictor::kSelected;
-  MotionPredictionOptions selection;  ///< of the kSelected predictor
+  DynamicsPredictor predictor = DynamicsPredictor::kBank;
+  /// The bank's translation models (each at its stated intensity grid); drop one to ablate it.
+  std::vector<MotionModel> models = {MotionModel::kConstantPosition, MotionModel::kConstantVelocity,
+                                     MotionModel::kDampedVelocity, MotionModel::kBallistic};
+  std::vector<RotationModel> rotation_models = {RotationModel::kConstantOrientation,
+                                                RotationModel::kConstantAngularVelocity};
+  /// T_memory (s) of the models' weights (permanence/model_weights.h).
+  double memory = 1.0;
+  /// The world's up (gravity is -9.81 up m/s^2): the ballistic model, and the occluder module's
+  /// height above an object.
+  Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
 };
+
+/// The banks' options from the OPF's (the observation noise is the particle filter's Q).
+MotionModelBankOptions translation_bank_options(const DynamicsOptions& dynamics,
+                                                double observation_noise);
+RotationModelBankOptions rotation_bank_options(const DynamicsOptions& dynamics,
+                                               double observation_noise);
 
 struct OpfOptions {
   PoseParticleFilterOptions particles;
   OpfModules modules;
-  /// H, the states the `paper` predictor looks back on (paper: 50). The history holds estimates
-  /// from frames with a real measurement; the `selected` predictor keeps
-  /// dynamics.selection.history_window seconds of them instead.
+  /// H, the states the motion test and the `paper` predictor look back on (paper: 50): estimates
+  /// from frames with a real measurement.
   std::size_t history_length = 50;
   /// After an occlusion longer than this (s) in which the object was carried by its occluder or
   /// only predicted, the history restarts when it reappears: the states before it describe where
@@ -58,35 +89,16 @@ struct OpfOptions {
   /// lags a moving virtual measurement by about v (1 - K) / K per frame, and the lag grows as Q~
   /// inflates and the gain K falls. false gives the paper-literal filter (an ablation).
   bool carry_particles = true;
-  /// While the object is visible, move the particles by the velocity and angular velocity of
-  /// its last `velocity_window` seconds of measurements before the random walk, so a fast object
-  /// is followed without lag. false: the paper's pure random walk.
+  /// While the object is visible, move the particles by the banks' velocity and angular velocity
+  /// (their mixtures' means) before the random walk: the proposal of a particle filter whose
+  /// motion model is the bank's, so a fast object is followed without lag. false: the paper's
+  /// pure random walk.
   bool velocity_drift = true;
-  double velocity_window = 0.3;  ///< s
   /// While the object is visible, its rotation's observation noise is the detector's own jitter
   /// (permanence/detector_jitter.h) over the last history_window seconds, between a tenth of the
   /// configured observation_noise.rotation and that value: a likelihood wider than the detector's
   /// noise trails every turn by a share of it. false: the configured value, always (the paper's).
   bool adaptive_rotation_noise = true;
-  /// The same for translation, per world axis (a depth read from an object's size jitters far
-  /// more than its image-plane position): between a tenth of observation_noise.translation and
-  /// that value. false: the configured value on every axis (the paper's).
-  bool adaptive_translation_noise = false;
-  /// At the onset of a predicted motion (the selected predictor), narrow the translation
-  /// particles about their mean, per axis, to uncertainty_scale times what the history shows of
-  /// the estimate's error (its RMS distance from the measurements, with the detector's noise
-  /// added), where the cloud is wider: the cloud's spread while visible is the configured
-  /// observation noise's (1 cm), which can be twenty times the detector's, and the reported spread
-  /// while hidden would then say nothing of how far off the estimate may be. false: the cloud as
-  /// the filter left it.
-  bool measured_onset_spread = true;
-  /// With measured_onset_spread, also widen the cloud to that spread where it is narrower, on an
-  /// axis whose detector noise (read from the measurements) exceeds the configured observation
-  /// noise: the cloud is then the posterior under a noise finer than the detector's (a walker's
-  /// depth read from her size jitters by centimetres), narrower than how far the next detection
-  /// may lie from the estimate, and a hidden object is checked against that detection when it
-  /// reappears. false: never widens.
-  bool widen_onset_spread = true;
   /// At the first measurement after a gap, where the translation likelihood would leave fewer
   /// than this share of the particles effective (the object turns up in the far tail of the
   /// cloud the gap left), the translation takes the Gaussian posterior of the cloud's moments and
@@ -94,11 +106,6 @@ struct OpfOptions {
   /// would collapse onto the few particles nearest the measurement and report their tiny spread
   /// several centimetres off. 0: always reweight (the paper's).
   double reacquisition_gaussian_share = 0.01;
-  /// s hidden after which the dynamics module's prediction stops moving the object and holds it,
-  /// its uncertainty still growing (a bounded hidden state: no extrapolation runs off for ever;
-  /// the bundled scenes extrapolate correctly for up to 3 s, under the sugar-dropping hand). The
-  /// prediction also holds once its spread reaches the uncertainty module's cap.
-  double hold_after = 4.0;
   DynamicsOptions dynamics;
   MotionThresholds motion;
   TrajectoryFitOptions trajectory;
@@ -117,20 +124,17 @@ void describe_options(Visitor& v, OpfOptions& o) {
     v.flag("uncertainty", o.modules.uncertainty);
   });
   v.integer("history_length", o.history_length, at_least(2, "an integer H >= 2"));
-  v.number("history_reset_gap", o.history_reset_gap, non_negative("a number of seconds >= 0"));
   v.flag("carry_particles", o.carry_particles);
   v.flag("velocity_drift", o.velocity_drift);
   v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
-  v.flag("adaptive_translation_noise", o.adaptive_translation_noise);
-  v.flag("measured_onset_spread", o.measured_onset_spread);
-  v.flag("widen_onset_spread", o.widen_onset_spread);
   v.number("reacquisition_gaussian_share", o.reacquisition_gaussian_share,
            between(0.0, 1.0, "a share from 0 to 1"));
-  v.number("velocity_window", o.velocity_window, positive("a positive number of s"));
-  v.number("hold_after", o.hold_after, positive("a positive number of s"));
   v.section("dynamics", [&] {
     v.choice("predictor", kDynamicsPredictorNames, o.dynamics.predictor);
-    describe_options(v, o.dynamics.selection);
+    v.choices("models", kBankModelNames, o.dynamics.models);
+    v.choices("rotation_models", kRotationBankModelNames, o.dynamics.rotation_models);
+    v.number("memory", o.dynamics.memory, positive("a positive number of s"));
+    v.vector3("up", o.dynamics.up);
   });
   v.section("motion_thresholds", [&] { describe_options(v, o.motion); });
   v.section("trajectory", [&] { describe_options(v, o.trajectory); });

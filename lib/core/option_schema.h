@@ -9,6 +9,7 @@
 // A visitor has these members (duck-typed, so the walk is inlined for each):
 //   number(key, double&, Bounds)             integer(key, std::size_t& or int&, Bounds)
 //   flag(key, bool&)                         choice(key, EnumNames table, Enum&)
+//   choices(key, EnumNames table, std::vector<Enum>&)   a non-empty list of distinct names
 //   numbers(key, std::vector<double>&, Bounds)   a non-empty list, every element within Bounds
 //   vector3(key, Eigen::Vector3d&)           a non-zero, finite vector
 //   optional_vector3(key, std::optional<Eigen::Vector3d>&)   finite when given
@@ -97,6 +98,13 @@ class OptionChecker {
   void flag(std::string_view, bool) const {}
   template <class Table, class Enum>
   void choice(std::string_view, const Table&, Enum) const {}
+  template <class Table, class Enum>
+  void choices(std::string_view key, const Table&, const std::vector<Enum>& values) const {
+    if (values.empty()) fail(key, "a non-empty list", "an empty list");
+    for (std::size_t i = 0; i < values.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (values[i] == values[j]) fail(key, "a list of distinct names", "a name twice");
+  }
   void numbers(std::string_view key, const std::vector<double>& values,
                const Bounds& bounds) const {
     if (values.empty()) fail(key, "a non-empty list", "an empty list");

@@ -100,6 +100,14 @@ void require(bool condition, const Parts&... parts) {
 
 void validate(std::span<const TrajectorySample> samples, const TrajectoryFitOptions& options) {
   check_options(options, "fit_trajectory: trajectory");
+  // The fit's fixed parameters (not settings) are checked all the same.
+  const OptionChecker fixed("fit_trajectory: trajectory");
+  fixed.number("translation_loss_scale", options.translation_loss_scale,
+               positive("a positive number (m)"));
+  fixed.number("rotation_loss_scale", options.rotation_loss_scale,
+               positive("a positive number (rad)"));
+  fixed.integer("max_iterations", options.max_iterations,
+                between(1, 10000, "an integer from 1 to 10000"));
   const std::size_t needed =
       static_cast<std::size_t>(std::max(options.translation_order, options.rotation_order)) + 1;
   require(samples.size() >= needed, "orders ", options.translation_order, " (translation) and ",

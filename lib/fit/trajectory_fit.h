@@ -44,10 +44,7 @@ void describe_options(Visitor& v, TrajectoryFitOptions& o) {
   constexpr Bounds order = between(0, kMaxTrajectoryOrder, "a polynomial order from 0 to 5");
   v.integer("translation_order", o.translation_order, order);
   v.integer("rotation_order", o.rotation_order, order);
-  v.choice("loss", kRobustLossNames, o.loss);
-  v.number("translation_loss_scale", o.translation_loss_scale, positive("a positive number (m)"));
-  v.number("rotation_loss_scale", o.rotation_loss_scale, positive("a positive number (rad)"));
-  v.integer("max_iterations", o.max_iterations, between(1, 10000, "an integer from 1 to 10000"));
+  // The loss, its scales and the iterations are the fit's stated method (above), not settings.
 }
 
 /// What one Ceres solve did (the cost is Ceres': 1/2 sum of rho(|r_k|^2)).

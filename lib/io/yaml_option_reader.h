@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -38,6 +40,23 @@ class YamlOptionReader {
   template <class Enum, std::size_t N>
   void choice(std::string_view key, const EnumNames<Enum, N>& names, Enum& out) {
     yaml().get(key, names, out);
+  }
+  /// A non-empty list of distinct names from the table, e.g. `models: [position, velocity]`.
+  template <class Enum, std::size_t N>
+  void choices(std::string_view key, const EnumNames<Enum, N>& names, std::vector<Enum>& out) {
+    std::vector<std::string> words;
+    for (const Enum value : out) words.emplace_back(name_of(names, value));
+    yaml().get(key, words);
+    std::vector<Enum> values;
+    for (const std::string& word : words) {
+      const auto value = parse_name(names, word);
+      yaml().require(key, value.has_value(),
+                     "a list of " + name_list(names) + ", got \"" + word + "\"");
+      yaml().require(key, std::find(values.begin(), values.end(), *value) == values.end(),
+                     "a list of distinct names, got \"" + word + "\" twice");
+      values.push_back(*value);
+    }
+    out = std::move(values);
   }
   void numbers(std::string_view key, std::vector<double>& out, const Bounds& bounds);
   void vector3(std::string_view key, Eigen::Vector3d& out);

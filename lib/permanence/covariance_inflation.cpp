@@ -8,6 +8,9 @@ namespace opf {
 
 void validate(const UncertaintyOptions& options) {
   check_options(options, "uncertainty");
+  const OptionChecker fixed("uncertainty");  // the constants that are not settings
+  fixed.number("reference_period", options.reference_period, positive("a positive period (s)"));
+  fixed.number("speed_window", options.speed_window, non_negative("seconds >= 0"));
 }
 
 CovarianceInflation::CovarianceInflation(const UncertaintyOptions& options) : options_(options) {

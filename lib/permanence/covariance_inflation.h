@@ -29,8 +29,7 @@ template <class Visitor>
 void describe_options(Visitor& v, UncertaintyOptions& o) {
   v.number("kappa", o.kappa, greater_than(1.0, "a number kappa > 1"));
   v.number("reference_speed", o.reference_speed, positive("a positive speed (m/s)"));
-  v.number("reference_period", o.reference_period, positive("a positive period (s)"));
-  v.number("speed_window", o.speed_window, non_negative("seconds >= 0"));
+  // reference_period (the paper's 30 Hz) and speed_window are stated constants, not settings.
   v.number("max_scale", o.max_scale, at_least(1.0, "a number >= 1"));
 }
 

@@ -28,7 +28,7 @@ inline constexpr EnumNames<MotionTest, 2> kMotionTestNames = {
 struct MotionThresholds {
   double translation = 0.01;  ///< m
   double rotation = 0.5;      ///< rad, geodesic
-  MotionTest test = MotionTest::kMaxPairwise;
+  MotionTest test = MotionTest::kFittedDisplacement;
 };
 
 /// The settings file's `opf.motion_thresholds:` section (core/option_schema.h).

@@ -146,6 +146,16 @@ BankPrediction MotionModelBank::predict(double horizon) const {
   return out;
 }
 
+Eigen::Vector3d MotionModelBank::velocity() const {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::span<const double> w = weights(axis);
+    for (std::size_t j = 0; j < filters_[axis].size(); ++j)
+      v[axis] += w[j] * filters_[axis][j].mean[1];
+  }
+  return v;
+}
+
 double MotionModelBank::model_weight(int axis, MotionModel model) const {
   check_axis(axis);
   double sum = 0.0;

@@ -77,6 +77,8 @@ class MotionModelBank {
   /// The time of the last update (s).
   double last_time() const { return t_; }
 
+  /// The mixture's mean velocity per world axis (m/s) at the last update: sum_j w_j v_j.
+  Eigen::Vector3d velocity() const;
   /// The predictive mixture of the position `horizon` s (>= 0) after the last update: per axis,
   /// every member's weight, mean and variance (of the position itself; its measurement adds
   /// options.observation_noise^2).

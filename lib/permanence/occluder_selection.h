@@ -82,14 +82,13 @@ void describe_options(Visitor& v, OccluderOptions& o) {
   v.number("epsilon_occ", o.epsilon_occ, non_negative());
   v.choice("plane", kOccluderPlaneNames, o.plane);
   v.optional_vector3("camera_position", o.camera_position);
-  v.flag("keep_offset", o.keep_offset);
   v.flag("keep_depth", o.keep_depth);
   v.flag("carry_from_departure", o.carry_from_departure);
   v.flag("orientation_from_estimate", o.orientation_from_estimate);
-  v.number("departure_margin", o.departure_margin, non_negative("metres >= 0"));
   v.flag("gate", o.gate);
   v.number("reach", o.reach, non_negative("metres >= 0"));
-  v.number("gate_sigmas", o.gate_sigmas, non_negative());
+  // keep_offset (an ablation of the carry), departure_margin (epsilon_occ's 1 cm) and
+  // gate_sigmas (a 3-sigma gate) are set in code, not in settings.
 }
 
 /// A candidate occluder: another object's position estimate.

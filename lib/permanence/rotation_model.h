@@ -1,5 +1,5 @@
 #pragma once
-// The rotation models, one enum for the dynamics module's predictor (motion_prediction.h) and the
+// The rotation models, one enum for the rotation bank (rotation_model_bank.h) and the
 // tangent-space filters of the Kalman baselines and the model bank (tangent_rotation_filter.h):
 // constant orientation (a random walk) and constant angular velocity.
 

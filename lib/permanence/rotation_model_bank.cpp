@@ -12,13 +12,15 @@ namespace {
 std::vector<TangentRotationFilter> members_of(const RotationModelBankOptions& options) {
   validate(options);
   std::vector<TangentRotationFilter> members;
-  for (const double factor : kRotationBankIntensityFactors)
-    members.emplace_back(RotationModel::kConstantOrientation,
-                         factor * kRotationBankOrientationNoiseBase * options.intensity_scale);
-  for (const double factor : kRotationBankIntensityFactors)
-    members.emplace_back(
-        RotationModel::kConstantAngularVelocity,
-        factor * kRotationBankAngularAccelerationNoiseBase * options.intensity_scale);
+  if (options.constant_orientation)
+    for (const double factor : kRotationBankIntensityFactors)
+      members.emplace_back(RotationModel::kConstantOrientation,
+                           factor * kRotationBankOrientationNoiseBase * options.intensity_scale);
+  if (options.constant_angular_velocity)
+    for (const double factor : kRotationBankIntensityFactors)
+      members.emplace_back(
+          RotationModel::kConstantAngularVelocity,
+          factor * kRotationBankAngularAccelerationNoiseBase * options.intensity_scale);
   return members;
 }
 
@@ -27,7 +29,7 @@ std::vector<TangentRotationFilter> members_of(const RotationModelBankOptions& op
 RotationModelBank::RotationModelBank(const RotationModelBankOptions& options)
     : options_(options),
       filters_(members_of(options)),
-      weights_(std::vector<double>(filters_.size(), 1.0)),  // 2 models x 3 members: equal
+      weights_(std::vector<double>(filters_.size(), 1.0)),  // models x 3 members: equal
       log_likelihoods_(filters_.size(), 0.0) {}
 
 void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) {
@@ -72,6 +74,13 @@ std::vector<RotationMemberPrediction> RotationModelBank::predict(double horizon)
   out.reserve(filters_.size());
   for (std::size_t j = 0; j < filters_.size(); ++j) out.push_back(member_prediction(j, horizon));
   return out;
+}
+
+Eigen::Vector3d RotationModelBank::angular_velocity() const {
+  Eigen::Vector3d rate = Eigen::Vector3d::Zero();
+  for (std::size_t j = 0; j < filters_.size(); ++j)
+    rate += weights_.weights()[j] * filters_[j].angular_velocity();
+  return rate;
 }
 
 double RotationModelBank::model_weight(RotationModel model) const {

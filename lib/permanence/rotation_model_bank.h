@@ -50,6 +50,8 @@ class RotationModelBank {
 
   bool initialised() const { return initialised_; }
 
+  /// The mixture's mean body-frame angular velocity (rad/s) at the last update.
+  Eigen::Vector3d angular_velocity() const;
   /// Every member's prediction `horizon` s (>= 0) after the last update.
   std::vector<RotationMemberPrediction> predict(double horizon) const;
   RotationMemberPrediction member_prediction(std::size_t index, double horizon) const;
@@ -59,6 +61,8 @@ class RotationModelBank {
   double model_weight(RotationModel model) const;
   /// The member a uniform draw in [0, 1) maps to, by weight (weighted_choice.h).
   std::size_t sample_member(double uniform01) const;
+
+  const RotationModelBankOptions& options() const { return options_; }
 
  private:
   RotationModelBankOptions options_;

@@ -4,7 +4,6 @@
 #include "opf/fit/trajectory_fit.h"
 #include "opf/particles/particle_filter_options.h"
 #include "opf/permanence/motion_classifier.h"
-#include "opf/permanence/motion_prediction.h"
 #include "opf/permanence/occluder_selection.h"
 #include "opf/sim/experiment_config.h"
 #include "opf/vision/object_segmenter.h"
@@ -39,8 +38,8 @@ TEST(EnumNames, EveryTableIsOneToOne) {
   expect_one_to_one(kRobustLossNames);
   expect_one_to_one(kMotionTestNames);
   expect_one_to_one(kOccluderPlaneNames);
-  expect_one_to_one(kTranslationModelNames);
-  expect_one_to_one(kRotationModelNames);
+  expect_one_to_one(kRotationBankModelNames);
+  expect_one_to_one(kBankModelNames);
   expect_one_to_one(kDynamicsPredictorNames);
   expect_one_to_one(sim::kShapeNames);
   expect_one_to_one(sim::kSensorKindNames);
@@ -51,7 +50,9 @@ TEST(EnumNames, TablesCoverTheirEnums) {
   // The last enumerator of each is in its table (the tables list the enums in order).
   EXPECT_EQ(name_of(kEstimateModeNames, EstimateMode::kRandomWalk), "random_walk");
   EXPECT_EQ(name_of(kOccluderPlaneNames, OccluderPlane::k3D), "3d");
-  EXPECT_EQ(name_of(kTranslationModelNames, TranslationModel::kBallistic), "ballistic");
+  EXPECT_EQ(name_of(kBankModelNames, MotionModel::kBallistic), "ballistic");
+  EXPECT_EQ(name_of(kRotationBankModelNames, RotationModel::kConstantAngularVelocity),
+            "angular_velocity");
   EXPECT_EQ(name_of(kResamplingSchemeNames, mrpt::bayes::CParticleFilter::prSystematic),
             "systematic");
   EXPECT_EQ(name_of(vision::kSegmentationMethodNames, vision::SegmentationMethod::kBackground),
@@ -65,7 +66,7 @@ TEST(EnumNames, UnknownWordsAndValuesAreRefused) {
 }
 
 TEST(EnumNames, ListsReadAsAnErrorMessageOffersThem) {
-  EXPECT_EQ(name_list(kDynamicsPredictorNames), "selected or paper");
+  EXPECT_EQ(name_list(kDynamicsPredictorNames), "bank or paper");
   EXPECT_EQ(name_list(kRobustLossNames), "squared, huber or cauchy");
   EXPECT_EQ(name_list(kResamplingSchemeNames), "multinomial, residual, stratified or systematic");
   constexpr EnumNames<RobustLoss, 1> one = {{{RobustLoss::kSquared, "squared"}}};

@@ -23,7 +23,9 @@ TEST(BaseballThrow, TheOpfFollowsTheParabolaThroughTheDropout) {
   // The truth is the parabola: z(0.5) = 1 + 3 * 0.5 - 9.81 / 2 * 0.25.
   EXPECT_NEAR(observation.truth[50].poses[0].position.z(), 1.27375, 1e-9);
 
-  EstimatorSettings settings = load_estimator_settings(config.estimator_config);
+  EstimatorSettings settings =
+      (config.estimator_config.empty() ? EstimatorSettings{}
+                                       : load_estimator_settings(config.estimator_config));
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
   const ExperimentResults r =
       run_open_loop(config, observation, {"opf", "pf", "cvkf"}, settings, 2, 5);

@@ -17,7 +17,9 @@ class SugarDropStart : public ::testing::Test {
         sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
     config.frames = 90;
     // The experiment's own estimator settings, as `opf run` applies them.
-    EstimatorSettings settings = load_estimator_settings(config.estimator_config);
+    EstimatorSettings settings =
+        (config.estimator_config.empty() ? EstimatorSettings{}
+                                         : load_estimator_settings(config.estimator_config));
     settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
     results_ = new ExperimentResults(run_closed_loop(config, {"opf"}, settings, 1, 3));
   }
@@ -57,7 +59,9 @@ TEST_F(SugarDropStart, TheSameSeedGivesTheSameRun) {
   sim::ExperimentConfig config =
       sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
   config.frames = 90;
-  EstimatorSettings settings = load_estimator_settings(config.estimator_config);
+  EstimatorSettings settings =
+      (config.estimator_config.empty() ? EstimatorSettings{}
+                                       : load_estimator_settings(config.estimator_config));
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
   const ExperimentResults again = run_closed_loop(config, {"opf"}, settings, 1, 3);
   ASSERT_EQ(again.records.size(), results_->records.size());

@@ -16,7 +16,9 @@ TEST(CupsGame, TheOpfFollowsTheBallsCupThroughTheShuffle) {
   const sim::ExperimentConfig config =
       sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/cups_game.yaml");
   const Observation observation = observe_experiment(config);
-  EstimatorSettings settings = load_estimator_settings(config.estimator_config);
+  EstimatorSettings settings =
+      (config.estimator_config.empty() ? EstimatorSettings{}
+                                       : load_estimator_settings(config.estimator_config));
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
   const ExperimentResults r = run_open_loop(config, observation, {"opf", "pf"}, settings, 1, 9);
   const RunErrors& opf = r.runs.at("opf")[0];

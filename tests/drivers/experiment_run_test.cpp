@@ -17,7 +17,9 @@ class GeneralOpStepOne : public ::testing::Test {
         sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml"));
     config_->frames = 160;
     observation_ = new Observation(observe_experiment(*config_));
-    settings_ = new EstimatorSettings(load_estimator_settings(config_->estimator_config));
+    settings_ = new EstimatorSettings((config_->estimator_config.empty()
+                                           ? EstimatorSettings{}
+                                           : load_estimator_settings(config_->estimator_config)));
     settings_->pf.translation_particles = settings_->pf.rotation_particles = 1000;
   }
   static void TearDownTestSuite() {

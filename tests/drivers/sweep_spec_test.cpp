@@ -151,7 +151,7 @@ TEST(SweepSpec, BundledSweepsLoadAndExpand) {
       {"module_ablation", 75},   {"kappa", 50},
       {"history_length", 50},    {"epsilon_occ", 75},
       {"trajectory_order", 30},  {"occluder_plane", 30},
-      {"occluder_offset", 60},   {"resampler", 40},
+      {"occluder_offset", 45},   {"resampler", 40},
       {"particle_counts", 80},   {"smoke", 8},
       {"dynamics_predictor", 80}};
   std::size_t found = 0;

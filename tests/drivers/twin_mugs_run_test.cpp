@@ -29,7 +29,9 @@ class TwinMugs : public ::testing::Test {
     return run_open_loop(config_, observation_, {"opf"}, settings, 3, 5);
   }
   static EstimatorSettings settings() {
-    EstimatorSettings s = load_estimator_settings(config_.estimator_config);
+    EstimatorSettings s =
+        (config_.estimator_config.empty() ? EstimatorSettings{}
+                                          : load_estimator_settings(config_.estimator_config));
     s.pf.translation_particles = s.pf.rotation_particles = 1000;
     s.opf.occluder.camera_position = config_.camera.position;  // as `opf run` passes it
     return s;

@@ -30,7 +30,7 @@ TEST(EstimatorSettingsDump, ReadsBackToTheSameSettings) {
   s.pf.resampling.scheme = mrpt::bayes::CParticleFilter::prResidual;
   s.opf.occluder.camera_position = Eigen::Vector3d(0.5, -0.25, 1.5);
   s.opf.occluder.plane = OccluderPlane::kLineOfSight;
-  s.opf.dynamics.selection.fit_windows = {0.25, 0.75};
+  s.opf.dynamics.models = {MotionModel::kDampedVelocity, MotionModel::kConstantPosition};
   s.opf.dynamics.predictor = DynamicsPredictor::kPaper;
   s.oapf.spread_growth = 3.5;
   s.imm.mean_sojourn = 0.75;
@@ -43,7 +43,8 @@ TEST(EstimatorSettingsDump, ReadsBackToTheSameSettings) {
   EXPECT_EQ(back.pf.resampling.scheme, mrpt::bayes::CParticleFilter::prResidual);
   ASSERT_TRUE(back.opf.occluder.camera_position);
   EXPECT_EQ(*back.opf.occluder.camera_position, Eigen::Vector3d(0.5, -0.25, 1.5));
-  EXPECT_EQ(back.opf.dynamics.selection.fit_windows, (std::vector<double>{0.25, 0.75}));
+  EXPECT_EQ(back.opf.dynamics.models, (std::vector<MotionModel>{MotionModel::kDampedVelocity,
+                                                                MotionModel::kConstantPosition}));
   EXPECT_EQ(back.opf.dynamics.predictor, DynamicsPredictor::kPaper);
   EXPECT_EQ(back.oapf.spread_growth, 3.5);
   EXPECT_EQ(back.imm.mean_sojourn, 0.75);

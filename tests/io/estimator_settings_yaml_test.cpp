@@ -77,7 +77,6 @@ void expect_defaults(const EstimatorSettings& s) {
   EXPECT_EQ(s.opf.occluder.gate, d.opf.occluder.gate);
   EXPECT_EQ(s.opf.occluder.reach, d.opf.occluder.reach);
   EXPECT_EQ(s.opf.occluder.gate_sigmas, d.opf.occluder.gate_sigmas);
-  EXPECT_EQ(s.opf.hold_after, d.opf.hold_after);
   EXPECT_EQ(s.opf.uncertainty.kappa, d.opf.uncertainty.kappa);
   EXPECT_EQ(s.opf.uncertainty.reference_speed, d.opf.uncertainty.reference_speed);
   EXPECT_EQ(s.opf.uncertainty.reference_period, d.opf.uncertainty.reference_period);
@@ -173,51 +172,34 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
       "opf:\n"
       "  modules: {dynamics: false, occluder: false, uncertainty: false}\n"
       "  history_length: 30\n"
-      "  history_reset_gap: 1.5\n"
       "  carry_particles: false\n"
       "  motion_thresholds: {translation: 0.02, rotation: 0.25}\n"
-      "  trajectory: {translation_order: 2, rotation_order: 0, loss: cauchy,\n"
-      "               translation_loss_scale: 0.03, rotation_loss_scale: 0.1, max_iterations: 20}\n"
-      "  hold_after: 2.5\n"
-      "  occluder: {epsilon_occ: 0.5, plane: xy, camera_position: [0.55, 0, 0.8], keep_offset: "
-      "true,\n"
-      "             keep_depth: false, carry_from_departure: false, departure_margin: 0.02,\n"
-      "             orientation_from_estimate: false,\n"
-      "             gate: false, reach: 0.3, gate_sigmas: 2}\n"
-      "  uncertainty: {kappa: 1.1, reference_speed: 0.2, reference_period: 0.01,\n"
-      "                speed_window: 0.5, max_scale: 100}\n"
+      "  trajectory: {translation_order: 2, rotation_order: 0}\n"
+      "  occluder: {epsilon_occ: 0.5, plane: xy, camera_position: [0.55, 0, 0.8],\n"
+      "             keep_depth: false, carry_from_departure: false,\n"
+      "             orientation_from_estimate: false, gate: false, reach: 0.3}\n"
+      "  uncertainty: {kappa: 1.1, reference_speed: 0.2, max_scale: 100}\n"
       "  feedback: {epsilon_safe: 0.5}\n",
       "settings.yaml");
   const OpfOptions& o = s.opf;
   EXPECT_FALSE(o.modules.dynamics || o.modules.occluder || o.modules.uncertainty);
   EXPECT_EQ(o.history_length, 30u);
-  EXPECT_EQ(o.history_reset_gap, 1.5);
   EXPECT_FALSE(o.carry_particles);
   EXPECT_EQ(o.motion.translation, 0.02);
   EXPECT_EQ(o.motion.rotation, 0.25);
   EXPECT_EQ(o.trajectory.translation_order, 2);
   EXPECT_EQ(o.trajectory.rotation_order, 0);
-  EXPECT_EQ(o.trajectory.loss, RobustLoss::kCauchy);
-  EXPECT_EQ(o.trajectory.translation_loss_scale, 0.03);
-  EXPECT_EQ(o.trajectory.rotation_loss_scale, 0.1);
-  EXPECT_EQ(o.trajectory.max_iterations, 20);
   EXPECT_EQ(o.occluder.epsilon_occ, 0.5);
   EXPECT_EQ(o.occluder.plane, OccluderPlane::kXY);
   ASSERT_TRUE(o.occluder.camera_position.has_value());
   EXPECT_EQ(*o.occluder.camera_position, Eigen::Vector3d(0.55, 0, 0.8));
-  EXPECT_TRUE(o.occluder.keep_offset);
   EXPECT_FALSE(o.occluder.keep_depth);
   EXPECT_FALSE(o.occluder.carry_from_departure);
-  EXPECT_EQ(o.occluder.departure_margin, 0.02);
   EXPECT_FALSE(o.occluder.orientation_from_estimate);
   EXPECT_FALSE(o.occluder.gate);
   EXPECT_EQ(o.occluder.reach, 0.3);
-  EXPECT_EQ(o.occluder.gate_sigmas, 2.0);
-  EXPECT_EQ(o.hold_after, 2.5);
   EXPECT_EQ(o.uncertainty.kappa, 1.1);
   EXPECT_EQ(o.uncertainty.reference_speed, 0.2);
-  EXPECT_EQ(o.uncertainty.reference_period, 0.01);
-  EXPECT_EQ(o.uncertainty.speed_window, 0.5);
   EXPECT_EQ(o.uncertainty.max_scale, 100.0);
   EXPECT_EQ(o.feedback.epsilon_safe, 0.5);
 }
@@ -226,57 +208,30 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   const EstimatorSettings s = parse_estimator_settings(
       "opf:\n"
       "  velocity_drift: false\n"
-      "  velocity_window: 0.5\n"
       "  adaptive_rotation_noise: false\n"
-      "  adaptive_translation_noise: true\n"
-      "  measured_onset_spread: false\n"
       "  dynamics:\n"
       "    predictor: paper\n"
-      "    history_window: 3.0\n"
-      "    fit_windows: [0.1, 0.3]\n"
-      "    validation_horizon: 0.4\n"
-      "    validation_memory: 0\n"
-      "    ballistic: false\n"
-      "    constant_acceleration: false\n"
-      "    wandering_velocity: false\n"
-      "    wander_memories: [1, 0.3]\n"
-      "    weights_by_horizon: false\n"
-      "    gravity: 9.8\n"
-      "    up: [0, 1, 0]\n"
-      "    uncertainty_scale: 2.0\n"
-      "    settle_time: 0.1\n"
-      "    onset_guard: 0.05\n"
-      "    robust_iterations: 0\n",
+      "    models: [velocity, ballistic]\n"
+      "    rotation_models: [angular_velocity]\n"
+      "    memory: 0.5\n"
+      "    up: [0, 1, 0]\n",
       "settings.yaml");
   const OpfOptions& o = s.opf;
   EXPECT_FALSE(o.velocity_drift);
-  EXPECT_EQ(o.velocity_window, 0.5);
   EXPECT_FALSE(o.adaptive_rotation_noise);
-  EXPECT_TRUE(o.adaptive_translation_noise);
-  EXPECT_FALSE(o.measured_onset_spread);
   EXPECT_EQ(o.dynamics.predictor, DynamicsPredictor::kPaper);
-  const MotionPredictionOptions& m = o.dynamics.selection;
-  EXPECT_EQ(m.history_window, 3.0);
-  EXPECT_EQ(m.fit_windows, (std::vector<double>{0.1, 0.3}));
-  EXPECT_EQ(m.validation_horizon, 0.4);
-  EXPECT_EQ(m.validation_memory, 0.0);
-  EXPECT_FALSE(m.ballistic);
-  EXPECT_FALSE(m.constant_acceleration);
-  EXPECT_FALSE(m.wandering_velocity);
-  EXPECT_EQ(m.wander_memories, (std::vector<double>{1.0, 0.3}));
-  EXPECT_FALSE(m.weights_by_horizon);
-  EXPECT_EQ(m.gravity, 9.8);
-  EXPECT_EQ(m.up, Eigen::Vector3d(0, 1, 0));
-  EXPECT_EQ(m.uncertainty_scale, 2.0);
-  EXPECT_EQ(m.settle_time, 0.1);
-  EXPECT_EQ(m.onset_guard, 0.05);
-  EXPECT_EQ(m.robust_iterations, 0);
-  const EstimatorSettings d;
-  EXPECT_EQ(d.opf.dynamics.selection.validation_memory, 0.5);
-  EXPECT_EQ(error_of("opf:\n  dynamics:\n    validation_memory: -1\n").field(),
-            "opf.dynamics.validation_memory");
-  EXPECT_EQ(error_of("opf:\n  dynamics:\n    wander_memories: [1, 0]\n").field(),
-            "opf.dynamics.wander_memories");
+  EXPECT_EQ(o.dynamics.models,
+            (std::vector<MotionModel>{MotionModel::kConstantVelocity, MotionModel::kBallistic}));
+  EXPECT_EQ(o.dynamics.rotation_models,
+            std::vector<RotationModel>{RotationModel::kConstantAngularVelocity});
+  EXPECT_EQ(o.dynamics.memory, 0.5);
+  EXPECT_EQ(o.dynamics.up, Eigen::Vector3d(0, 1, 0));
+  EXPECT_EQ(error_of("opf:\n  dynamics:\n    memory: -1\n").field(), "opf.dynamics.memory");
+  EXPECT_EQ(error_of("opf:\n  dynamics:\n    models: [velocity, walk]\n").field(),
+            "opf.dynamics.models");
+  EXPECT_EQ(error_of("opf:\n  dynamics:\n    models: [velocity, velocity]\n").field(),
+            "opf.dynamics.models");
+  EXPECT_EQ(error_of("opf:\n  dynamics:\n    models: []\n").field(), "opf.dynamics.models");
 }
 
 TEST(EstimatorSettingsYaml, ParticleOptionsAreSharedNotPerEstimator) {
@@ -368,15 +323,10 @@ TEST(EstimatorSettingsYaml, OutOfRangeValuesAreRejected) {
            Case{"opf:\n  feedback:\n    epsilon_safe: 0\n", "opf.feedback.epsilon_safe", 3},
            Case{"opf:\n  trajectory: {translation_order: 6}\n", "opf.trajectory.translation_order",
                 2},
-           Case{"opf:\n  trajectory: {loss: l1}\n", "opf.trajectory.loss", 2},
            Case{"opf:\n  occluder: {plane: yz}\n", "opf.occluder.plane", 2},
            Case{"opf:\n  occluder: {camera_position: [1, 2]}\n", "opf.occluder.camera_position", 2},
            Case{"opf:\n  occluder: {epsilon_occ: -0.1}\n", "opf.occluder.epsilon_occ", 2},
            Case{"opf:\n  occluder: {reach: -0.1}\n", "opf.occluder.reach", 2},
-           Case{"opf:\n  occluder: {departure_margin: -0.01}\n", "opf.occluder.departure_margin",
-                2},
-           Case{"opf:\n  occluder:\n    gate_sigmas: -1\n", "opf.occluder.gate_sigmas", 3},
-           Case{"opf:\n  hold_after: 0\n", "opf.hold_after", 2},
        }) {
     const InputError e = error_of(c.yaml);
     EXPECT_EQ(e.field(), c.field) << c.yaml;

@@ -95,9 +95,9 @@ def test_a_config_dict_is_read_like_the_settings_file(tmp_path):
     default = opf.track_log(EXAMPLE_LOG, seed=2, particles=PARTICLES, dataframe=False)
     assert np.array_equal(from_file["x"], from_dict["x"])
     assert from_file["mode"] == from_dict["mode"]
-    # Without the dynamics module the hidden ball falls back on the occluder and prediction.
+    # Without the dynamics module the hidden ball (no occluder can hide it) is only predicted.
     assert "dynamics" in default["mode"] and "dynamics" not in from_dict["mode"]
-    assert "occluder" in from_dict["mode"] and "occluder" not in default["mode"]
+    assert "predicted" in from_dict["mode"] and "predicted" not in default["mode"]
 
 
 def test_errors_carry_the_programs_messages(tmp_path):

@@ -1,0 +1,135 @@
+#include "opf/permanence/mixture_particle_motion.h"
+
+#include "opf/particles/random_walk_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace opf {
+namespace {
+
+constexpr std::uint64_t kNoiseStream = 1;
+
+std::uint16_t draw(std::size_t member) {
+  return static_cast<std::uint16_t>(member);
+}
+
+}  // namespace
+
+MixtureParticleMotion::MixtureParticleMotion(std::uint64_t seed)
+    : random_(seed), noise_(derive_seed(seed, kNoiseStream)) {}
+
+void MixtureParticleMotion::start(const MotionModelBank& translation,
+                                  const RotationModelBank& rotation,
+                                  const PoseParticleFilter& filter) {
+  if (!translation.initialised() || !rotation.initialised())
+    throw std::logic_error("MixtureParticleMotion::start before the banks saw a measurement");
+  const std::size_t n = filter.translation().size();
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<std::uint16_t>& members = translation_members_[static_cast<std::size_t>(axis)];
+    members.resize(n);
+    for (std::uint16_t& m : members) m = draw(translation.sample_member(axis, random_.uniform()));
+  }
+  rotation_members_.resize(filter.rotation().size());
+  for (std::uint16_t& m : rotation_members_) m = draw(rotation.sample_member(random_.uniform()));
+}
+
+void MixtureParticleMotion::advance(const MotionModelBank& translation,
+                                    const RotationModelBank& rotation, double h0, double h1,
+                                    PoseParticleFilter& filter) {
+  if (!(h0 >= 0.0) || !(h1 >= h0))
+    throw std::invalid_argument("MixtureParticleMotion::advance needs 0 <= h0 <= h1");
+  if (translation_members_[0].size() != filter.translation().size() ||
+      rotation_members_.size() != filter.rotation().size())
+    throw std::logic_error("MixtureParticleMotion::advance before start");
+  move_translation(translation, h0, h1, filter.translation());
+  move_rotation(rotation, h0, h1, filter.rotation());
+}
+
+void MixtureParticleMotion::move_translation(const MotionModelBank& bank, double h0, double h1,
+                                             TranslationParticles& particles) {
+  const std::size_t n = particles.size();
+  normals_.resize(n);
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::size_t count = bank.members(axis).size();
+    std::vector<double> shift(count), spread(count);
+    for (std::size_t j = 0; j < count; ++j) {
+      const MemberPrediction from = bank.member_prediction(axis, j, h0);
+      const MemberPrediction to = bank.member_prediction(axis, j, h1);
+      shift[j] = to.mean - from.mean;
+      spread[j] = std::sqrt(std::max(0.0, to.variance - from.variance));
+    }
+    noise_.fill(normals_);
+    const std::vector<std::uint16_t>& members =
+        translation_members_[static_cast<std::size_t>(axis)];
+    double* row = particles.states.data() + static_cast<std::size_t>(axis) * n;
+    for (std::size_t i = 0; i < n; ++i)
+      row[i] += shift[members[i]] + spread[members[i]] * static_cast<double>(normals_[i]);
+  }
+}
+
+void MixtureParticleMotion::move_rotation(const RotationModelBank& bank, double h0, double h1,
+                                          RotationParticles& particles) {
+  const std::size_t count = bank.members().size();
+  std::vector<Eigen::Quaterniond> turn(count);
+  std::vector<double> spread(count);
+  for (std::size_t j = 0; j < count; ++j) {
+    const RotationMemberPrediction from = bank.member_prediction(j, h0);
+    const RotationMemberPrediction to = bank.member_prediction(j, h1);
+    turn[j] = (to.orientation * from.orientation.conjugate()).normalized();
+    spread[j] = std::sqrt(std::max(0.0, (to.covariance - from.covariance).trace() / 3.0));
+  }
+  const std::size_t n = particles.size();
+  auto* x = particles.states.data();
+  auto* y = x + n;
+  auto* z = y + n;
+  auto* w = z + n;
+  using Scalar = RotationParticles::States::Scalar;
+  Eigen::VectorXd sigma(static_cast<Eigen::Index>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::uint16_t m = rotation_members_[i];
+    sigma[static_cast<Eigen::Index>(i)] = spread[m];
+    const Eigen::Quaterniond q = turn[m] * Eigen::Quaterniond(w[i], x[i], y[i], z[i]);
+    x[i] = static_cast<Scalar>(q.x());
+    y[i] = static_cast<Scalar>(q.y());
+    z[i] = static_cast<Scalar>(q.z());
+    w[i] = static_cast<Scalar>(q.w());
+  }
+  predict_random_walk(particles, sigma, noise_);
+}
+
+double MixtureParticleMotion::added_trace(const MotionModelBank& translation,
+                                          const RotationModelBank& rotation, double h) {
+  double trace =
+      translation.predict(h).variance().sum() - translation.predict(0.0).variance().sum();
+  const std::span<const double> weights = rotation.weights();
+  for (std::size_t j = 0; j < weights.size(); ++j)
+    trace += weights[j] * (rotation.member_prediction(j, h).covariance.trace() -
+                           rotation.member_prediction(j, 0.0).covariance.trace());
+  return std::max(0.0, trace);
+}
+
+std::string MixtureParticleMotion::label(const MotionModelBank& translation,
+                                         const RotationModelBank& rotation) {
+  std::string text;
+  for (int axis = 0; axis < 3; ++axis) {
+    MotionModel best = MotionModel::kConstantPosition;
+    double best_weight = -1.0;
+    for (int m = 0; m < kMotionModelCount; ++m) {
+      const double w = translation.model_weight(axis, static_cast<MotionModel>(m));
+      if (w > best_weight) {
+        best_weight = w;
+        best = static_cast<MotionModel>(m);
+      }
+    }
+    text += std::string(axis == 0 ? "" : ",") + std::string(model_name(best));
+  }
+  const bool turning = rotation.model_weight(RotationModel::kConstantAngularVelocity) >
+                       rotation.model_weight(RotationModel::kConstantOrientation);
+  return text + "/" +
+         std::string(rotation_model_name(turning ? RotationModel::kConstantAngularVelocity
+                                                 : RotationModel::kConstantOrientation));
+}
+
+}  // namespace opf
