@@ -2,14 +2,15 @@
 # Small result sets for executing the notebooks and building the report in the tests (about 30 s
 # on 2 cores): OUT/results holds `opf run` outputs for the first 150 frames of general_op and
 # sugar_drop (OPF and PF, 2 seeds, 300 particles; the ball is covered and carried), OUT/sweeps
-# the sweeps of notebooks/small_sweeps/. Both are replaced.
+# the sweeps of notebooks/small_sweeps/, OUT/dynamics_ablation the real-motion ablation's subset
+# (experiments/real_motion/run_ablation.py --subset). All are replaced.
 #   bash scripts/make_small_results.sh OUT        (OPF=path/to/opf overrides build/bin/opf)
 set -euo pipefail
 [ $# -eq 1 ] || { echo "usage: $0 OUT" >&2; exit 2; }
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 opf="${OPF:-$repo/build/bin/opf}"
 out="$(mkdir -p "$1" && cd "$1" && pwd)"
-rm -rf "$out/results" "$out/sweeps"  # sweeps resume: start from nothing
+rm -rf "$out/results" "$out/sweeps" "$out/dynamics_ablation"  # sweeps resume: start from nothing
 for experiment in general_op sugar_drop; do
   "$opf" run "$repo/experiments/$experiment.yaml" --estimators opf,pf --seeds 2 --particles 300 \
     --frames 150 --out "$out/results" >"$out/$experiment.log" 2>&1
@@ -18,4 +19,7 @@ for sweep in "$repo"/notebooks/small_sweeps/*.yaml; do
   name="$(basename "$sweep" .yaml)"
   "$opf" sweep "$sweep" --out "$out/sweeps/$name" >"$out/sweep_$name.log" 2>&1
 done
-echo "small results in $out/results and $out/sweeps"
+# The dynamics ablation's subset (one log per kind, the full bank and one model removed).
+/usr/bin/python3 "$repo/experiments/real_motion/run_ablation.py" "$out/dynamics_ablation" --subset \
+  --no-video --opf "$opf" >"$out/dynamics_ablation.log" 2>&1
+echo "small results in $out/results, $out/sweeps and $out/dynamics_ablation"

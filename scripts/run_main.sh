@@ -4,8 +4,11 @@
 # numbers and write per-frame CSVs, summary.json and figures under results/; then the real-video
 # benchmark (OpenCV's sample clips through `opf detect`, with dropouts) into results/real_video/;
 # then the real-motion benchmark (public recordings and the clips, every estimator under both
-# presets, 3 seeds: about two minutes on 2 cores) into results/real_motion/; last, the notebooks executed against these results into results/notebooks/ (.ipynb and .html;
-# about 30 s; the sweeps, not run here, are skipped there with the command that runs them).
+# presets, 3 seeds: about two minutes on 2 cores) into results/real_motion/; the dynamics
+# module's ablation on it (each motion model removed in turn, about two minutes) into
+# results/dynamics_ablation/; last, the notebooks executed against these results into
+# results/notebooks/ (.ipynb and .html; about 30 s; the sweeps, not run here, are skipped there
+# with the command that runs them).
 # Extra arguments go to `opf reproduce` (see `build/bin/opf reproduce --help`).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -22,5 +25,8 @@ cat "$repo/results/real_video/table.md"
 echo
 /usr/bin/python3 "$repo/experiments/real_motion/run_benchmark.py" "$repo/results/real_motion" \
   --opf "$repo/build/bin/opf"
+echo
+/usr/bin/python3 "$repo/experiments/real_motion/run_ablation.py" \
+  "$repo/results/dynamics_ablation" --opf "$repo/build/bin/opf"
 echo
 bash "$repo/notebooks/run_notebooks.sh" "$repo/results/notebooks"
