@@ -10,12 +10,13 @@
 #include "opf/estimators/opf_options.h"
 #include "opf/particles/pose_particle_filter.h"
 #include "opf/permanence/detector_jitter.h"
-#include "opf/permanence/mixture_particle_motion.h"
+#include "opf/permanence/hidden_motion.h"
 #include "opf/permanence/motion_model_bank.h"
 #include "opf/permanence/rotation_model_bank.h"
 
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,51 +35,18 @@ class ObjectPermanenceFilter final : public Estimator {
   std::vector<Estimate> extra_hypotheses() const override;
 
  private:
-  enum class Source { kMeasurement, kTrajectory, kOccluder, kNone };
-
+  /// The object's main estimate or one of its occluder hypotheses: a filter and, while hidden,
+  /// what moves it.
   struct Hypothesis {
-    Hypothesis(PoseParticleFilter f, CovarianceInflation i)
-        : filter(std::move(f)), inflation(std::move(i)) {}
+    explicit Hypothesis(PoseParticleFilter f) : filter(std::move(f)) {}
+    Hypothesis(const Hypothesis& other);
+    Hypothesis& operator=(const Hypothesis& other);
+    Hypothesis(Hypothesis&&) = default;
+    Hypothesis& operator=(Hypothesis&&) = default;
 
     PoseParticleFilter filter;
-    CovarianceInflation inflation;
-    Source source = Source::kMeasurement;
-    std::optional<TrajectoryModel> trajectory;     ///< the `paper` predictor's fit
-    std::optional<MixtureParticleMotion> mixture;  ///< the bank's: the particles follow it
-    // The trace the bank's prediction added to the cloud's covariance (added to Q for Q~).
-    double prediction_trace = 0.0;
-    std::string occluder;
-    // The occluder's pose when the carry starts (at onset, or at its closest approach with
-    // carry_from_departure) and this object's pose at onset: the hidden object is carried
-    // rigidly with the occluder's rotation since then (and, with keep_offset, at that offset).
-    Eigen::Vector3d occluder_position_at_onset = Eigen::Vector3d::Zero();
-    Eigen::Quaterniond occluder_orientation_at_onset = Eigen::Quaterniond::Identity();
-    Eigen::Vector3d position_at_onset = Eigen::Vector3d::Zero();
-    Eigen::Quaterniond orientation_at_onset = Eigen::Quaterniond::Identity();
-    // carry_from_departure: false while the occluder closes in; its closest horizontal distance.
-    bool carrying = true;
-    double closest_distance = 0.0;
-    // Carried at its whole offset from the occluder (keep_offset, or a cover at its level that
-    // waited for its departure), turned with it.
-    bool at_offset = false;
-    // The carrier's pose at the previous step (the trajectory's, or the occluder's estimate).
-    std::optional<Eigen::Vector3d> last_carrier_position;
-    Eigen::Quaterniond last_carrier_orientation = Eigen::Quaterniond::Identity();
-    // Recent (t, position) of the occluder's estimate, spanning the speed window.
-    std::deque<std::pair<double, Eigen::Vector3d>> carrier_track;
-    // What the last step had to do to stay usable (the mode column's "+reset" and so on).
-    RecoveryEvents recovery;
-  };
-
-  struct VirtualMeasurement {
-    Eigen::Vector3d position;
-    Eigen::Quaterniond orientation;
-    double speed = 0.0;  ///< m/s of the carrier, for the uncertainty module
-    // The motion the carrier made since the previous step (world frame), for carry_particles:
-    // from `carrier_from` to `carrier_to`, turning by `carrier_rotation` about it.
-    Eigen::Vector3d carrier_from = Eigen::Vector3d::Zero();
-    Eigen::Vector3d carrier_to = Eigen::Vector3d::Zero();
-    Eigen::Quaterniond carrier_rotation = Eigen::Quaterniond::Identity();
+    std::unique_ptr<HiddenMotion> motion;  ///< none while the object is measured
+    HiddenStep last;                       ///< Q~ and the recovery events of the last step
   };
 
   void restart_banks();
@@ -86,25 +54,23 @@ class ObjectPermanenceFilter final : public Estimator {
   bool bank_expects(double t, const Eigen::Vector3d& position) const;
   void update_banks(double t, const Eigen::Vector3d& position,
                     const Eigen::Quaterniond& orientation);
+  void take_held_measurement();
+  Estimate update(double t, double dt, const mrpt::poses::CPose3D& measurement);
   void start_occlusion(double last_seen, const EnsembleView& ensemble);
   /// The motion test (paper Eq. 10-11, or the fitted displacement) over the history.
   bool history_moves() const;
-  /// The paper predictor: the Ceres fit of the history, if it can be fitted.
-  bool start_trajectory(Hypothesis& hypothesis, double last_seen);
-  /// The bank predictor: the particles start following the banks' mixture.
-  void start_mixture(Hypothesis& hypothesis);
+  /// The paper predictor's source: the Ceres fit of the history, if it can be fitted.
+  std::unique_ptr<HiddenMotion> fitted_trajectory(double last_seen) const;
+  std::unique_ptr<HiddenMotion> bank_mixture(const PoseParticleFilter& filter);
+  /// The occluder module: false when no object can hide this one.
   bool start_occluders(const EnsembleView& ensemble);
-  void follow_mixture(Hypothesis& hypothesis, double t_previous, double t);
+  VirtualMeasurementMotion::Settings virtual_measurement_settings() const;
   /// The random walk, after a drift by the banks' velocity (one pass).
   void predict_with_bank_velocity(Hypothesis& hypothesis, double dt);
   /// The rotation likelihood's spread from the detector's own jitter (adaptive_rotation_noise).
   void adapt_rotation_noise(Hypothesis& hypothesis);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 const Estimate& estimate);
-  void follow_occluder(Hypothesis& hypothesis, const std::string& occluder,
-                       const Estimate& occluder_estimate, const EnsembleView& ensemble) const;
-  std::optional<VirtualMeasurement> virtual_measurement(Hypothesis& hypothesis, double t,
-                                                        const EnsembleView& ensemble);
   void keep_hypothesis_explaining(const Eigen::Vector3d& position);
   Estimate make_estimate(const Hypothesis& hypothesis, int index) const;
 

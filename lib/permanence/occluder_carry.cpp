@@ -1,0 +1,133 @@
+#include "opf/permanence/occluder_carry.h"
+
+#include "opf/core/pose_conversion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace opf {
+namespace {
+
+const Estimate* find_estimate(const EnsembleView& ensemble, const std::string& object) {
+  for (const Estimate& e : ensemble.previous_estimates)
+    if (e.object == object) return &e;
+  return nullptr;
+}
+
+// The occluder's pose as the carry reads it: its position from its measurement this frame when
+// it has one (its estimate is a frame old and lags a moving occluder), its orientation from its
+// filtered estimate when it has one and `orientation_from_estimate` (a single detection's
+// rotation noise would bias the whole carry).
+struct CarrierPose {
+  Eigen::Vector3d position;
+  Eigen::Quaterniond orientation;
+};
+
+CarrierPose carrier_pose(const Detection* detection, const Estimate* estimate,
+                         bool orientation_from_estimate) {
+  const mrpt::poses::CPose3D& for_position = detection ? detection->pose : estimate->pose.mean;
+  const mrpt::poses::CPose3D& for_orientation =
+      (estimate && (orientation_from_estimate || !detection)) ? estimate->pose.mean
+                                                              : detection->pose;
+  return {translation_of(for_position), orientation_of(for_orientation).normalized()};
+}
+
+double horizontal_distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                           const Eigen::Vector3d& up) {
+  const Eigen::Vector3d d = a - b;
+  return (d - up * up.dot(d)).norm();
+}
+
+}  // namespace
+
+OccluderCarry::OccluderCarry(const Settings& settings, const OccluderOptions& options,
+                             const Eigen::Vector3d& up, const Eigen::Vector3d& position_at_onset,
+                             const Eigen::Quaterniond& orientation_at_onset, std::string occluder,
+                             const Estimate& occluder_estimate, const EnsembleView& ensemble)
+    : VirtualMeasurementMotion(settings),
+      options_(options),
+      speed_window_(settings.uncertainty.speed_window),
+      up_(up.normalized()),
+      occluder_(std::move(occluder)),
+      position_at_onset_(position_at_onset),
+      orientation_at_onset_(orientation_at_onset) {
+  const CarrierPose reference = carrier_pose(ensemble.frame.find(occluder_), &occluder_estimate,
+                                             options_.orientation_from_estimate);
+  occluder_position_at_onset_ = last_carrier_position_ = reference.position;
+  occluder_orientation_at_onset_ = last_carrier_orientation_ = reference.orientation;
+  // A cover at the object's level (a cup slid over a ball) moves it only by pushing it: it waits
+  // for the occluder's departure. One above it (a hand, a lifted tray) is followed from onset.
+  const bool level = std::abs(up_.dot(reference.position - position_at_onset_)) <= options_.reach;
+  const bool wait = options_.carry_from_departure && level;
+  carrying_ = !wait;
+  at_offset_ = options_.keep_offset || wait;
+  closest_distance_ = horizontal_distance(reference.position, position_at_onset_, up_);
+}
+
+bool OccluderCarry::departed(const Eigen::Vector3d& position,
+                             const Eigen::Quaterniond& orientation) {
+  // Still closing in over the object: it stays where it was covered, and the carry will start
+  // from the occluder's closest approach. Read from its measurements: its filtered estimate lags a
+  // cup closing in and overshoots where it stops short.
+  const double d = horizontal_distance(position, position_at_onset_, up_);
+  if (d <= closest_distance_) {
+    closest_distance_ = d;
+    occluder_position_at_onset_ = last_carrier_position_ = position;
+    occluder_orientation_at_onset_ = last_carrier_orientation_ = orientation;
+  }
+  // Departed: further from the object than at the closest approach, and moved off that place by
+  // the margin (tangentially too: a cup that stopped beside the ball and drags it sideways barely
+  // changes its distance).
+  const bool receding = d > closest_distance_;
+  const bool moved =
+      horizontal_distance(position, occluder_position_at_onset_, up_) > options_.departure_margin;
+  return receding && moved;
+}
+
+double OccluderCarry::speed(double t, const Eigen::Vector3d& position) {
+  carrier_track_.emplace_back(t, position);
+  while (carrier_track_.size() > 2 && t - carrier_track_[1].first >= speed_window_)
+    carrier_track_.pop_front();
+  // Divided by at least the window: right after onset the baseline is a frame or two, and a still
+  // occluder's jitter over one frame would read as speed.
+  const auto& [t0, p0] = carrier_track_.front();
+  return (position - p0).norm() / std::max(t - t0, std::max(speed_window_, 1e-9));
+}
+
+std::optional<VirtualMeasurementMotion::Measurement> OccluderCarry::measure(
+    double t, const EnsembleView& ensemble) {
+  // The occluder's measurement this frame (the paper's y_k^j), or its estimate when it is hidden
+  // itself (a chain of occlusions).
+  const Estimate* occluder_estimate = find_estimate(ensemble, occluder_);
+  const Detection* occluder_detection = ensemble.frame.find(occluder_);
+  if (!occluder_estimate && !occluder_detection) return std::nullopt;
+  const CarrierPose occluder =
+      carrier_pose(occluder_detection, occluder_estimate, options_.orientation_from_estimate);
+  if (!carrying_) {
+    if (!departed(occluder.position, occluder.orientation)) return std::nullopt;
+    carrying_ = true;
+  }
+  const Eigen::Quaterniond carried =
+      occluder.orientation * occluder_orientation_at_onset_.conjugate();
+  Measurement z;
+  z.position = occluder.position;
+  const Eigen::Vector3d onset_offset = carried * (position_at_onset_ - occluder_position_at_onset_);
+  if (at_offset_)
+    z.position += onset_offset;
+  else if (options_.keep_depth)
+    z.position += up_ * up_.dot(onset_offset);  // only the offset's height: it keeps its own
+  z.orientation = (carried * orientation_at_onset_).normalized();
+  z.carrier_from = last_carrier_position_;
+  z.carrier_to = occluder.position;
+  z.carrier_rotation = (occluder.orientation * last_carrier_orientation_.conjugate()).normalized();
+  z.about_carrier = at_offset_;
+  // Its speed for the uncertainty module from the filtered estimate: a still occluder reads as
+  // still rather than jittering with its measurement noise.
+  z.speed = speed(
+      t, occluder_estimate ? translation_of(occluder_estimate->pose.mean) : occluder.position);
+  last_carrier_position_ = occluder.position;
+  last_carrier_orientation_ = occluder.orientation;
+  return z;
+}
+
+}  // namespace opf
