@@ -168,7 +168,6 @@ Estimate OcclusionAwareParticleFilter::make_estimate(double t, EstimateMode mode
   estimate.observation_trace = filter_.observation_trace();
   estimate.mode = mode;
   estimate.recovery = recovery;
-  estimate.occlusion_probability = translation_occlusion_;
   return estimate;
 }
 

@@ -41,8 +41,7 @@ class OcclusionAwareParticleFilter final : public Estimator {
 
   std::string_view name() const override { return "oapf"; }
   Estimate initialise(double t, const mrpt::poses::CPose3D& first_measurement) override;
-  /// A missing measurement gives mode kRandomWalk, a present one kMeasured; the estimate's
-  /// occlusion_probability is translation_occlusion_probability().
+  /// A missing measurement gives mode kRandomWalk, a present one kMeasured.
   Estimate step(double t, const mrpt::poses::CPose3D* measurement,
                 const EnsembleView& ensemble) override;
 

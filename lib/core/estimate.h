@@ -27,11 +27,9 @@ struct Estimate {
   int hypothesis = 0;
   /// The feedback module's safety alert: observation_trace >= epsilon_safe (paper Sec. III-C).
   bool alert = false;
-  /// Probability that the object is occluded, for estimators that model it (occlusion-aware PF).
-  std::optional<double> occlusion_probability;
-  /// The motion models a dynamics module extrapolates with while the object is hidden (the OPF's:
-  /// the heaviest translation model per axis x, y, z, then the rotation model, e.g.
-  /// "cv,cv,cp/cw"); empty otherwise.
+  /// The motion model behind the estimate, where an estimator chooses among several (the OPF's
+  /// most probable bank model per axis x, y, z, then the rotation's, while hidden; the IMM's
+  /// most probable model per axis); empty otherwise.
   std::string motion_model;
 };
 

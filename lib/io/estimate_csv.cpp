@@ -31,7 +31,7 @@ constexpr std::array<std::string_view, 6> kPoseAxes = {"x", "y", "z", "yaw", "pi
 
 void write_estimate_header(std::ostream& out, EstimateColumns columns) {
   out << "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
-         "hypothesis,alert,occlusion_probability,model";
+         "hypothesis,alert,model";
   if (columns.covariance)
     for (std::size_t i = 0; i < kPoseAxes.size(); ++i)
       for (std::size_t j = i; j < kPoseAxes.size(); ++j)
@@ -55,9 +55,7 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate, EstimateCol
   for (int i = 0; i < 6; ++i) row += ',' + csv::format_double(std::sqrt(estimate.pose.cov(i, i)));
   row += ',' + std::to_string(estimate.hypothesis);
   row += estimate.alert ? ",1," : ",0,";
-  // Empty for estimators that do not model occlusion.
-  if (estimate.occlusion_probability) row += csv::format_double(*estimate.occlusion_probability);
-  row += ',' + csv::quote_if_needed(estimate.motion_model);
+  row += csv::quote_if_needed(estimate.motion_model);
   if (columns.covariance)
     for (int i = 0; i < 6; ++i)
       for (int j = i; j < 6; ++j) row += ',' + csv::format_double(estimate.pose.cov(i, j));
