@@ -51,6 +51,7 @@ void MixtureParticleMotion::move_translation(const MotionModelBank& bank, double
                                              TranslationParticles& particles) {
   const std::size_t n = particles.size();
   normals_.resize(n);
+  gathered_.resize(2 * n);
   for (int axis = 0; axis < 3; ++axis) {
     const std::size_t count = bank.members(axis).size();
     std::vector<double> shift(count), spread(count);
@@ -61,40 +62,66 @@ void MixtureParticleMotion::move_translation(const MotionModelBank& bank, double
       spread[j] = std::sqrt(std::max(0.0, to.variance - from.variance));
     }
     noise_.fill(normals_);
+    // Each particle's member's shift and spread gathered first, so that the update is one loop
+    // over contiguous rows that the compiler vectorises.
     const std::vector<std::uint16_t>& members =
         translation_members_[static_cast<std::size_t>(axis)];
-    double* row = particles.states.data() + static_cast<std::size_t>(axis) * n;
-    for (std::size_t i = 0; i < n; ++i)
-      row[i] += shift[members[i]] + spread[members[i]] * static_cast<double>(normals_[i]);
+    double* __restrict offset = gathered_.data();
+    double* __restrict sigma = offset + n;
+    for (std::size_t i = 0; i < n; ++i) {
+      offset[i] = shift[members[i]];
+      sigma[i] = spread[members[i]];
+    }
+    double* __restrict row = particles.states.data() + static_cast<std::size_t>(axis) * n;
+    const float* __restrict e = normals_.data();
+    for (std::size_t i = 0; i < n; ++i) row[i] += offset[i] + sigma[i] * static_cast<double>(e[i]);
   }
 }
 
 void MixtureParticleMotion::move_rotation(const RotationModelBank& bank, double h0, double h1,
                                           RotationParticles& particles) {
+  using Scalar = RotationParticles::States::Scalar;
   const std::size_t count = bank.members().size();
   std::vector<Eigen::Quaterniond> turn(count);
   std::vector<double> spread(count);
+  bool turns = false;
   for (std::size_t j = 0; j < count; ++j) {
     const RotationMemberPrediction from = bank.member_prediction(j, h0);
     const RotationMemberPrediction to = bank.member_prediction(j, h1);
     turn[j] = (to.orientation * from.orientation.conjugate()).normalized();
+    turns = turns || turn[j].vec().squaredNorm() > 0.0;
     spread[j] = std::sqrt(std::max(0.0, (to.covariance - from.covariance).trace() / 3.0));
   }
   const std::size_t n = particles.size();
-  auto* x = particles.states.data();
-  auto* y = x + n;
-  auto* z = y + n;
-  auto* w = z + n;
-  using Scalar = RotationParticles::States::Scalar;
   Eigen::VectorXd sigma(static_cast<Eigen::Index>(n));
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint16_t m = rotation_members_[i];
-    sigma[static_cast<Eigen::Index>(i)] = spread[m];
-    const Eigen::Quaterniond q = turn[m] * Eigen::Quaterniond(w[i], x[i], y[i], z[i]);
-    x[i] = static_cast<Scalar>(q.x());
-    y[i] = static_cast<Scalar>(q.y());
-    z[i] = static_cast<Scalar>(q.z());
-    w[i] = static_cast<Scalar>(q.w());
+  for (std::size_t i = 0; i < n; ++i)
+    sigma[static_cast<Eigen::Index>(i)] = spread[rotation_members_[i]];
+  if (turns) {
+    // q <- r q with each particle's member's turn r, gathered into rows first so that the
+    // product is one loop over contiguous rows; in double, as Eigen's product, and its order.
+    gathered_.resize(4 * n);
+    double* __restrict rx = gathered_.data();
+    double* __restrict ry = rx + n;
+    double* __restrict rz = ry + n;
+    double* __restrict rw = rz + n;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Quaterniond& r = turn[rotation_members_[i]];
+      rx[i] = r.x();
+      ry[i] = r.y();
+      rz[i] = r.z();
+      rw[i] = r.w();
+    }
+    Scalar* __restrict x = particles.states.data();
+    Scalar* __restrict y = x + n;
+    Scalar* __restrict z = y + n;
+    Scalar* __restrict w = z + n;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double bx = x[i], by = y[i], bz = z[i], bw = w[i];
+      x[i] = static_cast<Scalar>((rw[i] * bx + ry[i] * bz) - (rz[i] * by - rx[i] * bw));
+      y[i] = static_cast<Scalar>((rw[i] * by + ry[i] * bw) + (rz[i] * bx - rx[i] * bz));
+      z[i] = static_cast<Scalar>((rw[i] * bz - ry[i] * bx) + (rz[i] * bw + rx[i] * by));
+      w[i] = static_cast<Scalar>((rw[i] * bw - ry[i] * by) - (rz[i] * bz + rx[i] * bx));
+    }
   }
   predict_random_walk(particles, sigma, noise_);
 }

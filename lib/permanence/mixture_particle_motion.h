@@ -57,6 +57,7 @@ class MixtureParticleMotion {
   std::array<std::vector<std::uint16_t>, 3> translation_members_;
   std::vector<std::uint16_t> rotation_members_;
   std::vector<float> normals_;
+  std::vector<double> gathered_;  ///< the particles' members' shifts and spreads, or turns
 };
 
 }  // namespace opf
