@@ -153,12 +153,7 @@ def bar_chart(out, rows, variants):
 
 def main():
     args = parse_arguments()
-    out = os.path.abspath(args.out)
-    runs_dir = os.path.join(out, "runs")
-    os.makedirs(runs_dir, exist_ok=True)
-    logs = bench.recorded_logs(out, args.subset)
-    if not args.no_video:
-        logs += bench.video_logs(out, args.opf, args.subset)
+    out, runs_dir, logs = bench.prepare(args)
     variants = VARIANTS[:2] if args.subset else VARIANTS
     settings = {v[0]: write_settings(runs_dir, v) for v in variants}
     jobs = [(log, v, settings[v[0]]) for v in variants for log in logs]

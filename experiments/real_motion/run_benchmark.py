@@ -360,14 +360,20 @@ def figures(out, bins):
     return written
 
 
-def main():
-    args = parse_arguments()
+def prepare(args):
+    """The output directory, its runs/ folder and the logs (the clips too, unless --no-video)."""
     out = os.path.abspath(args.out)
     runs_dir = os.path.join(out, "runs")
     os.makedirs(runs_dir, exist_ok=True)
     logs = recorded_logs(out, args.subset)
     if not args.no_video:
         logs += video_logs(out, args.opf, args.subset)
+    return out, runs_dir, logs
+
+
+def main():
+    args = parse_arguments()
+    out, runs_dir, logs = prepare(args)
     presets = PRESETS[:1] if args.subset else PRESETS
     if not any(e in PAPER_ESTIMATORS for e in args.estimators.split(",")):
         presets = PRESETS[:1]
