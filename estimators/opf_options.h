@@ -78,10 +78,10 @@ struct OpfOptions {
   /// H, the states the motion test and the `paper` predictor look back on (paper: 50): estimates
   /// from frames with a real measurement.
   std::size_t history_length = 50;
-  /// After an occlusion longer than this (s) in which the object was carried by its occluder or
-  /// only predicted, the history restarts when it reappears: the states before it describe where
-  /// the object was, not how it moves now (the ball revealed at a new place must not read as
-  /// "moving" along the jump). It also restarts when a measurement resets the filter.
+  /// After an occlusion longer than this (s; a constant, not a setting) in which the object was
+  /// carried by its occluder or held, the history restarts when it reappears: the states before it
+  /// describe where the object was, not how it moves now (the ball revealed at a new place must
+  /// not read as "moving" along the jump). It also restarts when a measurement resets the filter.
   double history_reset_gap = 0.5;
   /// While hidden, move the particles with the carrier of the virtual measurement (the fitted
   /// trajectory, or the occluder's filtered estimate) as the motion model f of Eq. 3. The paper
@@ -95,7 +95,7 @@ struct OpfOptions {
   /// pure random walk.
   bool velocity_drift = true;
   /// While the object is visible, its rotation's observation noise is the detector's own jitter
-  /// (permanence/detector_jitter.h) over the last history_window seconds, between a tenth of the
+  /// (permanence/detector_jitter.h) over the last 2 s of measurements, between a tenth of the
   /// configured observation_noise.rotation and that value: a likelihood wider than the detector's
   /// noise trails every turn by a share of it. false: the configured value, always (the paper's).
   bool adaptive_rotation_noise = true;
