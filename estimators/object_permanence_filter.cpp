@@ -213,17 +213,22 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
 void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleView& ensemble) {
   // A hypothesis per occluder exists only while hidden; at onset there is one.
   hypotheses_.erase(hypotheses_.begin() + 1, hypotheses_.end());
-  Hypothesis& h = hypotheses_[0];
   const bool bank = options_.dynamics.predictor == DynamicsPredictor::kBank;
   // A moving object goes to the dynamics module, a static one to the occluder module (paper
   // Sec. III-B); with the bank, a static object no occluder hides is predicted by the bank too
   // (whose constant-position members then carry the weight).
-  if (options_.modules.dynamics && history_moves())
+  if (options_.modules.dynamics && history_moves()) {
+    Hypothesis& h = hypotheses_[0];
     h.motion = bank ? bank_mixture(h.filter) : fitted_trajectory(last_seen);
-  if (!h.motion && !(options_.modules.occluder && start_occluders(ensemble)) &&
-      options_.modules.dynamics && bank)
+    if (h.motion) return;
+  }
+  // The occluder module may add a hypothesis: hypotheses_ is not referenced across the call.
+  if (options_.modules.occluder && start_occluders(ensemble)) return;
+  Hypothesis& h = hypotheses_[0];
+  if (options_.modules.dynamics && bank)
     h.motion = bank_mixture(h.filter);
-  if (!h.motion) h.motion = std::make_unique<HeldMotion>(virtual_measurement_settings());
+  else
+    h.motion = std::make_unique<HeldMotion>(virtual_measurement_settings());
 }
 
 bool ObjectPermanenceFilter::history_moves() const {
