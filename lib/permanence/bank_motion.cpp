@@ -13,6 +13,7 @@ BankMotion::BankMotion(const MotionModelBank& translation, const RotationModelBa
       max_scale_(uncertainty.max_scale),
       uncertainty_module_(uncertainty_module) {
   motion_.start(translation_, rotation_, filter);
+  label_ = MixtureParticleMotion::label(translation_, rotation_);
 }
 
 HiddenStep BankMotion::step(double t_previous, double t, const EnsembleView&,
@@ -23,7 +24,7 @@ HiddenStep BankMotion::step(double t_previous, double t, const EnsembleView&,
   motion_.advance(translation_, rotation_, t_previous - last, t - last, filter);
   const double q = filter.observation_trace(1.0);
   const double cap = (max_scale_ - 1.0) * q;
-  const double added = MixtureParticleMotion::added_trace(translation_, rotation_, t - last);
+  const double added = motion_.added_trace();
   if (!uncertainty_module_) return {q, {}};
   return {q + std::min(added, cap), {.trace_capped = added >= cap}};
 }

@@ -31,6 +31,7 @@ class BankMotion final : public HiddenMotion {
   MixtureParticleMotion motion_;
   double max_scale_;
   bool uncertainty_module_;
+  std::string label_;  ///< the most probable models (the weights are fixed while hidden)
 };
 
 }  // namespace opf

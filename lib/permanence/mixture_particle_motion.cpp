@@ -27,12 +27,19 @@ void MixtureParticleMotion::start(const MotionModelBank& translation,
     throw std::logic_error("MixtureParticleMotion::start before the banks saw a measurement");
   const std::size_t n = filter.translation().size();
   for (int axis = 0; axis < 3; ++axis) {
-    std::vector<std::uint16_t>& members = translation_members_[static_cast<std::size_t>(axis)];
-    members.resize(n);
-    for (std::uint16_t& m : members) m = draw(translation.sample_member(axis, random_.uniform()));
+    const auto a = static_cast<std::size_t>(axis);
+    translation_members_[a].resize(n);
+    for (std::uint16_t& m : translation_members_[a])
+      m = draw(translation.sample_member(axis, random_.uniform()));
+    const std::span<const double> w = translation.weights(axis);
+    weights_[a].assign(w.begin(), w.end());
   }
   rotation_members_.resize(filter.rotation().size());
   for (std::uint16_t& m : rotation_members_) m = draw(rotation.sample_member(random_.uniform()));
+  const std::span<const double> w = rotation.weights();
+  rotation_weights_.assign(w.begin(), w.end());
+  predict(translation, rotation, 0.0, last_);
+  trace_at_onset_ = mixture_trace(last_);
 }
 
 void MixtureParticleMotion::advance(const MotionModelBank& translation,
@@ -43,54 +50,97 @@ void MixtureParticleMotion::advance(const MotionModelBank& translation,
   if (translation_members_[0].size() != filter.translation().size() ||
       rotation_members_.size() != filter.rotation().size())
     throw std::logic_error("MixtureParticleMotion::advance before start");
-  move_translation(translation, h0, h1, filter.translation());
-  move_rotation(rotation, h0, h1, filter.rotation());
+  if (last_.horizon != h0) predict(translation, rotation, h0, last_);
+  predict(translation, rotation, h1, next_);
+  move_translation(last_, next_, filter.translation());
+  move_rotation(last_, next_, filter.rotation());
+  std::swap(last_, next_);
 }
 
-void MixtureParticleMotion::move_translation(const MotionModelBank& bank, double h0, double h1,
+void MixtureParticleMotion::predict(const MotionModelBank& translation,
+                                    const RotationModelBank& rotation, double horizon,
+                                    Predictions& out) {
+  out.horizon = horizon;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto a = static_cast<std::size_t>(axis);
+    const std::size_t count = translation.members(axis).size();
+    out.mean[a].resize(count);
+    out.variance[a].resize(count);
+    for (std::size_t j = 0; j < count; ++j) {
+      const MemberPrediction p = translation.member_prediction(axis, j, horizon);
+      out.mean[a][j] = p.mean;
+      out.variance[a][j] = p.variance;
+    }
+  }
+  const std::size_t count = rotation.members().size();
+  out.orientation.resize(count);
+  out.rotation_trace.resize(count);
+  for (std::size_t j = 0; j < count; ++j) {
+    const RotationMemberPrediction p = rotation.member_prediction(j, horizon);
+    out.orientation[j] = p.orientation;
+    out.rotation_trace[j] = p.covariance.trace();
+  }
+}
+
+double MixtureParticleMotion::mixture_trace(const Predictions& p) const {
+  double trace = 0.0;
+  for (std::size_t a = 0; a < 3; ++a) {
+    double mean = 0.0, second = 0.0;
+    for (std::size_t j = 0; j < weights_[a].size(); ++j) {
+      mean += weights_[a][j] * p.mean[a][j];
+      second += weights_[a][j] * (p.variance[a][j] + p.mean[a][j] * p.mean[a][j]);
+    }
+    trace += second - mean * mean;
+  }
+  for (std::size_t j = 0; j < rotation_weights_.size(); ++j)
+    trace += rotation_weights_[j] * p.rotation_trace[j];
+  return trace;
+}
+
+double MixtureParticleMotion::added_trace() const {
+  return std::max(0.0, mixture_trace(last_) - trace_at_onset_);
+}
+
+void MixtureParticleMotion::move_translation(const Predictions& from, const Predictions& to,
                                              TranslationParticles& particles) {
   const std::size_t n = particles.size();
   normals_.resize(n);
   gathered_.resize(2 * n);
-  for (int axis = 0; axis < 3; ++axis) {
-    const std::size_t count = bank.members(axis).size();
-    std::vector<double> shift(count), spread(count);
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    const std::size_t count = from.mean[axis].size();
+    std::array<double, 64> shift{}, spread{};
+    if (count > shift.size()) throw std::logic_error("MixtureParticleMotion: too many members");
     for (std::size_t j = 0; j < count; ++j) {
-      const MemberPrediction from = bank.member_prediction(axis, j, h0);
-      const MemberPrediction to = bank.member_prediction(axis, j, h1);
-      shift[j] = to.mean - from.mean;
-      spread[j] = std::sqrt(std::max(0.0, to.variance - from.variance));
+      shift[j] = to.mean[axis][j] - from.mean[axis][j];
+      spread[j] = std::sqrt(std::max(0.0, to.variance[axis][j] - from.variance[axis][j]));
     }
     noise_.fill(normals_);
     // Each particle's member's shift and spread gathered first, so that the update is one loop
     // over contiguous rows that the compiler vectorises.
-    const std::vector<std::uint16_t>& members =
-        translation_members_[static_cast<std::size_t>(axis)];
+    const std::vector<std::uint16_t>& members = translation_members_[axis];
     double* __restrict offset = gathered_.data();
     double* __restrict sigma = offset + n;
     for (std::size_t i = 0; i < n; ++i) {
       offset[i] = shift[members[i]];
       sigma[i] = spread[members[i]];
     }
-    double* __restrict row = particles.states.data() + static_cast<std::size_t>(axis) * n;
+    double* __restrict row = particles.states.data() + axis * n;
     const float* __restrict e = normals_.data();
     for (std::size_t i = 0; i < n; ++i) row[i] += offset[i] + sigma[i] * static_cast<double>(e[i]);
   }
 }
 
-void MixtureParticleMotion::move_rotation(const RotationModelBank& bank, double h0, double h1,
+void MixtureParticleMotion::move_rotation(const Predictions& from, const Predictions& to,
                                           RotationParticles& particles) {
   using Scalar = RotationParticles::States::Scalar;
-  const std::size_t count = bank.members().size();
+  const std::size_t count = from.orientation.size();
   std::vector<Eigen::Quaterniond> turn(count);
   std::vector<double> spread(count);
   bool turns = false;
   for (std::size_t j = 0; j < count; ++j) {
-    const RotationMemberPrediction from = bank.member_prediction(j, h0);
-    const RotationMemberPrediction to = bank.member_prediction(j, h1);
-    turn[j] = (to.orientation * from.orientation.conjugate()).normalized();
+    turn[j] = (to.orientation[j] * from.orientation[j].conjugate()).normalized();
     turns = turns || turn[j].vec().squaredNorm() > 0.0;
-    spread[j] = std::sqrt(std::max(0.0, (to.covariance - from.covariance).trace() / 3.0));
+    spread[j] = std::sqrt(std::max(0.0, (to.rotation_trace[j] - from.rotation_trace[j]) / 3.0));
   }
   const std::size_t n = particles.size();
   Eigen::VectorXd sigma(static_cast<Eigen::Index>(n));
@@ -124,17 +174,6 @@ void MixtureParticleMotion::move_rotation(const RotationModelBank& bank, double 
     }
   }
   predict_random_walk(particles, sigma, noise_);
-}
-
-double MixtureParticleMotion::added_trace(const MotionModelBank& translation,
-                                          const RotationModelBank& rotation, double h) {
-  double trace =
-      translation.predict(h).variance().sum() - translation.predict(0.0).variance().sum();
-  const std::span<const double> weights = rotation.weights();
-  for (std::size_t j = 0; j < weights.size(); ++j)
-    trace += weights[j] * (rotation.member_prediction(j, h).covariance.trace() -
-                           rotation.member_prediction(j, 0.0).covariance.trace());
-  return std::max(0.0, trace);
 }
 
 std::string MixtureParticleMotion::label(const MotionModelBank& translation,

@@ -34,28 +34,45 @@ class MixtureParticleMotion {
   /// Draws every particle's member from the banks' probabilities (both banks initialised).
   void start(const MotionModelBank& translation, const RotationModelBank& rotation,
              const PoseParticleFilter& filter);
-  /// Moves the particles from horizon h0 to h1 >= h0 (s after the banks' last update).
+  /// Moves the particles from horizon h0 to h1 >= h0 (s after the banks' last update). The
+  /// members' predictions at h1 are kept for the next step, whose h0 it is.
   void advance(const MotionModelBank& translation, const RotationModelBank& rotation, double h0,
                double h1, PoseParticleFilter& filter);
 
-  /// The trace of the mixture's covariance at horizon h less its trace at 0 (m^2 + rad^2): the
-  /// uncertainty the prediction added to the cloud's.
-  static double added_trace(const MotionModelBank& translation, const RotationModelBank& rotation,
-                            double h);
+  /// The trace of the mixture's covariance at the last horizon advanced to, less its trace at 0
+  /// (m^2 + rad^2): the uncertainty the prediction added to the cloud's.
+  double added_trace() const;
   /// The most probable model per axis, then the rotation's, e.g.
   /// "constant_velocity,constant_velocity,ballistic/constant_angular_velocity".
   static std::string label(const MotionModelBank& translation, const RotationModelBank& rotation);
 
  private:
-  void move_translation(const MotionModelBank& bank, double h0, double h1,
+  /// Every member's prediction at one horizon.
+  struct Predictions {
+    double horizon = -1.0;
+    std::array<std::vector<double>, 3> mean, variance;  ///< per axis and member (m, m^2)
+    std::vector<Eigen::Quaterniond> orientation;       ///< per rotation member
+    std::vector<double> rotation_trace;                 ///< rad^2
+  };
+  static void predict(const MotionModelBank& translation, const RotationModelBank& rotation,
+                      double horizon, Predictions& out);
+  /// trace of the mixture's covariance (translation by the law of total variance; rotation by
+  /// the members' traces).
+  double mixture_trace(const Predictions& p) const;
+  void move_translation(const Predictions& from, const Predictions& to,
                         TranslationParticles& particles);
-  void move_rotation(const RotationModelBank& bank, double h0, double h1,
+  void move_rotation(const Predictions& from, const Predictions& to,
                      RotationParticles& particles);
 
   Random random_;          ///< the members' draws
   GaussianSampler noise_;  ///< the spread, in bulk
   std::array<std::vector<std::uint16_t>, 3> translation_members_;
   std::vector<std::uint16_t> rotation_members_;
+  std::array<std::vector<double>, 3> weights_;  ///< the members' at the last measurement
+  std::vector<double> rotation_weights_;
+  Predictions last_;  ///< at the last horizon reached
+  Predictions next_;
+  double trace_at_onset_ = 0.0;
   std::vector<float> normals_;
   std::vector<double> gathered_;  ///< the particles' members' shifts and spreads, or turns
 };

@@ -124,10 +124,9 @@ TEST(EnsembleSoak, AMillionObjectStepsStayFiniteInFlatMemory) {
   // ... and reported them: each wrong measurement (5 m = 500 sigmas off) and the return to the
   // truth after it re-scatter the cloud. A cycle lasts 2 + 0.98 * 1 + 0.02 * 120 = 5.4 s on
   // average, so the 8 x 4167 s hold about 124 two-minute occlusions (Poisson, sd 11). The
-  // dynamics module's prediction variance grows with the time hidden (as h^2 to h^4, fitted to
-  // each object's own history, its random acceleration estimated robustly) and reaches the cap
-  // of 10^6 Q within the first 90 s of each: about 124 x 30 s x 30 Hz = 112 000 capped
-  // object-steps, over 100 000 (the paper predictor's kappa^v inflation reaches it after 468
+  // variance of the motion-model banks' mixture grows with the time hidden (as h^3 for its
+  // constant-velocity members) and reaches the cap of 10^6 Q within the first 90 s of each: over
+  // 100 000 capped object-steps (the paper predictor's kappa^v inflation reaches it after 468
   // frames, 390 000 in all).
   EXPECT_GE(resets, wrong_measurements);
   EXPECT_GT(capped, 100'000u);
