@@ -51,7 +51,7 @@ class MixtureParticleMotion {
   struct Predictions {
     double horizon = -1.0;
     std::array<std::vector<double>, 3> mean, variance;  ///< per axis and member (m, m^2)
-    std::vector<Eigen::Quaterniond> orientation;       ///< per rotation member
+    std::vector<Eigen::Quaterniond> orientation;        ///< per rotation member
     std::vector<double> rotation_trace;                 ///< rad^2
   };
   static void predict(const MotionModelBank& translation, const RotationModelBank& rotation,
@@ -61,8 +61,7 @@ class MixtureParticleMotion {
   double mixture_trace(const Predictions& p) const;
   void move_translation(const Predictions& from, const Predictions& to,
                         TranslationParticles& particles);
-  void move_rotation(const Predictions& from, const Predictions& to,
-                     RotationParticles& particles);
+  void move_rotation(const Predictions& from, const Predictions& to, RotationParticles& particles);
 
   Random random_;          ///< the members' draws
   GaussianSampler noise_;  ///< the spread, in bulk
