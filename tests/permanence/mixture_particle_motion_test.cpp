@@ -12,7 +12,7 @@
 namespace opf {
 namespace {
 
-constexpr double kRate = 30.0;        // Hz
+constexpr double kRate = 30.0;         // Hz
 constexpr std::size_t kCount = 20000;  // particles per portion
 
 // Banks that saw a second of an object moving along x at 0.5 m/s, falling along z under gravity
@@ -138,8 +138,7 @@ TEST(MixtureParticleMotion, RefusesStepsOutOfOrderAndUnstartedClouds) {
   MixtureParticleMotion motion(1);
   EXPECT_THROW(motion.advance(s.translation, s.rotation, 0.0, 0.1, filter), std::logic_error);
   motion.start(s.translation, s.rotation, filter);
-  EXPECT_THROW(motion.advance(s.translation, s.rotation, 0.2, 0.1, filter),
-               std::invalid_argument);
+  EXPECT_THROW(motion.advance(s.translation, s.rotation, 0.2, 0.1, filter), std::invalid_argument);
   EXPECT_THROW(motion.start(MotionModelBank(), s.rotation, filter), std::logic_error);
 }
 
