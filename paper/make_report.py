@@ -261,7 +261,7 @@ def benchmarks(out, bench):
              ("random-walk OAPF step", time_of("BM_EstimatorStep/oapf/n:5000"), r"$\mu$s", ""),
              ("CV Kalman step", time_of("BM_CvKalmanStep"), r"$\mu$s", ""),
              ("IMM Kalman step", time_of("BM_ImmStep"), r"$\mu$s", ""),
-             ("model choice at onset, 100 Hz", time_of("BM_PredictMotion/rate_hz:100/wandering:1", "ms"), "ms", r"$\le$ 1"),
+             ("motion-model banks' update per object", time_of("BM_BankUpdate"), r"$\mu$s", r"$\le$ 5"),
              ("64 objects, 1 thread", time_of("BM_EnsembleFrame/objects:64/threads:1/real_time", "ms"), "ms", ""),
              ("64 objects, 2 threads", time_of("BM_EnsembleFrame/objects:64/threads:2/real_time", "ms"), "ms", r"$\le$ 2"),
              ("render + detect 640$\\times$480", time_of("BM_RenderAndDetectFrame", "ms"), "ms", r"$\le$ 10")]
