@@ -31,13 +31,9 @@ void MixtureParticleMotion::start(const MotionModelBank& translation,
     translation_members_[a].resize(n);
     for (std::uint16_t& m : translation_members_[a])
       m = draw(translation.sample_member(axis, random_.uniform()));
-    const std::span<const double> w = translation.weights(axis);
-    weights_[a].assign(w.begin(), w.end());
   }
   rotation_members_.resize(filter.rotation().size());
   for (std::uint16_t& m : rotation_members_) m = draw(rotation.sample_member(random_.uniform()));
-  const std::span<const double> w = rotation.weights();
-  rotation_weights_.assign(w.begin(), w.end());
   predict(translation, rotation, 0.0, last_);
   trace_at_onset_ = mixture_trace(last_);
 }
@@ -62,38 +58,21 @@ void MixtureParticleMotion::predict(const MotionModelBank& translation,
                                     Predictions& out) {
   out.horizon = horizon;
   for (int axis = 0; axis < 3; ++axis) {
-    const auto a = static_cast<std::size_t>(axis);
-    const std::size_t count = translation.members(axis).size();
-    out.mean[a].resize(count);
-    out.variance[a].resize(count);
-    for (std::size_t j = 0; j < count; ++j) {
-      const MemberPrediction p = translation.member_prediction(axis, j, horizon);
-      out.mean[a][j] = p.mean;
-      out.variance[a][j] = p.variance;
-    }
+    std::vector<MemberPrediction>& members =
+        out.translation.axes[static_cast<std::size_t>(axis)].members;
+    members.resize(translation.members(axis).size());
+    for (std::size_t j = 0; j < members.size(); ++j)
+      members[j] = translation.member_prediction(axis, j, horizon);
   }
-  const std::size_t count = rotation.members().size();
-  out.orientation.resize(count);
-  out.rotation_trace.resize(count);
-  for (std::size_t j = 0; j < count; ++j) {
-    const RotationMemberPrediction p = rotation.member_prediction(j, horizon);
-    out.orientation[j] = p.orientation;
-    out.rotation_trace[j] = p.covariance.trace();
-  }
+  out.rotation.resize(rotation.members().size());
+  for (std::size_t j = 0; j < out.rotation.size(); ++j)
+    out.rotation[j] = rotation.member_prediction(j, horizon);
 }
 
-double MixtureParticleMotion::mixture_trace(const Predictions& p) const {
-  double trace = 0.0;
-  for (std::size_t a = 0; a < 3; ++a) {
-    double mean = 0.0, second = 0.0;
-    for (std::size_t j = 0; j < weights_[a].size(); ++j) {
-      mean += weights_[a][j] * p.mean[a][j];
-      second += weights_[a][j] * (p.variance[a][j] + p.mean[a][j] * p.mean[a][j]);
-    }
-    trace += second - mean * mean;
-  }
-  for (std::size_t j = 0; j < rotation_weights_.size(); ++j)
-    trace += rotation_weights_[j] * p.rotation_trace[j];
+double MixtureParticleMotion::mixture_trace(const Predictions& p) {
+  double trace = p.translation.variance().sum();
+  for (const RotationMemberPrediction& member : p.rotation)
+    trace += member.weight * member.covariance.trace();
   return trace;
 }
 
@@ -107,12 +86,14 @@ void MixtureParticleMotion::move_translation(const Predictions& from, const Pred
   normals_.resize(n);
   gathered_.resize(2 * n);
   for (std::size_t axis = 0; axis < 3; ++axis) {
-    const std::size_t count = from.mean[axis].size();
+    const std::vector<MemberPrediction>& before = from.translation.axes[axis].members;
+    const std::vector<MemberPrediction>& after = to.translation.axes[axis].members;
+    const std::size_t count = before.size();
     std::array<double, 64> shift{}, spread{};
     if (count > shift.size()) throw std::logic_error("MixtureParticleMotion: too many members");
     for (std::size_t j = 0; j < count; ++j) {
-      shift[j] = to.mean[axis][j] - from.mean[axis][j];
-      spread[j] = std::sqrt(std::max(0.0, to.variance[axis][j] - from.variance[axis][j]));
+      shift[j] = after[j].mean - before[j].mean;
+      spread[j] = std::sqrt(std::max(0.0, after[j].variance - before[j].variance));
     }
     noise_.fill(normals_);
     // Each particle's member's shift and spread gathered first, so that the update is one loop
@@ -133,14 +114,15 @@ void MixtureParticleMotion::move_translation(const Predictions& from, const Pred
 void MixtureParticleMotion::move_rotation(const Predictions& from, const Predictions& to,
                                           RotationParticles& particles) {
   using Scalar = RotationParticles::States::Scalar;
-  const std::size_t count = from.orientation.size();
+  const std::size_t count = from.rotation.size();
   std::vector<Eigen::Quaterniond> turn(count);
   std::vector<double> spread(count);
   bool turns = false;
   for (std::size_t j = 0; j < count; ++j) {
-    turn[j] = (to.orientation[j] * from.orientation[j].conjugate()).normalized();
+    turn[j] = (to.rotation[j].orientation * from.rotation[j].orientation.conjugate()).normalized();
     turns = turns || turn[j].vec().squaredNorm() > 0.0;
-    spread[j] = std::sqrt(std::max(0.0, (to.rotation_trace[j] - from.rotation_trace[j]) / 3.0));
+    spread[j] = std::sqrt(std::max(
+        0.0, (to.rotation[j].covariance.trace() - from.rotation[j].covariance.trace()) / 3.0));
   }
   const std::size_t n = particles.size();
   Eigen::VectorXd sigma(static_cast<Eigen::Index>(n));

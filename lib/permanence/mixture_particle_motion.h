@@ -47,18 +47,17 @@ class MixtureParticleMotion {
   static std::string label(const MotionModelBank& translation, const RotationModelBank& rotation);
 
  private:
-  /// Every member's prediction at one horizon.
+  /// Every member's prediction at one horizon, with its weight (fixed while hidden).
   struct Predictions {
     double horizon = -1.0;
-    std::array<std::vector<double>, 3> mean, variance;  ///< per axis and member (m, m^2)
-    std::vector<Eigen::Quaterniond> orientation;        ///< per rotation member
-    std::vector<double> rotation_trace;                 ///< rad^2
+    BankPrediction translation;
+    std::vector<RotationMemberPrediction> rotation;
   };
   static void predict(const MotionModelBank& translation, const RotationModelBank& rotation,
                       double horizon, Predictions& out);
   /// trace of the mixture's covariance (translation by the law of total variance; rotation by
   /// the members' traces).
-  double mixture_trace(const Predictions& p) const;
+  static double mixture_trace(const Predictions& p);
   void move_translation(const Predictions& from, const Predictions& to,
                         TranslationParticles& particles);
   void move_rotation(const Predictions& from, const Predictions& to, RotationParticles& particles);
@@ -67,8 +66,6 @@ class MixtureParticleMotion {
   GaussianSampler noise_;  ///< the spread, in bulk
   std::array<std::vector<std::uint16_t>, 3> translation_members_;
   std::vector<std::uint16_t> rotation_members_;
-  std::array<std::vector<double>, 3> weights_;  ///< the members' at the last measurement
-  std::vector<double> rotation_weights_;
   Predictions last_;  ///< at the last horizon reached
   Predictions next_;
   double trace_at_onset_ = 0.0;
