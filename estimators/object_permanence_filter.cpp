@@ -260,8 +260,7 @@ std::unique_ptr<HiddenMotion> ObjectPermanenceFilter::fitted_trajectory(double l
   }
 }
 
-std::unique_ptr<HiddenMotion> ObjectPermanenceFilter::bank_mixture(
-    const PoseParticleFilter& filter) {
+std::unique_ptr<HiddenMotion> ObjectPermanenceFilter::bank_mixture(PoseParticleFilter& filter) {
   return std::make_unique<BankMotion>(translation_bank_, rotation_bank_, filter,
                                       options_.uncertainty, options_.modules.uncertainty,
                                       derive_seed(seed_, kMixtureStreams + ++occlusions_));

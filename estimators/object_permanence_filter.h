@@ -61,7 +61,7 @@ class ObjectPermanenceFilter final : public Estimator {
   bool history_moves() const;
   /// The paper predictor's source: the Ceres fit of the history, if it can be fitted.
   std::unique_ptr<HiddenMotion> fitted_trajectory(double last_seen) const;
-  std::unique_ptr<HiddenMotion> bank_mixture(const PoseParticleFilter& filter);
+  std::unique_ptr<HiddenMotion> bank_mixture(PoseParticleFilter& filter);
   /// The occluder module: false when no object can hide this one.
   bool start_occluders(const EnsembleView& ensemble);
   VirtualMeasurementMotion::Settings virtual_measurement_settings() const;

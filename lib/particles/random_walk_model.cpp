@@ -97,6 +97,51 @@ void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& si
   perturb(particles, 0.0, sigma.data(), noise);
 }
 
+void predict_row_by_member(TranslationParticles& particles, std::size_t row,
+                           std::span<const std::uint8_t> members, std::span<const double> offset,
+                           std::span<const double> spread, GaussianSampler& noise) {
+  const std::size_t n = particles.size();
+  if (row >= 3 || members.size() != n || offset.size() != spread.size() || offset.size() > 256)
+    throw std::invalid_argument("predict_row_by_member: a row, a member per particle, tables");
+  // Tables of 256 entries (zero beyond the models'), so that no member can read past them.
+  std::array<double, 256> offsets{}, spreads{};
+  std::copy(offset.begin(), offset.end(), offsets.begin());
+  std::copy(spread.begin(), spread.end(), spreads.begin());
+  alignas(64) std::array<float, kChunk> block;
+  double* x = particles.states.data() + row * n;
+  for (std::size_t begin = 0; begin < n; begin += kChunk) {
+    const std::size_t count = std::min(kChunk, n - begin);
+    noise.fill({block.data(), count});
+    kernels::add_member_offset_and_noise(x + begin, block.data(), members.data() + begin,
+                                         offsets.data(), spreads.data(), count);
+  }
+}
+
+void predict_segments(RotationParticles& particles, std::span<const std::size_t> ends,
+                      std::span<const Eigen::Quaterniond> turn, std::span<const double> spread,
+                      GaussianSampler& noise) {
+  const std::size_t n = particles.size();
+  if (ends.size() != turn.size() || turn.size() != spread.size() ||
+      !std::is_sorted(ends.begin(), ends.end()) || (!ends.empty() && ends.back() != n))
+    throw std::invalid_argument("predict_segments: ascending segment ends up to N, one step each");
+  alignas(64) std::array<float, 3 * kChunk> block;
+  std::size_t begin = 0;
+  for (std::size_t k = 0; k < ends.size(); begin = ends[k++]) {
+    const Eigen::Quaterniond unit = turn[k].normalized();
+    const std::array<double, 4> r{unit.x(), unit.y(), unit.z(), unit.w()};
+    const bool turns = unit.vec().squaredNorm() > 0.0;
+    for (std::size_t first = begin; first < ends[k]; first += kChunk) {
+      const std::size_t count = std::min(kChunk, ends[k] - first);
+      noise.fill({block.data(), 3 * count});
+      float* q = particles.states.data() + first;
+      if (turns)
+        kernels::turn_and_perturb_quaternions(q, n, count, block.data(), spread[k], r);
+      else
+        kernels::perturb_quaternions(q, n, count, block.data(), spread[k], nullptr);
+    }
+  }
+}
+
 void predict_random_walk_per_axis(TranslationParticles& particles, const Eigen::Vector3d& sigma,
                                   GaussianSampler& noise) {
   add_noise(particles, sigma, nullptr, noise);

@@ -9,6 +9,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cstdint>
+#include <span>
+
 namespace opf {
 
 void predict_random_walk(TranslationParticles& particles, double sigma, GaussianSampler& noise);
@@ -26,6 +29,18 @@ void predict_random_walk(TranslationParticles& particles, const Eigen::VectorXd&
                          GaussianSampler& noise);
 void predict_random_walk(RotationParticles& particles, const Eigen::VectorXd& sigma,
                          GaussianSampler& noise);
+
+/// A multiple-model step: every particle moved by its own motion model. Translation, one
+/// coordinate row r at a time, with m_i = members[i] an index into tables of at most 256 models
+/// (a member past them does not move):
+/// x' = x + offset[m_i] + spread[m_i] e. Rotation, with the particles grouped by model into
+/// consecutive segments (segment k ends before particle ends[k]): q' = turn[k] q exp(spread[k] e).
+void predict_row_by_member(TranslationParticles& particles, std::size_t row,
+                           std::span<const std::uint8_t> members, std::span<const double> offset,
+                           std::span<const double> spread, GaussianSampler& noise);
+void predict_segments(RotationParticles& particles, std::span<const std::size_t> ends,
+                      std::span<const Eigen::Quaterniond> turn, std::span<const double> spread,
+                      GaussianSampler& noise);
 
 /// Translation noise with its own spread per world axis (sigma(d) for coordinate d).
 void predict_random_walk_per_axis(TranslationParticles& particles, const Eigen::Vector3d& sigma,

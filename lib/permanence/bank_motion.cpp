@@ -5,7 +5,7 @@
 namespace opf {
 
 BankMotion::BankMotion(const MotionModelBank& translation, const RotationModelBank& rotation,
-                       const PoseParticleFilter& filter, const UncertaintyOptions& uncertainty,
+                       PoseParticleFilter& filter, const UncertaintyOptions& uncertainty,
                        bool uncertainty_module, std::uint64_t seed)
     : translation_(translation),
       rotation_(rotation),

@@ -13,7 +13,7 @@ class BankMotion final : public HiddenMotion {
  public:
   /// Draws the particles' members (`seed`: this gap's draws). `uncertainty_module` off: Q~ = Q.
   BankMotion(const MotionModelBank& translation, const RotationModelBank& rotation,
-             const PoseParticleFilter& filter, const UncertaintyOptions& uncertainty,
+             PoseParticleFilter& filter, const UncertaintyOptions& uncertainty,
              bool uncertainty_module, std::uint64_t seed);
 
   std::unique_ptr<HiddenMotion> clone() const override {

@@ -11,8 +11,9 @@ namespace {
 
 constexpr std::uint64_t kNoiseStream = 1;
 
-std::uint16_t draw(std::size_t member) {
-  return static_cast<std::uint16_t>(member);
+std::uint8_t draw(std::size_t member) {
+  if (member > 255) throw std::logic_error("MixtureParticleMotion: more than 256 members");
+  return static_cast<std::uint8_t>(member);
 }
 
 }  // namespace
@@ -21,19 +22,17 @@ MixtureParticleMotion::MixtureParticleMotion(std::uint64_t seed)
     : random_(seed), noise_(derive_seed(seed, kNoiseStream)) {}
 
 void MixtureParticleMotion::start(const MotionModelBank& translation,
-                                  const RotationModelBank& rotation,
-                                  const PoseParticleFilter& filter) {
+                                  const RotationModelBank& rotation, PoseParticleFilter& filter) {
   if (!translation.initialised() || !rotation.initialised())
     throw std::logic_error("MixtureParticleMotion::start before the banks saw a measurement");
   const std::size_t n = filter.translation().size();
   for (int axis = 0; axis < 3; ++axis) {
     const auto a = static_cast<std::size_t>(axis);
     translation_members_[a].resize(n);
-    for (std::uint16_t& m : translation_members_[a])
+    for (std::uint8_t& m : translation_members_[a])
       m = draw(translation.sample_member(axis, random_.uniform()));
   }
-  rotation_members_.resize(filter.rotation().size());
-  for (std::uint16_t& m : rotation_members_) m = draw(rotation.sample_member(random_.uniform()));
+  group_by_member(rotation, filter.rotation());
   predict(translation, rotation, 0.0, last_);
   trace_at_onset_ = mixture_trace(last_);
 }
@@ -44,13 +43,39 @@ void MixtureParticleMotion::advance(const MotionModelBank& translation,
   if (!(h0 >= 0.0) || !(h1 >= h0))
     throw std::invalid_argument("MixtureParticleMotion::advance needs 0 <= h0 <= h1");
   if (translation_members_[0].size() != filter.translation().size() ||
-      rotation_members_.size() != filter.rotation().size())
+      rotation_ends_.empty() || rotation_ends_.back() != filter.rotation().size())
     throw std::logic_error("MixtureParticleMotion::advance before start");
   if (last_.horizon != h0) predict(translation, rotation, h0, last_);
   predict(translation, rotation, h1, next_);
   move_translation(last_, next_, filter.translation());
   move_rotation(last_, next_, filter.rotation());
   std::swap(last_, next_);
+}
+
+void MixtureParticleMotion::group_by_member(const RotationModelBank& rotation,
+                                            RotationParticles& particles) {
+  // Members drawn independently per particle as before; the particles are then reordered so that
+  // each member's are consecutive (a counting sort, stable), weights and all. The set and its
+  // weights are unchanged; the step becomes one vectorised pass per member.
+  const std::size_t n = particles.size();
+  std::vector<std::uint8_t> member(n);
+  rotation_ends_.assign(rotation.members().size(), 0);
+  for (std::uint8_t& m : member) {
+    m = draw(rotation.sample_member(random_.uniform()));
+    ++rotation_ends_[m];
+  }
+  std::vector<std::size_t> next(rotation_ends_.size(), 0);
+  for (std::size_t k = 1; k < next.size(); ++k) next[k] = next[k - 1] + rotation_ends_[k - 1];
+  for (std::size_t k = 0; k < next.size(); ++k) rotation_ends_[k] = next[k] + rotation_ends_[k];
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[next[member[i]]++] = i;
+  const bool uniform = particles.weights.uniform();
+  const Eigen::VectorXd log_weights = uniform ? Eigen::VectorXd() : particles.weights.log();
+  particles.resample(order);  // a permutation: every particle once, then uniform weights
+  if (uniform) return;
+  Eigen::VectorXd& reordered = particles.weights.log();
+  for (std::size_t i = 0; i < n; ++i)
+    reordered[static_cast<Eigen::Index>(i)] = log_weights[static_cast<Eigen::Index>(order[i])];
 }
 
 void MixtureParticleMotion::predict(const MotionModelBank& translation,
@@ -82,80 +107,29 @@ double MixtureParticleMotion::added_trace() const {
 
 void MixtureParticleMotion::move_translation(const Predictions& from, const Predictions& to,
                                              TranslationParticles& particles) {
-  const std::size_t n = particles.size();
-  normals_.resize(n);
-  gathered_.resize(2 * n);
   for (std::size_t axis = 0; axis < 3; ++axis) {
     const std::vector<MemberPrediction>& before = from.translation.axes[axis].members;
     const std::vector<MemberPrediction>& after = to.translation.axes[axis].members;
-    const std::size_t count = before.size();
-    std::array<double, 64> shift{}, spread{};
-    if (count > shift.size()) throw std::logic_error("MixtureParticleMotion: too many members");
-    for (std::size_t j = 0; j < count; ++j) {
-      shift[j] = after[j].mean - before[j].mean;
-      spread[j] = std::sqrt(std::max(0.0, after[j].variance - before[j].variance));
+    shift_.resize(before.size());
+    spread_.resize(before.size());
+    for (std::size_t j = 0; j < before.size(); ++j) {
+      shift_[j] = after[j].mean - before[j].mean;
+      spread_[j] = std::sqrt(std::max(0.0, after[j].variance - before[j].variance));
     }
-    noise_.fill(normals_);
-    // Each particle's member's shift and spread gathered first, so that the update is one loop
-    // over contiguous rows that the compiler vectorises.
-    const std::vector<std::uint16_t>& members = translation_members_[axis];
-    double* __restrict offset = gathered_.data();
-    double* __restrict sigma = offset + n;
-    for (std::size_t i = 0; i < n; ++i) {
-      offset[i] = shift[members[i]];
-      sigma[i] = spread[members[i]];
-    }
-    double* __restrict row = particles.states.data() + axis * n;
-    const float* __restrict e = normals_.data();
-    for (std::size_t i = 0; i < n; ++i) row[i] += offset[i] + sigma[i] * static_cast<double>(e[i]);
+    predict_row_by_member(particles, axis, translation_members_[axis], shift_, spread_, noise_);
   }
 }
 
 void MixtureParticleMotion::move_rotation(const Predictions& from, const Predictions& to,
                                           RotationParticles& particles) {
-  using Scalar = RotationParticles::States::Scalar;
-  const std::size_t count = from.rotation.size();
-  std::vector<Eigen::Quaterniond> turn(count);
-  std::vector<double> spread(count);
-  bool turns = false;
-  for (std::size_t j = 0; j < count; ++j) {
-    turn[j] = (to.rotation[j].orientation * from.rotation[j].orientation.conjugate()).normalized();
-    turns = turns || turn[j].vec().squaredNorm() > 0.0;
-    spread[j] = std::sqrt(std::max(
+  turn_.resize(from.rotation.size());
+  spread_.resize(from.rotation.size());
+  for (std::size_t j = 0; j < turn_.size(); ++j) {
+    turn_[j] = to.rotation[j].orientation * from.rotation[j].orientation.conjugate();
+    spread_[j] = std::sqrt(std::max(
         0.0, (to.rotation[j].covariance.trace() - from.rotation[j].covariance.trace()) / 3.0));
   }
-  const std::size_t n = particles.size();
-  Eigen::VectorXd sigma(static_cast<Eigen::Index>(n));
-  for (std::size_t i = 0; i < n; ++i)
-    sigma[static_cast<Eigen::Index>(i)] = spread[rotation_members_[i]];
-  if (turns) {
-    // q <- r q with each particle's member's turn r, gathered into rows first so that the
-    // product is one loop over contiguous rows; in double, as Eigen's product, and its order.
-    gathered_.resize(4 * n);
-    double* __restrict rx = gathered_.data();
-    double* __restrict ry = rx + n;
-    double* __restrict rz = ry + n;
-    double* __restrict rw = rz + n;
-    for (std::size_t i = 0; i < n; ++i) {
-      const Eigen::Quaterniond& r = turn[rotation_members_[i]];
-      rx[i] = r.x();
-      ry[i] = r.y();
-      rz[i] = r.z();
-      rw[i] = r.w();
-    }
-    Scalar* __restrict x = particles.states.data();
-    Scalar* __restrict y = x + n;
-    Scalar* __restrict z = y + n;
-    Scalar* __restrict w = z + n;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double bx = x[i], by = y[i], bz = z[i], bw = w[i];
-      x[i] = static_cast<Scalar>((rw[i] * bx + ry[i] * bz) - (rz[i] * by - rx[i] * bw));
-      y[i] = static_cast<Scalar>((rw[i] * by + ry[i] * bw) + (rz[i] * bx - rx[i] * bz));
-      z[i] = static_cast<Scalar>((rw[i] * bz - ry[i] * bx) + (rz[i] * bw + rx[i] * by));
-      w[i] = static_cast<Scalar>((rw[i] * bw - ry[i] * by) - (rz[i] * bz + rx[i] * bx));
-    }
-  }
-  predict_random_walk(particles, sigma, noise_);
+  predict_segments(particles, rotation_ends_, turn_, spread_, noise_);
 }
 
 std::string MixtureParticleMotion::label(const MotionModelBank& translation,

@@ -31,9 +31,10 @@ class MixtureParticleMotion {
  public:
   explicit MixtureParticleMotion(std::uint64_t seed);
 
-  /// Draws every particle's member from the banks' probabilities (both banks initialised).
+  /// Draws every particle's member from the banks' probabilities (both banks initialised), and
+  /// reorders the rotation particles so that each member's are consecutive.
   void start(const MotionModelBank& translation, const RotationModelBank& rotation,
-             const PoseParticleFilter& filter);
+             PoseParticleFilter& filter);
   /// Moves the particles from horizon h0 to h1 >= h0 (s after the banks' last update). The
   /// members' predictions at h1 are kept for the next step, whose h0 it is.
   void advance(const MotionModelBank& translation, const RotationModelBank& rotation, double h0,
@@ -61,16 +62,17 @@ class MixtureParticleMotion {
   void move_translation(const Predictions& from, const Predictions& to,
                         TranslationParticles& particles);
   void move_rotation(const Predictions& from, const Predictions& to, RotationParticles& particles);
+  void group_by_member(const RotationModelBank& rotation, RotationParticles& particles);
 
   Random random_;          ///< the members' draws
   GaussianSampler noise_;  ///< the spread, in bulk
-  std::array<std::vector<std::uint16_t>, 3> translation_members_;
-  std::vector<std::uint16_t> rotation_members_;
+  std::array<std::vector<std::uint8_t>, 3> translation_members_;
+  std::vector<std::size_t> rotation_ends_;  ///< member k's rotation particles end before ends[k]
   Predictions last_;  ///< at the last horizon reached
   Predictions next_;
   double trace_at_onset_ = 0.0;
-  std::vector<float> normals_;
-  std::vector<double> gathered_;  ///< the particles' members' shifts and spreads, or turns
+  std::vector<double> shift_, spread_;  ///< per member, for one step
+  std::vector<Eigen::Quaterniond> turn_;
 };
 
 }  // namespace opf

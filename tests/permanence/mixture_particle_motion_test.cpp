@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -117,6 +119,29 @@ TEST(MixtureParticleMotion, RotationParticlesTurnWithTheirMembers) {
   RotationModelBank held(still);
   held.update(1.0, s.orientation);
   EXPECT_LT(turned(held), 0.02);
+}
+
+// Grouping the rotation particles by member at onset reorders them, weights and all: the same set
+// of (quaternion, weight) pairs before and after.
+TEST(MixtureParticleMotion, GroupingByMemberKeepsTheParticlesAndTheirWeights) {
+  const Seen s = seen(1.0);
+  PoseParticleFilter filter = cloud_at(s);
+  filter.predict(0.5);  // distinct particles
+  Eigen::VectorXd& log_weights = filter.rotation().weights.log();
+  for (Eigen::Index i = 0; i < log_weights.size(); ++i) log_weights[i] = -1e-4 * double(i);
+  const auto pairs = [&] {
+    std::vector<std::array<double, 5>> p;
+    const auto& states = filter.rotation().states;
+    for (Eigen::Index i = 0; i < states.cols(); ++i)
+      p.push_back({states(0, i), states(1, i), states(2, i), states(3, i),
+                   filter.rotation().weights.log()[i]});
+    std::sort(p.begin(), p.end());
+    return p;
+  };
+  const auto before = pairs();
+  MixtureParticleMotion motion(2);
+  motion.start(s.translation, s.rotation, filter);
+  EXPECT_EQ(pairs(), before);
 }
 
 TEST(MixtureParticleMotion, TheSameSeedMovesTheSameParticles) {
