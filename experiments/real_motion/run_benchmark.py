@@ -9,7 +9,7 @@ with every estimator and seed, in parallel across the cores, and writes into OUT
   profile.csv   the error against time hidden, per log, preset, estimator and 0.1 s bin
   summary.md    per estimator and preset: the geometric mean of its hidden error over the
                 constant-velocity Kalman filter's, the worst row, the share of rows where it is
-                best, the calibration pooled over the rows; then every row
+                best, the calibration pooled over every hidden frame; then every row
   hidden_error_<kind>.png   error against time hidden, one figure per kind of motion
 
 Same inputs and seeds give the same bytes. Metrics: docs/metrics.md; the protocol:
@@ -226,13 +226,26 @@ def geometric_mean(values):
     return math.exp(sum(map(math.log, values)) / len(values)) if values else math.nan
 
 
-def finite_mean(values):
-    values = [v for v in values if not math.isnan(v)]
-    return sum(values) / len(values) if values else math.nan
+def pooled(rows, frames, metric):
+    """A per-log mean over hidden frames, pooled over every hidden frame of the logs: each log
+    weighed by its number of hidden frames (NaN logs, with nothing to score, left out)."""
+    total = weight = 0.0
+    for r in rows:
+        n = frames.get(tuple(r[k] for k in FRAME_KEYS), 0)
+        if n > 0 and not math.isnan(r[metric]):
+            total += n * r[metric]
+            weight += n
+    return total / weight if weight > 0 else math.nan
 
 
-def summarise(rows):
+FRAME_KEYS = ("sequence", "rate", "gap", "preset", "estimator")
+
+
+def summarise(rows, bins):
     """Per estimator and preset: ratios over the reference, wins, calibration."""
+    frames = defaultdict(int)  # hidden frames per log, preset and estimator (over the seeds)
+    for b in bins:
+        frames[tuple(b[k] for k in FRAME_KEYS)] += b["frames"]
     by_log = defaultdict(dict)
     for r in rows:
         by_log[(r["sequence"], r["rate"], r["gap"])][(r["estimator"], r["preset"])] = r
@@ -260,10 +273,8 @@ def summarise(rows):
             "estimator": entry[0], "preset": entry[1], "rows": logs,
             "hidden_ratio": geometric_mean(ratios), "rotation_ratio": geometric_mean(rot_ratios),
             "worst": worst[0], "worst_row": worst[1], "best_share": wins / logs if logs else 0,
-            "nees_translation": finite_mean([r["nees_translation"] for r in mine_rows]),
-            "inside95_translation": finite_mean([r["inside95_translation"] for r in mine_rows]),
-            "nees_rotation": finite_mean([r["nees_rotation"] for r in mine_rows]),
-            "inside95_rotation": finite_mean([r["inside95_rotation"] for r in mine_rows]),
+            **{m: pooled(mine_rows, frames, m) for m in (
+                "nees_translation", "inside95_translation", "nees_rotation", "inside95_rotation")},
         })
     return summary
 
@@ -276,7 +287,8 @@ def markdown(summary, rows, args):
              "hidden errors are means over "
              "the frames without a measurement; ratios are over the constant-velocity Kalman "
              "filter's (`cvkf`, default preset) on the same log; calibration by the NEES / 3 "
-             "and the share of hidden frames inside the 95% ellipsoid, means over the logs "
+             "and the share of hidden frames inside the 95% ellipsoid, pooled over the hidden "
+             "frames of every log "
              "(docs/metrics.md).", "",
              "| estimator | preset | logs | hidden error / cvkf (geo. mean) | worst | best on | "
              "rotation / cvkf | NEES/3 position | inside 95% | NEES/3 rotation | inside 95% |",
@@ -382,7 +394,7 @@ def main():
           f"(the paper preset: {', '.join(PAPER_ESTIMATORS)}), {args.seeds} seeds", flush=True)
     results = run_all(jobs, args, runs_dir)
     rows, bins = write_tidy(out, results)
-    summary = summarise(rows)
+    summary = summarise(rows, bins)
     text = markdown(summary, rows, args)
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write(text)
