@@ -42,8 +42,8 @@ void MixtureParticleMotion::advance(const MotionModelBank& translation,
                                     PoseParticleFilter& filter) {
   if (!(h0 >= 0.0) || !(h1 >= h0))
     throw std::invalid_argument("MixtureParticleMotion::advance needs 0 <= h0 <= h1");
-  if (translation_members_[0].size() != filter.translation().size() ||
-      rotation_ends_.empty() || rotation_ends_.back() != filter.rotation().size())
+  if (translation_members_[0].size() != filter.translation().size() || rotation_ends_.empty() ||
+      rotation_ends_.back() != filter.rotation().size())
     throw std::logic_error("MixtureParticleMotion::advance before start");
   if (last_.horizon != h0) predict(translation, rotation, h0, last_);
   predict(translation, rotation, h1, next_);

@@ -68,7 +68,7 @@ class MixtureParticleMotion {
   GaussianSampler noise_;  ///< the spread, in bulk
   std::array<std::vector<std::uint8_t>, 3> translation_members_;
   std::vector<std::size_t> rotation_ends_;  ///< member k's rotation particles end before ends[k]
-  Predictions last_;  ///< at the last horizon reached
+  Predictions last_;                        ///< at the last horizon reached
   Predictions next_;
   double trace_at_onset_ = 0.0;
   std::vector<double> shift_, spread_;  ///< per member, for one step

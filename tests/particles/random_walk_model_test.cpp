@@ -76,8 +76,7 @@ TEST(RandomWalkModel, EachSegmentTurnsAndSpreadsByItsOwnModel) {
   }
   EXPECT_NEAR(std::sqrt(squares / (kCount / 2.0)), 0.05 * std::sqrt(3.0), 0.03 * 0.05 * 1.732);
   const std::vector<std::size_t> short_ends{kCount / 2, kCount - 1};
-  EXPECT_THROW(predict_segments(particles, short_ends, turn, spread, noise),
-               std::invalid_argument);
+  EXPECT_THROW(predict_segments(particles, short_ends, turn, spread, noise), std::invalid_argument);
   const std::vector<std::size_t> unordered{kCount, kCount / 2};
   EXPECT_THROW(predict_segments(particles, unordered, turn, spread, noise), std::invalid_argument);
 }
