@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -27,6 +28,10 @@ constexpr double kDetectorNoiseWindow = 2.0;
 
 // Each gap's member draws come from their own stream of the filter's seed.
 constexpr std::uint64_t kMixtureStreams = 1000;
+
+// Occluder hypotheses below 5% are dropped, and at most four kept (the cups game has three).
+constexpr double kOccluderHypothesisFloor = 0.05;
+constexpr std::size_t kMaxOccluderHypotheses = 4;
 
 // The banks' validation gate: the chi-square 99.9% quantile with 3 degrees of freedom, on the
 // position's squared Mahalanobis distance from the mixture's one-step prediction.
@@ -290,29 +295,43 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
                                            options_.dynamics.up, own.mean, orientation,
                                            candidates[k].object, *candidate_estimates[k], ensemble);
   };
-  if (choice.second) {
-    Hypothesis twin(h.filter);  // O_i': a copy of the filter that follows the second occluder
+  // With the gate, every probable occluder carries a hypothesis, the most probable first; without
+  // it, the paper's rule: the nearest, and O_i' for a runner-up within epsilon_occ.
+  std::vector<WeightedOccluder> occluders =
+      probable_occluders(choice, kOccluderHypothesisFloor, kMaxOccluderHypotheses);
+  if (!options_.occluder.gate) {
+    occluders = {{*choice.nearest, 1.0}};
+    if (choice.second) occluders = {{*choice.nearest, 0.5}, {*choice.second, 0.5}};
+  }
+  const PoseParticleFilter at_onset = h.filter;
+  for (std::size_t k = 1; k < occluders.size(); ++k) {
+    Hypothesis twin(at_onset);  // O_i': a copy of the filter that follows another occluder
     twin.filter.reseed(derive_seed(seed_, ++spawned_));
-    twin.motion = carry(*choice.second);
+    twin.motion = carry(occluders[k].candidate);
+    twin.probability = occluders[k].probability;
     hypotheses_.push_back(std::move(twin));
   }
-  hypotheses_[0].motion = carry(*choice.nearest);
+  hypotheses_[0].motion = carry(occluders[0].candidate);
+  hypotheses_[0].probability = occluders[0].probability;
   return true;
 }
 
 void ObjectPermanenceFilter::keep_hypothesis_explaining(const Eigen::Vector3d& position) {
   if (hypotheses_.size() < 2) return;
+  // The most probable hypothesis given the measurement: its probability times the evidence.
   std::size_t best = 0;
-  double best_evidence = hypotheses_[0].filter.translation_log_evidence(position);
-  for (std::size_t i = 1; i < hypotheses_.size(); ++i) {
-    const double evidence = hypotheses_[i].filter.translation_log_evidence(position);
-    if (evidence > best_evidence) {
+  double best_posterior = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < hypotheses_.size(); ++i) {
+    const double posterior = std::log(hypotheses_[i].probability) +
+                             hypotheses_[i].filter.translation_log_evidence(position);
+    if (posterior > best_posterior) {
       best = i;
-      best_evidence = evidence;
+      best_posterior = posterior;
     }
   }
   if (best != 0) hypotheses_[0] = std::move(hypotheses_[best]);
   hypotheses_.erase(hypotheses_.begin() + 1, hypotheses_.end());
+  hypotheses_[0].probability = 1.0;
 }
 
 Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) const {
@@ -323,6 +342,7 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
   estimate.observation_trace = h.last.observation_trace;
   estimate.alert = safety_alert(estimate.observation_trace, options_.feedback);
   estimate.hypothesis = index;
+  estimate.probability = h.probability;
   estimate.recovery = h.last.recovery;
   estimate.mode = h.motion ? h.motion->mode() : EstimateMode::kMeasured;
   if (h.motion) estimate.motion_model = h.motion->label();

@@ -3,8 +3,9 @@
 // measurement is missing, uses a virtual measurement from the Object Permanence update: the
 // fitted trajectory of a moving object (dynamics module) or the measurement of the object hiding
 // a static one (occluder module), with an inflated observation covariance (uncertainty module)
-// whose trace drives the safety alert (feedback module). Two equally likely occluders spawn a
-// second hypothesis; the one that explains the object's reappearance survives.
+// whose trace drives the safety alert (feedback module). Several plausible occluders each carry a
+// hypothesis with its probability; at the reappearance the most probable given the measurement
+// survives.
 
 #include "opf/core/estimator.h"
 #include "opf/estimators/opf_options.h"
@@ -47,6 +48,7 @@ class ObjectPermanenceFilter final : public Estimator {
     PoseParticleFilter filter;
     std::unique_ptr<HiddenMotion> motion;  ///< none while the object is measured
     HiddenStep last;                       ///< Q~ and the recovery events of the last step
+    double probability = 1.0;              ///< among the object's hypotheses (they sum to one)
   };
 
   void restart_banks();

@@ -38,6 +38,7 @@ struct PyEstimate {
   double trace = 0.0;
   std::string mode;
   int hypothesis = 0;
+  double probability = 1.0;
   bool alert = false;
   std::string model;
 };
@@ -55,6 +56,7 @@ PyEstimate to_python(const opf::Estimate& e) {
   p.trace = e.observation_trace;
   p.mode = opf::mode_column(e.mode, e.recovery);
   p.hypothesis = e.hypothesis;
+  p.probability = e.probability;
   p.alert = e.alert;
   p.model = e.motion_model;
   return p;
@@ -126,7 +128,7 @@ class PyTracker {
 py::dict track_log(const std::string& path, const std::string& estimator, std::uint64_t seed,
                    std::optional<std::size_t> particles, const py::object& config) {
   const opf::EstimatorSettings settings = configured(config, particles);
-  std::vector<double> t, x, y, z, qx, qy, qz, qw, trace;
+  std::vector<double> t, x, y, z, qx, qy, qz, qw, trace, probability;
   std::vector<std::string> object, mode, model;
   std::vector<int> hypothesis;
   std::vector<bool> alert;
@@ -149,6 +151,7 @@ py::dict track_log(const std::string& path, const std::string& estimator, std::u
       trace.push_back(p.trace);
       mode.push_back(p.mode);
       hypothesis.push_back(p.hypothesis);
+      probability.push_back(p.probability);
       alert.push_back(p.alert);
       model.push_back(p.model);
     };
@@ -170,6 +173,7 @@ py::dict track_log(const std::string& path, const std::string& estimator, std::u
   columns["trace"] = py::array(py::cast(trace));
   columns["mode"] = py::cast(mode);
   columns["hypothesis"] = py::array(py::cast(hypothesis));
+  columns["probability"] = py::array(py::cast(probability));
   columns["alert"] = py::array(py::cast(alert));
   columns["model"] = py::cast(model);
   return columns;
@@ -194,6 +198,8 @@ PYBIND11_MODULE(_opf, m) {
                     "what produced it: measured, predicted, dynamics, occluder, random_walk "
                     "(+ recovery events), as in estimate files")
       .def_readonly("hypothesis", &PyEstimate::hypothesis, "0: main; 1, 2, ...: further")
+      .def_readonly("probability", &PyEstimate::probability,
+                    "the hypothesis's probability among the object's (1 when it is the only one)")
       .def_readonly("alert", &PyEstimate::alert, "the safety alert: trace >= epsilon_safe")
       .def_readonly("model", &PyEstimate::model, "the dynamics module's motion models, if any")
       .def("__repr__", [](const PyEstimate& e) {

@@ -95,7 +95,7 @@ void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& 
 void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results) {
   write_file_atomically(path, [&](std::ostream& out) {
     out << "frame,t,object,estimator,seed,true_x,true_y,true_z,true_qx,true_qy,true_qz,true_qw,"
-           "x,y,z,qx,qy,qz,qw,trace,mode,visible,hypothesis,alert,model\n";
+           "x,y,z,qx,qy,qz,qw,trace,mode,visible,hypothesis,probability,alert,model\n";
     for (const FrameRecord& r : results.records) {
       Eigen::Quaterniond q = orientation_of(r.estimate.pose.mean);
       if (q.w() < 0) q.coeffs() *= -1.0;
@@ -111,8 +111,9 @@ void write_records_csv(const std::filesystem::path& path, const ExperimentResult
           << ',' << number(q.x()) << ',' << number(q.y()) << ',' << number(q.z()) << ','
           << number(q.w()) << ',' << number(r.estimate.observation_trace) << ','
           << mode_column(r.estimate.mode, r.estimate.recovery) << ',' << (r.visible ? 1 : 0) << ','
-          << r.estimate.hypothesis << ',' << (r.estimate.alert ? 1 : 0) << ','
-          << csv::quote_if_needed(r.estimate.motion_model) << '\n';
+          << r.estimate.hypothesis << ',' << number(r.estimate.probability) << ','
+          << (r.estimate.alert ? 1 : 0) << ',' << csv::quote_if_needed(r.estimate.motion_model)
+          << '\n';
     }
   });
 }
@@ -262,11 +263,12 @@ void print_results_table(std::ostream& out, const std::vector<ExperimentResults>
     for (const std::string& name : x.estimators) {
       const HypothesisStats h = hypothesis_stats(x, name);
       if (h.with_more == 0) continue;
-      std::snprintf(line, sizeof line,
-                    "  %-10s two hypotheses in %zu of %zu hidden frames; hidden error of the one "
-                    "nearest the truth %.5f m (the main one's %.5f m)\n",
-                    name.c_str(), h.with_more, h.hidden_frames, h.nearest_hidden_translation,
-                    h.main_hidden_translation);
+      std::snprintf(
+          line, sizeof line,
+          "  %-10s more than one hypothesis in %zu of %zu hidden frames; hidden error of the one "
+          "nearest the truth %.5f m (the main one's %.5f m)\n",
+          name.c_str(), h.with_more, h.hidden_frames, h.nearest_hidden_translation,
+          h.main_hidden_translation);
       out << line;
     }
     const auto paper = paper_table().find(x.experiment);

@@ -13,8 +13,8 @@
 
 namespace opf::experiments {
 
-/// frame,t,object,estimator,seed,true_x,...,true_qw,x,...,qw,trace,mode,visible,hypothesis,alert,
-/// model
+/// frame,t,object,estimator,seed,true_x,...,true_qw,x,...,qw,trace,mode,visible,hypothesis,
+/// probability,alert,model
 void write_records_csv(const std::filesystem::path& path, const ExperimentResults& results);
 
 /// One row per estimator and seed, the tidy form sweeps aggregate:

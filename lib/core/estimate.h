@@ -25,6 +25,8 @@ struct Estimate {
   /// 0 for an object's main estimate; 1, 2, ... for the further hypotheses an estimator keeps
   /// (the OPF's virtual object O_i' when two occluders are equally likely, paper Sec. III-B.2).
   int hypothesis = 0;
+  /// The hypothesis's probability among the object's (1 for an object's only estimate).
+  double probability = 1.0;
   /// The feedback module's safety alert: observation_trace >= epsilon_safe (paper Sec. III-C).
   bool alert = false;
   /// The motion model behind the estimate, where an estimator chooses among several (the OPF's

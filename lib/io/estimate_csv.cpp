@@ -31,7 +31,7 @@ constexpr std::array<std::string_view, 6> kPoseAxes = {"x", "y", "z", "yaw", "pi
 
 void write_estimate_header(std::ostream& out, EstimateColumns columns) {
   out << "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
-         "hypothesis,alert,model";
+         "hypothesis,probability,alert,model";
   if (columns.covariance)
     for (std::size_t i = 0; i < kPoseAxes.size(); ++i)
       for (std::size_t j = i; j < kPoseAxes.size(); ++j)
@@ -54,6 +54,7 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate, EstimateCol
   row += ',' + mode_column(estimate.mode, estimate.recovery);
   for (int i = 0; i < 6; ++i) row += ',' + csv::format_double(std::sqrt(estimate.pose.cov(i, i)));
   row += ',' + std::to_string(estimate.hypothesis);
+  row += ',' + csv::format_double(estimate.probability);
   row += estimate.alert ? ",1," : ",0,";
   row += csv::quote_if_needed(estimate.motion_model);
   if (columns.covariance)
@@ -76,6 +77,7 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
     return static_cast<std::size_t>(it - header.begin());
   };
   const auto hypothesis_column = optional_column("hypothesis");
+  const auto probability_column = optional_column("probability");
   const auto alert_column = optional_column("alert");
   const auto model_column = optional_column("model");
 
@@ -107,6 +109,11 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
       if (h < 0 || h != static_cast<int>(h))
         reader.fail(*hypothesis_column, "expected a hypothesis number 0, 1, ...");
       record.hypothesis = static_cast<int>(h);
+    }
+    if (probability_column) {
+      record.probability = reader.number(*probability_column);
+      if (!(record.probability >= 0.0 && record.probability <= 1.0))
+        reader.fail(*probability_column, "expected a probability in [0, 1]");
     }
     if (alert_column) {
       const std::string& a = reader.field(*alert_column);

@@ -32,9 +32,10 @@ struct EstimateRecord {
   mrpt::poses::CPose3D pose;
   double trace = 0.0;
   std::string mode;
-  int hypothesis = 0;  ///< 0 when the file has no hypothesis column
-  bool alert = false;  ///< false when the file has no alert column
-  std::string model;   ///< empty when the file has no model column
+  int hypothesis = 0;        ///< 0 when the file has no hypothesis column
+  double probability = 1.0;  ///< 1 when the file has no probability column
+  bool alert = false;        ///< false when the file has no alert column
+  std::string model;         ///< empty when the file has no model column
 };
 
 /// Reads an estimate file in row order. Throws InputError naming file, line and column.

@@ -43,6 +43,41 @@ Eigen::MatrixXd occlusion_plane_projection(const Eigen::Vector3d& hidden_mean,
   return projection;
 }
 
+namespace {
+
+// P(|x| <= reach) for x ~ N(offset, covariance), to first order: the disc's edge taken as straight
+// where it is nearest the offset. At a zero offset, the spread along any axis.
+double hide_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance,
+                        double reach) {
+  const double distance = offset.norm();
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(offset.size());
+  along(0) = 1.0;
+  if (distance > 0.0) along = offset / distance;
+  const double sigma = std::sqrt(std::max(along.dot(covariance * along), 1e-18));
+  return 0.5 * std::erfc(-(reach - distance) / (sigma * std::sqrt(2.0)));
+}
+
+}  // namespace
+
+std::vector<WeightedOccluder> probable_occluders(const OccluderChoice& choice, double floor,
+                                                 std::size_t max_count) {
+  // Most probable first; probabilities equal to 10^-6 (two candidates that both surely cover the
+  // object) keep the nearer by D_B first, the paper's choice.
+  std::vector<WeightedOccluder> kept = choice.weighted;
+  const auto rounded = [](const WeightedOccluder& w) { return std::round(w.probability * 1e6); };
+  std::stable_sort(kept.begin(), kept.end(),
+                   [&](const auto& a, const auto& b) { return rounded(a) > rounded(b); });
+  std::size_t count = 0;
+  while (count < kept.size() && count < std::max<std::size_t>(max_count, 1) &&
+         (count == 0 || kept[count].probability >= floor))
+    ++count;
+  kept.resize(count);
+  double total = 0.0;
+  for (const WeightedOccluder& w : kept) total += w.probability;
+  for (WeightedOccluder& w : kept) w.probability = total > 0.0 ? w.probability / total : 1.0;
+  return kept;
+}
+
 OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
                                 const Eigen::Matrix3d& hidden_covariance,
                                 std::span<const OccluderCandidate> candidates,
@@ -57,6 +92,7 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
 
   const std::optional<Eigen::Vector3d> ray = line_of_sight(hidden_mean, options);
 
+  std::vector<std::pair<double, WeightedOccluder>> weighted;  // (D_B, candidate)
   std::size_t best = 0, runner_up = 0, plausible = 0;
   double best_d = std::numeric_limits<double>::infinity();
   double runner_up_d = std::numeric_limits<double>::infinity();
@@ -86,6 +122,10 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     }
     if (!std::isfinite(d)) continue;
     ++plausible;
+    if (options.gate)
+      weighted.push_back(
+          {d,
+           {j, hide_probability(p * (c.mean - hidden_mean), hidden_sigma + sigma, options.reach)}});
     if (d < best_d) {
       runner_up = best;
       runner_up_d = best_d;
@@ -97,6 +137,13 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     }
   }
   if (plausible == 0) return choice;
+  std::stable_sort(weighted.begin(), weighted.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  double total = 0.0;
+  for (const auto& w : weighted) total += w.second.probability;
+  for (const auto& w : weighted)
+    choice.weighted.push_back({w.second.candidate, total > 0.0 ? w.second.probability / total
+                                                               : 1.0 / double(weighted.size())});
   choice.nearest = best;
   choice.nearest_distance = best_d;
   choice.second_distance = runner_up_d;

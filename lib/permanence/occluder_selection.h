@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace opf {
 
@@ -29,8 +30,9 @@ inline constexpr EnumNames<OccluderPlane, 4> kOccluderPlaneNames = {
      {OccluderPlane::k3D, "3d"}}};
 
 struct OccluderOptions {
-  /// m (paper Sec. III-B.2, "based on the size of the tested object"): two candidates tie when
-  /// their distances from the hidden object across the line of sight differ by at most this.
+  /// m (paper Sec. III-B.2, "based on the size of the tested object"): without the gate (the
+  /// paper's rule), two candidates tie when their distances from the hidden object across the
+  /// line of sight differ by at most this.
   double epsilon_occ = 0.01;
   OccluderPlane plane = OccluderPlane::kAuto;
   /// Camera position in the world frame for kLineOfSight and kAuto; none (kAuto only) means a
@@ -67,7 +69,9 @@ struct OccluderOptions {
   /// combined spread) and not behind it (no more than `reach` further along the ray). Without
   /// it the nearest candidate is the occluder however far it is (the paper's rule): a static
   /// mug missed for one frame would follow a hand circling 0.3 m away. With no plausible
-  /// candidate the hidden object is held where it was, its uncertainty growing.
+  /// candidate the hidden object is held where it was, its uncertainty growing. With it, every
+  /// plausible candidate is a hypothesis weighted by how likely it hides the object
+  /// (OccluderChoice::weighted); without it, the nearest and the epsilon_occ tie.
   bool gate = true;
   /// m: the largest distance between the centres of an object and an occluder that hides it,
   /// across the line of sight: half their sizes summed. 0.15 m lets a 0.2 m tray or hand hide a
@@ -98,6 +102,13 @@ struct OccluderCandidate {
   Eigen::Matrix3d covariance;
 };
 
+/// A plausible occluder as a hypothesis: the candidate and the probability that it is the one
+/// hiding the object.
+struct WeightedOccluder {
+  std::size_t candidate = 0;  ///< index into the candidates
+  double probability = 0.0;
+};
+
 struct OccluderChoice {
   std::optional<std::size_t> nearest;  ///< index into the candidates
   std::size_t implausible = 0;         ///< candidates the gate turned away
@@ -107,8 +118,20 @@ struct OccluderChoice {
   /// m between the centres across the line of sight (in 3-D for k3D): the tie's measure.
   double nearest_offset = 0.0;
   double second_offset = std::numeric_limits<double>::infinity();
+  /// Every plausible candidate (options.gate) nearest first (by D_B), weighted by how plausibly it
+  /// hides the object: the probability that its centre lies within `reach` of the object's across
+  /// the line of sight, given both estimates' spread, to first order (the edge of that disc taken
+  /// as straight where it is nearest the candidate: Phi((reach - |m|) / sigma), m the centres'
+  /// offset and sigma its spread along m); normalised over the candidates, each equally likely
+  /// before. Empty without the gate.
+  std::vector<WeightedOccluder> weighted;
   bool ambiguous() const { return second.has_value(); }
 };
+
+/// The weighted candidates of at least `floor` probability, at most `max_count` of them (the most
+/// probable; probabilities equal to 10^-6 nearest first), renormalised, most probable first.
+std::vector<WeightedOccluder> probable_occluders(const OccluderChoice& choice, double floor,
+                                                 std::size_t max_count);
 
 /// Ranks the plausible candidates (options.gate) by D_B to the hidden object's cloud in the
 /// configured plane. None: no occluder. One: it is the occluder. Otherwise the nearest is the

@@ -76,7 +76,7 @@ TEST_F(OpfProgram, TrackWritesTheFullCovarianceOnRequest) {
       << err();
   const auto rows = rows_of(read(est));
   ASSERT_GT(rows.size(), 10u);
-  EXPECT_EQ(rows[0].size(), 20u + 21u);
+  EXPECT_EQ(rows[0].size(), 21u + 21u);
   EXPECT_EQ(rows[0].back(), "cov_roll_roll");
   // The variance columns are the squares of the std columns.
   const double std_x = std::stod(cell(rows, 5, "std_x"));

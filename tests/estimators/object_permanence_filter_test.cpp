@@ -778,6 +778,48 @@ TEST(ObjectPermanenceFilter, TwoEquallyCloseOccludersSpawnTwoHypothesesAndTheRig
   EXPECT_LT(error_at(opf, scene, "ball", 121), 0.01);
 }
 
+// Three cups within reach hide the ball (5 cm beside it on three sides): three hypotheses of a
+// third each, one per cup, their probabilities summing to one while hidden; revealed under cup B,
+// the hypothesis that followed B is the most probable given the measurement and alone survives,
+// at probability one. Without the gate (the paper's rule) the same scene has no third hypothesis.
+TEST(ObjectPermanenceFilter, EveryPlausibleOccluderIsAHypothesisWithItsProbability) {
+  Scene scene;
+  scene.frames = 150;
+  scene.noise_translation = 0.0005;
+  const auto cup = [](const Eigen::Vector3d& direction) {
+    return [direction](double t) {
+      const Eigen::Vector3d centre(0.4, 0.0, 0.03);
+      return lerp(centre + 0.05 * direction, centre + 0.3 * direction, (t * 30.0 - 60) / 40.0);
+    };
+  };
+  const auto cup_b = cup(-Eigen::Vector3d::UnitY());
+  scene.objects.push_back({"ball",
+                           [cup_b](double t) {
+                             const Eigen::Vector3d c = cup_b(t);
+                             return Eigen::Vector3d(c.x(), c.y() + 0.05, 0.0);
+                           },
+                           [](double) { return Eigen::Quaterniond::Identity(); },
+                           [](int k) { return k < 40 || k >= 120; }});
+  scene.objects.push_back({"cup_a", cup(Eigen::Vector3d::UnitY())});
+  scene.objects.push_back({"cup_b", cup_b});
+  scene.objects.push_back({"cup_c", cup(Eigen::Vector3d::UnitX())});
+  const SceneRun opf = run(scene, opf_factory(OpfOptions{}));
+
+  ASSERT_EQ(opf.extras[110].size(), 2u);
+  const Estimate& main = opf.estimates[110].at("ball");
+  double total = main.probability;
+  for (const Estimate& e : opf.extras[110]) total += e.probability;
+  EXPECT_NEAR(total, 1.0, 1e-12);
+  EXPECT_NEAR(main.probability, 1.0 / 3.0, 1e-6);
+  EXPECT_TRUE(opf.extras[121].empty());
+  EXPECT_EQ(opf.estimates[121].at("ball").probability, 1.0);
+  EXPECT_LT(error_at(opf, scene, "ball", 121), 0.01);
+
+  OpfOptions paper_rule;
+  paper_rule.occluder.gate = false;
+  EXPECT_LE(run(scene, opf_factory(paper_rule)).extras[110].size(), 1u);
+}
+
 TEST(ObjectPermanenceFilter, AllModulesOffIsTheStandardPf) {
   const Scene scene = carried_ball_scene();
   OpfOptions options;

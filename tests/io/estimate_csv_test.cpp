@@ -20,7 +20,7 @@ namespace {
 
 constexpr const char* kHeader =
     "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
-    "hypothesis,alert,model\n";
+    "hypothesis,probability,alert,model\n";
 
 Estimate make_estimate(double t, const std::string& object, const mrpt::poses::CPose3D& mean) {
   mrpt::math::CMatrixDouble66 cov;
@@ -79,7 +79,7 @@ TEST(EstimateCsvFormat, RowUsesShortestNumbersModeAndStandardDeviations) {
   expected.replace(expected.find("0.0003"), 6, csv::format_double(3e-4));
   for (int i = 0; i < 6; ++i)
     expected.append(",").append(csv::format_double(std::sqrt(estimate.pose.cov(i, i))));
-  EXPECT_EQ(out.str(), expected + ",0,0,\n");
+  EXPECT_EQ(out.str(), expected + ",0,1,0,\n");
   EXPECT_EQ(split_row(out.str())[11], "0.1");  // sqrt(0.01)
 
   std::ostringstream third;
@@ -165,20 +165,23 @@ TEST_F(EstimateCsv, RoundTripsExactly) {
 TEST_F(EstimateCsv, RoundTripsHypothesisAlertAndModel) {
   Estimate estimate = make_estimate(2.0, "ball", mrpt::poses::CPose3D(0.1, 0.2, 0.3, 0, 0, 0));
   estimate.hypothesis = 1;
+  estimate.probability = 0.25;
   estimate.alert = true;
   estimate.mode = EstimateMode::kDynamics;
   estimate.motion_model = "cv,cv,cp/cw";
   std::ostringstream out;
   write_estimate_row(out, estimate);
   const auto fields = split_row(out.str());
-  ASSERT_EQ(fields.size(), 20u);
+  ASSERT_EQ(fields.size(), 21u);
   EXPECT_EQ(fields[17], "1");
-  EXPECT_EQ(fields[18], "1");
+  EXPECT_EQ(fields[18], "0.25");
+  EXPECT_EQ(fields[19], "1");
   // Quoted: the model holds commas.
   EXPECT_EQ(out.str().substr(out.str().size() - 15), ",\"cv,cv,cp/cw\"\n");
   const auto records = read_estimate_csv(write({estimate}));
   ASSERT_EQ(records.size(), 1u);
   EXPECT_EQ(records[0].hypothesis, 1);
+  EXPECT_EQ(records[0].probability, 0.25);
   EXPECT_TRUE(records[0].alert);
   EXPECT_EQ(records[0].model, "cv,cv,cp/cw");
 }
@@ -195,8 +198,8 @@ TEST_F(EstimateCsv, WritingIsDeterministic) {
 TEST_F(EstimateCsv, ReaderReportsBadFields) {
   const std::string header = kHeader;
   try {
-    read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,1,0.1,measured,1,1,1,1,1,1,0,0,\n" +
-                                 "0.1,ball,1,2,oops,0,0,0,1,0.1,measured,1,1,1,1,1,1,0,0,\n"));
+    read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,1,0.1,measured,1,1,1,1,1,1,0,1,0,\n" +
+                                 "0.1,ball,1,2,oops,0,0,0,1,0.1,measured,1,1,1,1,1,1,0,1,0,\n"));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 3u);
@@ -204,18 +207,26 @@ TEST_F(EstimateCsv, ReaderReportsBadFields) {
   }
   EXPECT_THROW(read_estimate_csv(write_text("t,object,x\n")), InputError);
   EXPECT_THROW(read_estimate_csv(
-                   write_text(header + "0,ball,1,2,3,0,0,0,2,0.1,measured,1,1,1,1,1,1,0,0,\n")),
+                   write_text(header + "0,ball,1,2,3,0,0,0,2,0.1,measured,1,1,1,1,1,1,0,1,0,\n")),
                InputError);
   EXPECT_THROW(read_estimate_csv(dir_ / "missing.csv"), InputError);
+  try {  // a hypothesis's probability outside [0, 1]
+    read_estimate_csv(
+        write_text(header + "0,ball,1,2,3,0,0,0,1,0.1,measured,1,1,1,1,1,1,1,1.5,0,\n"));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.field(), "probability");
+  }
 }
 
 TEST_F(EstimateCsv, ReaderRejectsAModeItDoesNotKnowNamingLineAndColumn) {
   const std::string header = kHeader;
-  const std::string good = "0,ball,1,2,3,0,0,0,1,0.1,measured+reset,1,1,1,1,1,1,0,0,\n";
+  const std::string good = "0,ball,1,2,3,0,0,0,1,0.1,measured+reset,1,1,1,1,1,1,0,1,0,\n";
   EXPECT_EQ(read_estimate_csv(write_text(header + good))[0].mode, "measured+reset");
   try {
-    read_estimate_csv(
-        write_text(header + good + "0.1,ball,1,2,3,0,0,0,1,0.1,measured+rest,1,1,1,1,1,1,0,0,\n"));
+    read_estimate_csv(write_text(header + good +
+                                 "0.1,ball,1,2,3,0,0,0,1,0.1,measured+rest,1,1,1,1,1,1,0,1,0,\n"));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(e.line(), 3u);

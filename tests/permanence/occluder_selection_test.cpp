@@ -57,6 +57,37 @@ TEST(OccluderSelection, EpsilonOccDecidesBetweenOneAndTwo) {
   EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, candidates, OccluderOptions{}).ambiguous());
 }
 
+// With the gate every plausible candidate is weighed by the probability that it hides the
+// object: its centre within reach (0.15 m) of the object's across the line of sight, the offset's
+// spread 1.4 cm (two 1 cm clouds). At 5 and 8 cm that is certain, at exactly 15 cm a half: 0.4,
+// 0.4 and 0.2 once normalised, nearest first; 0.4 m away the gate turns the candidate away.
+TEST(OccluderSelection, EveryPlausibleCandidateIsWeighedByHowLikelyItHidesTheObject) {
+  const std::vector<OccluderCandidate> candidates = {
+      at("edge", 0.0, 0.15, 0.0), at("near", 0.05, 0.0, 0.03), at("far", 0.4, 0.0, 0.0),
+      at("next", -0.08, 0.0, 0.03)};
+  const OccluderChoice choice = choose_occluders({0, 0, 0}, kCloud, candidates, {});
+  ASSERT_EQ(choice.weighted.size(), 3u);
+  EXPECT_EQ(candidates[choice.weighted[0].candidate].object, "near");
+  EXPECT_EQ(candidates[choice.weighted[1].candidate].object, "next");
+  EXPECT_EQ(candidates[choice.weighted[2].candidate].object, "edge");
+  EXPECT_NEAR(choice.weighted[0].probability, 0.4, 1e-6);  // 8 cm: Phi(4.9) = 1 - 5e-7
+  EXPECT_NEAR(choice.weighted[1].probability, 0.4, 1e-6);
+  EXPECT_NEAR(choice.weighted[2].probability, 0.2, 1e-6);
+  // A floor of 25% leaves the two certain ones at a half each; at most one, the nearest alone.
+  const std::vector<WeightedOccluder> two = probable_occluders(choice, 0.25, 4);
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_NEAR(two[0].probability + two[1].probability, 1.0, 1e-12);
+  EXPECT_NEAR(two[1].probability, 0.5, 1e-6);
+  const std::vector<WeightedOccluder> one = probable_occluders(choice, 0.0, 1);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(candidates[one[0].candidate].object, "near");
+  EXPECT_EQ(one[0].probability, 1.0);
+  // The paper's rule (no gate) weighs nothing: the nearest, and a tie by epsilon_occ.
+  OccluderOptions paper;
+  paper.gate = false;
+  EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, candidates, paper).weighted.empty());
+}
+
 TEST(OccluderSelection, LineOfSightNeedsTheCamera) {
   const std::vector<OccluderCandidate> candidates = {at("tray", 0.4, 0.0, 0.2)};
   OccluderOptions options;
