@@ -23,7 +23,7 @@ struct Estimate {
   /// the mode word in result files.
   RecoveryEvents recovery;
   /// 0 for an object's main estimate; 1, 2, ... for the further hypotheses an estimator keeps
-  /// (the OPF's virtual object O_i' when two occluders are equally likely, paper Sec. III-B.2).
+  /// (the OPF's virtual objects O_i', one per further plausible occluder, paper Sec. III-B.2).
   int hypothesis = 0;
   /// The hypothesis's probability among the object's (1 for an object's only estimate).
   double probability = 1.0;
