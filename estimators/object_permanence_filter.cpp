@@ -297,15 +297,18 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
   };
   // With the gate, every probable occluder carries a hypothesis, the most probable first; without
   // it, the paper's rule: the nearest, and O_i' for a runner-up within epsilon_occ.
-  std::vector<WeightedOccluder> occluders =
-      probable_occluders(choice, kOccluderHypothesisFloor, kMaxOccluderHypotheses);
-  if (!options_.occluder.gate) {
+  std::vector<WeightedOccluder> occluders;
+  if (options_.occluder.gate)
+    occluders = probable_occluders(choice, kOccluderHypothesisFloor, kMaxOccluderHypotheses);
+  else if (choice.second)
+    occluders = {{*choice.nearest, 0.5}, {*choice.second, 0.5}};
+  else
     occluders = {{*choice.nearest, 1.0}};
-    if (choice.second) occluders = {{*choice.nearest, 0.5}, {*choice.second, 0.5}};
-  }
-  const PoseParticleFilter at_onset = h.filter;
+  // The twins copy the filter as it is at onset, before hypothesis 0 moves.
+  const std::optional<PoseParticleFilter> at_onset =
+      occluders.size() > 1 ? std::optional(h.filter) : std::nullopt;
   for (std::size_t k = 1; k < occluders.size(); ++k) {
-    Hypothesis twin(at_onset);  // O_i': a copy of the filter that follows another occluder
+    Hypothesis twin(*at_onset);  // O_i': a copy of the filter that follows another occluder
     twin.filter.reseed(derive_seed(seed_, ++spawned_));
     twin.motion = carry(occluders[k].candidate);
     twin.probability = occluders[k].probability;

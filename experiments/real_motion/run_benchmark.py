@@ -226,6 +226,9 @@ def geometric_mean(values):
     return math.exp(sum(map(math.log, values)) / len(values)) if values else math.nan
 
 
+FRAME_KEYS = ("sequence", "rate", "gap", "preset", "estimator")  # a log, preset and estimator
+
+
 def pooled(rows, frames, metric):
     """A per-log mean over hidden frames, pooled over every hidden frame of the logs: each log
     weighed by its number of hidden frames (NaN logs, with nothing to score, left out)."""
@@ -236,9 +239,6 @@ def pooled(rows, frames, metric):
             total += n * r[metric]
             weight += n
     return total / weight if weight > 0 else math.nan
-
-
-FRAME_KEYS = ("sequence", "rate", "gap", "preset", "estimator")
 
 
 def summarise(rows, bins):
