@@ -6,9 +6,10 @@
 # then the real-motion benchmark (public recordings and the clips, every estimator under both
 # presets, 3 seeds: about two minutes on 2 cores) into results/real_motion/; the dynamics
 # module's ablation on it (each motion model removed in turn, about two minutes) into
-# results/dynamics_ablation/; last, the notebooks executed against these results into
-# results/notebooks/ (.ipynb and .html; about 30 s; the sweeps, not run here, are skipped there
-# with the command that runs them).
+# results/dynamics_ablation/; the hand scenes (a hand on recorded human motion carries a cube or
+# passes over it, every estimator, 5 seeds, about 25 s) into results/hand_scenes/; last, the
+# notebooks executed against these results into results/notebooks/ (.ipynb and .html; about
+# 30 s; the sweeps, not run here, are skipped there with the command that runs them).
 # Extra arguments go to `opf reproduce` (see `build/bin/opf reproduce --help`).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -28,5 +29,8 @@ echo
 echo
 /usr/bin/python3 "$repo/experiments/real_motion/run_ablation.py" \
   "$repo/results/dynamics_ablation" --opf "$repo/build/bin/opf"
+echo
+/usr/bin/python3 "$repo/experiments/real_motion/hand_scenes.py" "$repo/results/hand_scenes" \
+  --opf "$repo/build/bin/opf"
 echo
 bash "$repo/notebooks/run_notebooks.sh" "$repo/results/notebooks"
