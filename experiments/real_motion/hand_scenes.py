@@ -3,12 +3,12 @@
 
 The hand (a 14 cm plate, as a gripper seen from above) moves along the horizontal path and the
 turn about the vertical of a TUM VI hand-held recording (the shipped excerpts, raw/handheld),
-scaled by 0.15 into a table's workspace and held 0.12 m above the table, under a top-down camera
+scaled by 0.25 into a table's workspace and held 0.12 m above the table, under a top-down camera
 at 30 Hz; a 2 cm cube rests on the table. Two scenes per recording:
 
-  carry  the cube lies where the hand is 2 s in; the hand picks it up there, carries it for 4 s
-         along the recording and puts it down;
-  pass   the cube lies where the hand is 3 s in; the hand passes over it and moves on.
+  carry  the cube lies where the hand is 2.5 s in; the hand picks it up there, carries it for
+         4 s along the recording and puts it down;
+  pass   the cube lies where the hand is 4 s in; the hand passes over it and moves on.
 
 Occlusion comes from the rendered geometry; the truth is the scene's. Each scene is written as an
 experiment file and run by `opf run` with every estimator; the table gives, per scene and
@@ -45,8 +45,6 @@ HOVER = 0.12           # m above the table, the hand's centre
 WORKSPACE = (0.55, 0.0)  # m, the table's centre under the camera
 PICK, PLACE, PASS = 2.5, 6.5, 4.0  # s
 ESTIMATORS = "opf,pf,cvkf,imm,oapf"
-
-
 # m: the hand's centre this far from the cube's leaves it in view (the plate's half-diagonal 9.9 cm
 # plus the cube's half-width).
 CLEAR = 0.11
@@ -118,7 +116,8 @@ def scene_yaml(name, kind, times, x, y, yaw):
 def hidden_errors(frames_csv):
     """Per estimator: mean hidden translation error of the main estimate and of the nearest
     hypothesis, over seeds and hidden frames of the cube."""
-    rows = list(csv.DictReader(open(frames_csv, newline="")))
+    with open(frames_csv, newline="") as f:
+        rows = list(csv.DictReader(f))
     by = {}
     for r in rows:
         if r["object"] != "cube" or r["visible"] != "0":
