@@ -209,6 +209,7 @@ void write_summary_json(const std::filesystem::path& path,
         const HypothesisStats h = hypothesis_stats(x, x.estimators[i]);
         out << "        \"hypotheses\": {\"hidden_frames\": " << h.hidden_frames
             << ", \"with_more\": " << h.with_more
+            << ", \"main_hidden_translation\": " << number(h.main_hidden_translation)
             << ", \"nearest_hidden_translation\": " << number(h.nearest_hidden_translation) << "}"
             << (closed_loop ? ",\n" : "\n");
         if (closed_loop) {

@@ -27,7 +27,7 @@ void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& 
 /// experiments.<name>.<estimator>.{translation_error, rotation_error_paper,
 /// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus seeds,
 /// dynamics_models (per motion model, the occlusions the dynamics module carried with it, over
-/// the seeds and tracked bodies), hypotheses (hidden_frames, with_more,
+/// the seeds and tracked bodies), hypotheses (hidden_frames, with_more, main_hidden_translation,
 /// nearest_hidden_translation: see hypothesis_stats), and for closed-loop experiments
 /// payload_released and
 /// payload_landed (counts over the seeds).

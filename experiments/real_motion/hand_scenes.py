@@ -22,7 +22,7 @@ Usage: hand_scenes.py OUT_DIR [--opf build/bin/opf] [--seeds 5] [--recordings N]
 
 import argparse
 import csv
-import math
+import json
 import os
 import subprocess
 import sys
@@ -113,28 +113,15 @@ def scene_yaml(name, kind, times, x, y, yaw):
     return "\n".join(lines) + "\n"
 
 
-def hidden_errors(frames_csv):
-    """Per estimator: mean hidden translation error of the main estimate and of the nearest
-    hypothesis, over seeds and hidden frames of the cube."""
-    with open(frames_csv, newline="") as f:
-        rows = list(csv.DictReader(f))
-    by = {}
-    for r in rows:
-        if r["object"] != "cube" or r["visible"] != "0":
-            continue
-        key = (r["estimator"], r["seed"], r["frame"])
-        e = math.dist([float(r[k]) for k in "xyz"], [float(r["true_" + k]) for k in "xyz"])
-        main, nearest = by.get(key, (None, math.inf))
-        if r["hypothesis"] == "0":
-            main = e
-        by[key] = (main, min(nearest, e))
-    out = {}
-    for (est, _, _), (main, nearest) in by.items():
-        m = out.setdefault(est, [0.0, 0.0, 0])
-        m[0] += main
-        m[1] += nearest
-        m[2] += 1
-    return {k: (v[0] / v[2], v[1] / v[2], v[2]) for k, v in out.items()}
+def hidden_errors(summary_json, experiment):
+    """Per estimator: the cube's mean hidden translation error of the main estimate and of the
+    hypothesis nearest the truth, over the seeds' hidden frames, and their number (`opf run`'s
+    summary.json, `hypotheses`)."""
+    with open(summary_json) as f:
+        runs = json.load(f)["experiments"][experiment]
+    return {e: (r["hypotheses"]["main_hidden_translation"],
+                r["hypotheses"]["nearest_hidden_translation"], r["hypotheses"]["hidden_frames"])
+            for e, r in runs.items()}
 
 
 def main():
@@ -156,7 +143,7 @@ def main():
             subprocess.run([args.opf, "run", scene, "--estimators", ESTIMATORS, "--seeds",
                             str(args.seeds), "--quiet", "--out", run_dir], check=True,
                            stdout=subprocess.DEVNULL)
-            errors = hidden_errors(os.path.join(run_dir, f"{name}_{kind}_frames.csv"))
+            errors = hidden_errors(os.path.join(run_dir, "summary.json"), f"{name}_{kind}")
             table.append((name, kind, errors))
     write_results(args.out, table)
 
