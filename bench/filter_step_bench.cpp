@@ -1,8 +1,8 @@
 // One full filter step per estimator (predict, measurement or OP update, normalise, resample,
 // estimate) over particle counts 100 ... 100 000 per portion, reported as particles per second
 // (both portions: 2N per step) so the cost curve over N is visible; the OPF's step while the
-// object is hidden (moved and spread by the dynamics module's prediction); and the CV and IMM
-// Kalman filters, which have no particles.
+// object is hidden (moved and spread by the dynamics module's prediction), or hidden under a hand
+// (carried or left); and the CV and IMM Kalman filters, which have no particles.
 
 #include "opf/core/pose_conversion.h"
 #include "opf/core/random.h"
@@ -94,6 +94,42 @@ void BM_OpfHiddenStep(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 2 * state.range(0));
 }
 BENCHMARK(BM_OpfHiddenStep)->Apply(particle_counts);
+
+// A hand (or tray) 12 cm above the table, seen at `x` with a 3 mm estimate.
+struct HandAbove {
+  Frame frame;
+  std::vector<Estimate> previous;
+  explicit HandAbove(double x) {
+    const mrpt::poses::CPose3D pose = make_pose({x, 0.0, 0.12}, Eigen::Quaterniond::Identity());
+    frame.detections.push_back({"hand", pose});
+    Estimate estimate;
+    estimate.object = "hand";
+    estimate.pose.mean = pose;
+    estimate.pose.cov.setDiagonal(1e-5);
+    previous.push_back(estimate);
+  }
+  EnsembleView view() const { return {frame, previous}; }
+};
+
+// An OPF step while a still ball is hidden under a still hand: two hypotheses, left and carried
+// by the hand, each stepped, then weighed by what the camera does not see (both places covered,
+// so both live on). The counter `hypotheses` says how many there were at the end.
+void BM_OpfCarriedOrLeftStep(benchmark::State& state) {
+  OpfOptions options;
+  options.particles.translation_particles = options.particles.rotation_particles =
+      std::size_t(state.range(0));
+  ObjectPermanenceFilter opf(options, "ball", 7);
+  const mrpt::poses::CPose3D ball = make_pose({0.4, 0.0, 0.02}, Eigen::Quaterniond::Identity());
+  const HandAbove beside(0.48), over(0.4);  // last seen with the hand 8 cm away, then under it
+  opf.initialise(0.0, ball);
+  double t = 0.0;
+  for (int k = 1; k < 60; ++k) opf.step(t += kDt, &ball, beside.view());
+  opf.step(t += kDt, nullptr, beside.view());
+  for (auto _ : state) benchmark::DoNotOptimize(opf.step(t += kDt, nullptr, over.view()));
+  state.counters["hypotheses"] = double(1 + opf.extra_hypotheses().size());
+  state.SetItemsProcessed(state.iterations() * 2 * state.range(0));
+}
+BENCHMARK(BM_OpfCarriedOrLeftStep)->Arg(5000)->ArgName("n")->Unit(benchmark::kMicrosecond);
 
 // One step of a Kalman filter estimator per iteration, on a measured stream.
 template <class Filter, class Options>

@@ -7,6 +7,7 @@
 #include "opf/permanence/motion_classifier.h"
 #include "opf/permanence/occluder_carry.h"
 #include "opf/permanence/occluder_selection.h"
+#include "opf/permanence/place_visibility.h"
 #include "opf/permanence/trajectory_motion.h"
 
 #include <algorithm>
@@ -32,6 +33,20 @@ constexpr std::uint64_t kMixtureStreams = 1000;
 // Occluder hypotheses below 5% are dropped, and at most four kept (the cups game has three).
 constexpr double kOccluderHypothesisFloor = 0.05;
 constexpr std::size_t kMaxOccluderHypotheses = 4;
+// A hypothesis the evidence has brought below one in a thousand is dropped: three frames with its
+// place seen and empty.
+constexpr double kNegligibleProbability = 1e-3;
+
+// Carried or left: before any evidence, the two answers are equally likely (the carried half
+// shared by the plausible occluders); on a tie the object is left where it was last seen.
+constexpr double kLeftPrior = 0.5;
+
+// The detector's miss probability per frame for an object in clear view: a hypothesis whose place
+// is seen and empty keeps this share of its probability.
+constexpr double kDetectorMissProbability = 0.1;
+
+// Jeffreys' "substantial" evidence: the odds the main hypothesis must lose by to be replaced.
+constexpr double kSubstantialBayesFactor = 3.1622776601683795;  // 10^(1/2)
 
 // The banks' validation gate: the chi-square 99.9% quantile with 3 degrees of freedom, on the
 // position's squared Mahalanobis distance from the mixture's one-step prediction.
@@ -172,6 +187,7 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     start_occlusion(last_seen, ensemble);
   }
   for (Hypothesis& h : hypotheses_) h.last = h.motion->step(last_seen, t, ensemble, h.filter);
+  if (options_.occluder.gate) weigh_by_what_is_not_seen(ensemble);
   return make_estimate(hypotheses_[0], 0);
 }
 
@@ -207,7 +223,7 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
                                            t - hidden_since_ > options_.history_reset_gap))
     history_.clear();
   // Carried by another object, it moved as nothing in its own history did.
-  if (hidden_ && hidden_by == EstimateMode::kOccluder) restart_banks();
+  if (hidden_ && hidden_by == EstimateMode::kCarried) restart_banks();
   hidden_ = false;
   // The history sample holds the estimate itself: its moments are computed once per step.
   const Estimate estimate = make_estimate(h, 0);
@@ -295,27 +311,42 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
                                            options_.dynamics.up, own.mean, orientation,
                                            candidates[k].object, *candidate_estimates[k], ensemble);
   };
-  // With the gate, every probable occluder carries a hypothesis, the most probable first; without
-  // it, the paper's rule: the nearest, and O_i' for a runner-up within epsilon_occ.
+  // With the gate, every probable occluder carries a hypothesis and the object left in place is
+  // one more; without it, the paper's rule: the nearest, and O_i' for a runner-up within
+  // epsilon_occ.
   std::vector<WeightedOccluder> occluders;
-  if (options_.occluder.gate)
+  const bool with_left = options_.occluder.gate;
+  if (with_left)
     occluders = probable_occluders(choice, kOccluderHypothesisFloor, kMaxOccluderHypotheses);
   else if (choice.second)
     occluders = {{*choice.nearest, 0.5}, {*choice.second, 0.5}};
   else
     occluders = {{*choice.nearest, 1.0}};
-  // The twins copy the filter as it is at onset, before hypothesis 0 moves.
+  const std::size_t k0 = occluders[0].candidate;
+  // The occluder's estimate is the last frame's, when this object was still seen.
+  hiding_radius_ = hiding_radius(own.mean, candidates[k0].mean, options_.occluder);
+  place_covariance_ = own.covariance;
+  const double carried_share = with_left ? 1.0 - kLeftPrior : 1.0;
+  // The others copy the filter as it is at onset, before hypothesis 0 moves.
   const std::optional<PoseParticleFilter> at_onset =
-      occluders.size() > 1 ? std::optional(h.filter) : std::nullopt;
-  for (std::size_t k = 1; k < occluders.size(); ++k) {
-    Hypothesis twin(*at_onset);  // O_i': a copy of the filter that follows another occluder
+      occluders.size() > 1 || with_left ? std::optional(h.filter) : std::nullopt;
+  const auto spawn = [&](std::unique_ptr<HiddenMotion> motion, double probability) {
+    Hypothesis twin(*at_onset);  // O_i' (another occluder), or the object left in place
     twin.filter.reseed(derive_seed(seed_, ++spawned_));
-    twin.motion = carry(occluders[k].candidate);
-    twin.probability = occluders[k].probability;
+    twin.motion = std::move(motion);
+    twin.probability = probability;
     hypotheses_.push_back(std::move(twin));
+  };
+  for (std::size_t k = 1; k < occluders.size(); ++k)
+    spawn(carry(occluders[k].candidate), carried_share * occluders[k].probability);
+  hypotheses_[0].motion = carry(k0);
+  hypotheses_[0].probability = carried_share * occluders[0].probability;
+  if (with_left) {
+    spawn(std::make_unique<HeldMotion>(virtual_measurement_settings(), EstimateMode::kLeft),
+          kLeftPrior);
+    std::rotate(hypotheses_.begin(), hypotheses_.end() - 1, hypotheses_.end());  // first on a tie
+    most_probable_first();
   }
-  hypotheses_[0].motion = carry(occluders[0].candidate);
-  hypotheses_[0].probability = occluders[0].probability;
   return true;
 }
 
@@ -337,6 +368,46 @@ void ObjectPermanenceFilter::keep_hypothesis_explaining(const Eigen::Vector3d& p
   hypotheses_[0].probability = 1.0;
 }
 
+void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensemble) {
+  if (hypotheses_.size() < 2) return;
+  std::vector<ViewBlocker> blockers;
+  for (const Estimate& e : ensemble.previous_estimates)
+    if (e.object != object_)
+      blockers.push_back({translation_of(e.pose.mean), translation_covariance(e)});
+  // p(no detection | the object at the place) = 1 - P(seen) (1 - P_miss).
+  double total = 0.0;
+  for (Hypothesis& h : hypotheses_) {
+    const Eigen::Vector3d place = h.filter.translation_moments().mean;
+    const double seen =
+        seen_probability(place, place_covariance_, blockers, hiding_radius_, options_.occluder);
+    h.probability *= 1.0 - seen * (1.0 - kDetectorMissProbability);
+    total += h.probability;
+  }
+  for (Hypothesis& h : hypotheses_) h.probability /= total;
+  most_probable_first();
+}
+
+void ObjectPermanenceFilter::most_probable_first() {
+  const auto more_probable = [](const Hypothesis& a, const Hypothesis& b) {
+    return a.probability > b.probability;
+  };
+  // The main estimate changes hands only on substantial evidence: a Bayes factor of at least
+  // 10^(1/2) (Jeffreys' scale), so that a near tie does not make it jump between places.
+  const auto best_other =
+      std::max_element(hypotheses_.begin() + 1, hypotheses_.end(), more_probable);
+  const bool keep = best_other == hypotheses_.end() ||
+                    best_other->probability < kSubstantialBayesFactor * hypotheses_[0].probability;
+  std::stable_sort(hypotheses_.begin() + (keep ? 1 : 0), hypotheses_.end(), more_probable);
+  // Negligible hypotheses are dropped (the main one is always kept).
+  std::size_t kept = 1;
+  while (kept < hypotheses_.size() && hypotheses_[kept].probability >= kNegligibleProbability)
+    ++kept;
+  hypotheses_.erase(hypotheses_.begin() + kept, hypotheses_.end());
+  double total = 0.0;
+  for (const Hypothesis& h : hypotheses_) total += h.probability;
+  for (Hypothesis& h : hypotheses_) h.probability /= total;
+}
+
 Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) const {
   Estimate estimate;
   estimate.object = object_;
@@ -355,7 +426,8 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
 ObjectPermanenceFilter::Hypothesis::Hypothesis(const Hypothesis& other)
     : filter(other.filter),
       motion(other.motion ? other.motion->clone() : nullptr),
-      last(other.last) {}
+      last(other.last),
+      probability(other.probability) {}
 
 ObjectPermanenceFilter::Hypothesis& ObjectPermanenceFilter::Hypothesis::operator=(
     const Hypothesis& other) {

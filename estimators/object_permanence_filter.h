@@ -3,9 +3,10 @@
 // measurement is missing, uses a virtual measurement from the Object Permanence update: the
 // fitted trajectory of a moving object (dynamics module) or the measurement of the object hiding
 // a static one (occluder module), with an inflated observation covariance (uncertainty module)
-// whose trace drives the safety alert (feedback module). Several plausible occluders each carry a
-// hypothesis with its probability; at the reappearance the most probable given the measurement
-// survives.
+// whose trace drives the safety alert (feedback module). The occluder module keeps hypotheses with
+// probabilities: carried by each plausible occluder, or left where it was; what the camera does
+// not see weighs them while hidden, and at the reappearance the most probable given the
+// measurement survives.
 
 #include "opf/core/estimator.h"
 #include "opf/estimators/opf_options.h"
@@ -74,6 +75,12 @@ class ObjectPermanenceFilter final : public Estimator {
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 const Estimate& estimate);
   void keep_hypothesis_explaining(const Eigen::Vector3d& position);
+  /// The negative information: each hypothesis whose place the camera would see, while no
+  /// detection arrives, loses probability by the detector's miss probability.
+  void weigh_by_what_is_not_seen(const EnsembleView& ensemble);
+  /// Orders the hypotheses most probable first (stably: ties keep their order), drops those below
+  /// the floor and renormalises.
+  void most_probable_first();
   Estimate make_estimate(const Hypothesis& hypothesis, int index) const;
 
   OpfOptions options_;
@@ -99,6 +106,11 @@ class ObjectPermanenceFilter final : public Estimator {
   std::optional<HeldMeasurement> held_;
   double t_ = 0.0;
   double hidden_since_ = 0.0;
+  /// m: how near the occluder came to this object when it hid it (place_visibility.h).
+  double hiding_radius_ = 0.0;
+  /// The object's position covariance at onset: how well each hypothesis knows its place (the
+  /// particles' random walk spreads them to keep them alive, not because the object moves).
+  Eigen::Matrix3d place_covariance_ = Eigen::Matrix3d::Zero();
   bool hidden_ = false;
   bool initialised_ = false;
 };

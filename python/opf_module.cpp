@@ -195,7 +195,7 @@ PYBIND11_MODULE(_opf, m) {
       .def_readonly("trace", &PyEstimate::trace,
                     "trace of the observation covariance used at the step (trace(Q~))")
       .def_readonly("mode", &PyEstimate::mode,
-                    "what produced it: measured, predicted, dynamics, occluder, random_walk "
+                    "what produced it: measured, predicted, dynamics, carried, left, random_walk "
                     "(+ recovery events), as in estimate files")
       .def_readonly("hypothesis", &PyEstimate::hypothesis, "0: main; 1, 2, ...: further")
       .def_readonly("probability", &PyEstimate::probability,

@@ -48,9 +48,10 @@ constexpr const char* kSummary =
     "detection on. Rows close in time form a frame (--frame-tolerance), frames missing inside\n"
     "gaps are filled (--rate, --no-fill); an object with no row (or empty pose fields) in a\n"
     "frame is unobserved there, and the mode column says what the estimator did instead\n"
-    "(predicted, dynamics, occluder, random_walk; +filled in a gap). The OPF treats every object\n"
-    "in the log as a possible occluder of every other. Further hypotheses (two equally likely\n"
-    "occluders) follow as extra rows with hypothesis >= 1; alert is 1 when trace(Q~) >=\n"
+    "(predicted, dynamics, carried, left, random_walk; +filled in a gap). The OPF treats every\n"
+    "object in the log as a possible occluder of every other. Further hypotheses (carried by\n"
+    "another occluder, or left) follow as extra rows with hypothesis >= 1, each with its\n"
+    "probability; alert is 1 when trace(Q~) >=\n"
     "epsilon_safe. A file is read whole (rows in any order) and the output written only when\n"
     "the whole run succeeded; a stream (--in - or --stream) is answered frame by frame.\n"
     "The log, estimate and settings formats: docs/formats.md.";

@@ -11,7 +11,9 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -51,6 +53,89 @@ ChartSeries series_of(const std::string& label, const std::string& estimator) {
   series.style = style.line;
   series.width = style.width;
   return series;
+}
+
+// A hypothesis by what it says: "left", or "carried by mug_a"; the main estimate's own word
+// otherwise ("dynamics", "measured").
+std::string hypothesis_name(const Estimate& estimate) {
+  std::string name(to_string(estimate.mode));
+  if (estimate.mode == EstimateMode::kCarried && !estimate.motion_model.empty())
+    name += " by " + estimate.motion_model;
+  return name;
+}
+
+// Appends a point to a track, first a gap (a non-finite value) when the track skipped frames.
+void extend(ChartSeries& track, int& last_frame, int frame, const Eigen::Vector3d& p) {
+  if (!track.x.empty() && frame != last_frame + 1) {
+    track.x.push_back(track.x.back());
+    track.y.push_back(std::numeric_limits<double>::quiet_NaN());
+  }
+  track.x.push_back(p.x());
+  track.y.push_back(p.y());
+  last_frame = frame;
+}
+
+// The top view of an object's hypotheses from the first seed, when the estimator kept more than
+// one: the truth, each hypothesis by what it says (dashed grey shades, across the frames it
+// exists in, main or not), the objects carrying them (thin, their main estimates) and the main
+// estimate in the estimator's style on top. None when it kept one throughout.
+std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
+                                          const std::string& object, const std::string& estimator) {
+  ChartSeries truth{"truth", {}, {}, 0, 0, 0};
+  truth.width = 4;
+  ChartSeries main = series_of("main", estimator);
+  std::map<std::string, std::pair<ChartSeries, int>> tracks;  // by name: series, last frame
+  bool several = false;
+  for (const FrameRecord& record : results.records) {
+    if (record.seed_index != results.first_seed || record.estimator != estimator ||
+        record.estimate.object != object)
+      continue;
+    const Eigen::Vector3d p = translation_of(record.estimate.pose.mean);
+    several = several || record.estimate.hypothesis > 0;
+    if (record.estimate.hypothesis == 0) {
+      main.x.push_back(p.x());
+      main.y.push_back(p.y());
+      truth.x.push_back(record.truth.position.x());
+      truth.y.push_back(record.truth.position.y());
+    }
+    if (record.visible) continue;
+    const std::string name = hypothesis_name(record.estimate);
+    auto [it, added] = tracks.try_emplace(name);
+    if (added) {
+      const auto shade =
+          static_cast<std::uint8_t>(std::min<std::size_t>(200, 60 + 45 * tracks.size()));
+      it->second.first = ChartSeries{name, {}, {}, shade, shade, shade};
+      it->second.first.style = LineStyle::kDashed;
+    }
+    extend(it->second.first, it->second.second, record.frame, p);
+  }
+  if (!several) return std::nullopt;
+  LineChart top;
+  top.x_label = "x [m]";
+  top.y_label = "y [m]";
+  top.height = 560;
+  top.series.push_back(std::move(truth));
+  // Light hues apart from the estimators' and the greys.
+  static constexpr std::array<std::array<std::uint8_t, 3>, 4> kCarrierHues = {
+      {{110, 170, 230}, {230, 170, 90}, {120, 200, 160}, {200, 140, 210}}};
+  std::size_t carriers = 0;
+  for (const auto& [name, track] : tracks) {
+    const std::string carrier = name.rfind("carried by ", 0) == 0 ? name.substr(11) : "";
+    if (carrier.empty()) continue;
+    const auto& hue = kCarrierHues[carriers++ % kCarrierHues.size()];
+    ChartSeries path{carrier + " (estimate)", {}, {}, hue[0], hue[1], hue[2]};
+    path.width = 1;
+    for (const FrameRecord& record : results.records)
+      if (record.seed_index == results.first_seed && record.estimator == estimator &&
+          record.estimate.object == carrier && record.estimate.hypothesis == 0) {
+        path.x.push_back(translation_of(record.estimate.pose.mean).x());
+        path.y.push_back(translation_of(record.estimate.pose.mean).y());
+      }
+    top.series.push_back(std::move(path));
+  }
+  for (auto& [name, track] : tracks) top.series.push_back(std::move(track.first));
+  top.series.push_back(std::move(main));
+  return top;
 }
 
 LineChart time_chart(const std::string& title, const std::string& y_label, bool log_y) {
@@ -126,45 +211,15 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
     }
   }
 
-  // Where an estimator followed more than one hypothesis (two equally likely occluders): a top
-  // view of each hypothesis's track beside the truth's, from the first seed.
-  for (const std::string& object : config.objects_of_interest) {
+  // Where an estimator kept more than one hypothesis: a top view of each one's track.
+  for (const std::string& object : config.objects_of_interest)
     for (const std::string& estimator : results.estimators) {
-      std::map<int, ChartSeries> tracks;
-      ChartSeries truth{"truth", {}, {}, 0, 0, 0};
-      truth.width = 4;
-      for (const FrameRecord& record : results.records) {
-        if (record.seed_index != results.first_seed || record.estimator != estimator ||
-            record.estimate.object != object)
-          continue;
-        const int h = record.estimate.hypothesis;
-        if (!tracks.count(h)) {
-          // The main hypothesis in the estimator's style, the others dashed in grey shades.
-          const auto shade = static_cast<std::uint8_t>(std::min(200, 60 + 50 * h));
-          ChartSeries further{"hyp. " + std::to_string(h), {}, {}, shade, shade, shade};
-          further.style = LineStyle::kDashed;
-          tracks[h] = h == 0 ? series_of("main", estimator) : further;
-        }
-        const Eigen::Vector3d p = translation_of(record.estimate.pose.mean);
-        tracks[h].x.push_back(p.x());
-        tracks[h].y.push_back(p.y());
-        if (h == 0) {
-          truth.x.push_back(record.truth.position.x());
-          truth.y.push_back(record.truth.position.y());
-        }
-      }
-      if (tracks.size() < 2) continue;
-      LineChart top;
-      top.title = config.name + ": " + object + ", " + estimator + " hypotheses, top view" + seed;
-      top.x_label = "x [m]";
-      top.y_label = "y [m]";
-      top.height = 560;
-      top.series.push_back(std::move(truth));
-      for (auto& [h, series] : tracks) top.series.push_back(std::move(series));
+      std::optional<LineChart> top = hypotheses_chart(results, object, estimator);
+      if (!top) continue;
+      top->title = config.name + ": " + object + ", " + estimator + " hypotheses, top view" + seed;
       written.push_back(dir / (config.name + "_" + object + "_" + estimator + "_hypotheses.png"));
-      write_line_chart(written.back(), top);
+      write_line_chart(written.back(), *top);
     }
-  }
 
   // The snapshot: the rendered frame with each estimator's estimate of the objects of interest
   // (filled circles) and the truth (black cross).

@@ -123,7 +123,12 @@ std::vector<double> nice_ticks(double low, double high, int count) {
 }
 
 void write_line_chart(const std::filesystem::path& path, const LineChart& chart) {
-  const int left = 80, right = 175, top = 58, bottom = 55;
+  // The legend's column: its swatch (40 px) and its longest label, at least 175 px.
+  int legend_width = 0, legend_baseline = 0;
+  for (const ChartSeries& series : chart.series)
+    legend_width = std::max(legend_width,
+                            cv::getTextSize(series.label, kFont, 0.45, 1, &legend_baseline).width);
+  const int left = 80, right = std::max(175, 12 + 40 + legend_width + 10), top = 58, bottom = 55;
   cv::Mat image(chart.height, chart.width, CV_8UC3, cv::Scalar(255, 255, 255));
   const cv::Rect plot(left, top, chart.width - left - right, chart.height - top - bottom);
 

@@ -124,6 +124,34 @@ def hidden_errors(summary_json, experiment):
             for e, r in runs.items()}
 
 
+def reveals(frames_csv):
+    """The OPF's reveals of the cube: for each hidden span of every seed that ends in a detection,
+    whether the main hypothesis in its last hidden frame was the right one: `carried` if the cube
+    moved more than 1 cm over the span (the truth), `left` otherwise. Returns (right, reveals)."""
+    spans = {}  # seed -> list of [first row, last row] of the hidden spans, in frame order
+    with open(frames_csv) as f:
+        rows = [r for r in csv.DictReader(f)
+                if r["object"] == "cube" and r["estimator"] == "opf" and r["hypothesis"] == "0"]
+    right = total = 0
+    previous = {}
+    for r in rows:
+        seed = r["seed"]
+        hidden = r["visible"] == "0"
+        span = spans.setdefault(seed, [])
+        if hidden and not (previous.get(seed) and previous[seed]["visible"] == "0"):
+            span.append([r, r])
+        elif hidden:
+            span[-1][1] = r
+        elif previous.get(seed) and previous[seed]["visible"] == "0":
+            first, last = span[-1]
+            moved = np.hypot(float(last["true_x"]) - float(first["true_x"]),
+                             float(last["true_y"]) - float(first["true_y"])) > 0.01
+            right += last["mode"].split("+")[0] == ("carried" if moved else "left")
+            total += 1
+        previous[seed] = r
+    return right, total
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("out")
@@ -144,7 +172,8 @@ def main():
                             str(args.seeds), "--quiet", "--out", run_dir], check=True,
                            stdout=subprocess.DEVNULL)
             errors = hidden_errors(os.path.join(run_dir, "summary.json"), f"{name}_{kind}")
-            table.append((name, kind, errors))
+            revealed = reveals(os.path.join(run_dir, f"{name}_{kind}_frames.csv"))
+            table.append((name, kind, errors, revealed))
     write_results(args.out, table)
 
 
@@ -154,19 +183,24 @@ def write_results(out, table):
     with open(os.path.join(out, "hand_scenes.csv"), "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
         writer.writerow(["recording", "scene", "estimator", "hidden_frames", "hidden_translation",
-                         "nearest_hidden_translation"])
-        for name, kind, errors in table:
+                         "nearest_hidden_translation", "right_at_reveal", "reveals"])
+        for name, kind, errors, (right, total) in table:
             for e in estimators:
                 main_error, nearest, frames = errors[e]
-                writer.writerow([name, kind, e, frames, f"{main_error:.6g}", f"{nearest:.6g}"])
+                revealed = [right, total] if e == "opf" else ["", ""]
+                writer.writerow([name, kind, e, frames, f"{main_error:.6g}", f"{nearest:.6g}"] +
+                                revealed)
     lines = ["| recording | scene | hidden frames | " + " | ".join(estimators) +
-             " | opf: nearest hypothesis |", "|---|---|---|" + "---|" * (len(estimators) + 1)]
-    for name, kind, errors in table:
+             " | opf: nearest hypothesis | opf: right at reveal |",
+             "|---|---|---|" + "---|" * (len(estimators) + 2)]
+    for name, kind, errors, (right, total) in table:
         cells = [f"{errors[e][0] * 1000:.1f}" for e in estimators]
         lines.append(f"| {name} | {kind} | {errors['opf'][2]} | " + " | ".join(cells) +
-                     f" | {errors['opf'][1] * 1000:.1f} |")
+                     f" | {errors['opf'][1] * 1000:.1f} | {right}/{total} |")
     text = ("The cube's mean translation error while hidden [mm], over the seeds; hidden frames "
-            "summed over the seeds.\n\n" + "\n".join(lines) + "\n")
+            "summed over the seeds. Right at reveal: the reveals at which the OPF's main hypothesis "
+            "was the right one (carried if the cube moved while hidden, left otherwise).\n\n" +
+            "\n".join(lines) + "\n")
     with open(os.path.join(out, "hand_scenes.md"), "w") as f:
         f.write(text)
     print(text, end="")

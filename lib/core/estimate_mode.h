@@ -11,16 +11,18 @@ enum class EstimateMode {
   kMeasured,    ///< updated with a real measurement
   kPredicted,   ///< propagated by the motion model only (measurement missing)
   kDynamics,    ///< OPF: updated with the fitted trajectory's extrapolation (dynamics module)
-  kOccluder,    ///< OPF: updated with the occluder's measurement (occluder module)
+  kCarried,     ///< OPF: carried by its occluder, whose measurement updates it (occluder module)
+  kLeft,        ///< OPF: left where its occluder hid it (occluder module), propagated in place
   kRandomWalk,  ///< occlusion-aware PF: occluded particles random-walk in a widening search
 };
 
 /// The words of the `mode` column, every mode once.
-inline constexpr EnumNames<EstimateMode, 5> kEstimateModeNames = {
+inline constexpr EnumNames<EstimateMode, 6> kEstimateModeNames = {
     {{EstimateMode::kMeasured, "measured"},
      {EstimateMode::kPredicted, "predicted"},
      {EstimateMode::kDynamics, "dynamics"},
-     {EstimateMode::kOccluder, "occluder"},
+     {EstimateMode::kCarried, "carried"},
+     {EstimateMode::kLeft, "left"},
      {EstimateMode::kRandomWalk, "random_walk"}}};
 
 constexpr std::string_view to_string(EstimateMode mode) {

@@ -30,7 +30,10 @@ std::optional<ModeColumn> parse_mode_column(std::string_view text) {
   const std::size_t plus = text.find('+');
   const std::string_view word = text.substr(0, plus);
   ModeColumn column;
-  const std::optional<EstimateMode> mode = parse_name(kEstimateModeNames, word);
+  // `occluder`: the word for `carried` before the occluder module kept a `left` hypothesis too,
+  // still read so that older estimate files load.
+  const std::optional<EstimateMode> mode =
+      word == "occluder" ? EstimateMode::kCarried : parse_name(kEstimateModeNames, word);
   if (!mode) return std::nullopt;
   column.mode = *mode;
   // Events follow in the written order, each at most once, so every column has one spelling.

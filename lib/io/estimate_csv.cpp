@@ -100,7 +100,7 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
     record.mode = reader.field(column[10]);
     if (!parse_mode_column(record.mode))
       reader.fail(column[10],
-                  "expected a mode (measured, predicted, dynamics, occluder or "
+                  "expected a mode (measured, predicted, dynamics, carried, left or "
                   "random_walk) optionally followed by +reset, +underflow, +capped, +filled; "
                   "got '" +
                       record.mode + "'");

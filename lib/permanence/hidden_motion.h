@@ -77,18 +77,21 @@ class VirtualMeasurementMotion : public HiddenMotion {
   CovarianceInflation inflation_;
 };
 
-/// No module has anything to say: the random walk, with Q~ inflated by the time hidden so that
-/// the feedback module still sees it (mode `predicted`).
+/// The object stays where it was: the random walk, with Q~ inflated by the time hidden so that
+/// the feedback module still sees it. Mode `predicted` when no module has anything to say, `left`
+/// for the occluder module's hypothesis that the occluder left it behind.
 class HeldMotion final : public VirtualMeasurementMotion {
  public:
-  using VirtualMeasurementMotion::VirtualMeasurementMotion;
+  explicit HeldMotion(const Settings& settings, EstimateMode mode = EstimateMode::kPredicted)
+      : VirtualMeasurementMotion(settings), mode_(mode) {}
   std::unique_ptr<HiddenMotion> clone() const override {
     return std::make_unique<HeldMotion>(*this);
   }
-  EstimateMode mode() const override { return EstimateMode::kPredicted; }
+  EstimateMode mode() const override { return mode_; }
 
  private:
   std::optional<Measurement> measure(double, const EnsembleView&) override { return std::nullopt; }
+  EstimateMode mode_;
 };
 
 }  // namespace opf

@@ -26,7 +26,9 @@ class OccluderCarry final : public VirtualMeasurementMotion {
   std::unique_ptr<HiddenMotion> clone() const override {
     return std::make_unique<OccluderCarry>(*this);
   }
-  EstimateMode mode() const override { return EstimateMode::kOccluder; }
+  EstimateMode mode() const override { return EstimateMode::kCarried; }
+  /// The occluder that carries the object, by its name in the ensemble.
+  std::string label() const override { return occluder_; }
 
  private:
   std::optional<Measurement> measure(double t, const EnsembleView& ensemble) override;

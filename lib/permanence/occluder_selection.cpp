@@ -1,6 +1,7 @@
 #include "opf/permanence/occluder_selection.h"
 
 #include "opf/permanence/bhattacharyya.h"
+#include "opf/permanence/place_visibility.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -42,22 +43,6 @@ Eigen::MatrixXd occlusion_plane_projection(const Eigen::Vector3d& hidden_mean,
   projection.row(1) = v.transpose();
   return projection;
 }
-
-namespace {
-
-// P(|x| <= reach) for x ~ N(offset, covariance), to first order: the disc's edge taken as straight
-// where it is nearest the offset. At a zero offset, the spread along any axis.
-double hide_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance,
-                        double reach) {
-  const double distance = offset.norm();
-  Eigen::VectorXd along = Eigen::VectorXd::Zero(offset.size());
-  along(0) = 1.0;
-  if (distance > 0.0) along = offset / distance;
-  const double sigma = std::sqrt(std::max(along.dot(covariance * along), 1e-18));
-  return 0.5 * std::erfc(-(reach - distance) / (sigma * std::sqrt(2.0)));
-}
-
-}  // namespace
 
 std::vector<WeightedOccluder> probable_occluders(const OccluderChoice& choice, double floor,
                                                  std::size_t max_count) {
@@ -123,9 +108,9 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     if (!std::isfinite(d)) continue;
     ++plausible;
     if (options.gate)
-      weighted.push_back(
-          {d,
-           {j, hide_probability(p * (c.mean - hidden_mean), hidden_sigma + sigma, options.reach)}});
+      weighted.push_back({d,
+                          {j, covering_probability(p * (c.mean - hidden_mean), hidden_sigma + sigma,
+                                                   options.reach)}});
     if (d < best_d) {
       runner_up = best;
       runner_up_d = best_d;

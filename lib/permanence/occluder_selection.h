@@ -71,7 +71,9 @@ struct OccluderOptions {
   /// mug missed for one frame would follow a hand circling 0.3 m away. With no plausible
   /// candidate the hidden object is held where it was, its uncertainty growing. With it, every
   /// plausible candidate is a hypothesis weighted by how likely it hides the object
-  /// (OccluderChoice::weighted); without it, the nearest and the epsilon_occ tie.
+  /// (OccluderChoice::weighted), and the OPF keeps the object left in place as one more, all
+  /// weighed each frame by what the camera does not see (place_visibility.h); without it, the
+  /// nearest and the epsilon_occ tie.
   bool gate = true;
   /// m: the largest distance between the centres of an object and an occluder that hides it,
   /// across the line of sight: half their sizes summed. 0.15 m lets a 0.2 m tray or hand hide a

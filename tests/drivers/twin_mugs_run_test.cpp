@@ -17,7 +17,7 @@ namespace {
 
 // The tie, rendered: two mugs close in on the ball from either side at the same speed and hide
 // it between them (~1.9 s), mug B slides over it and carries it 0.25 m away while mug A backs
-// off, and mug B slides off it at ~5 s. 1000 + 1000 particles, two seeds, the experiment's own
+// off, and mug B slides off it at ~5 s. 1000 + 1000 particles, three seeds, the experiment's own
 // settings.
 class TwinMugs : public ::testing::Test {
  protected:
@@ -40,17 +40,50 @@ class TwinMugs : public ::testing::Test {
   static inline Observation observation_;
 };
 
+// The mean error of the ball's hypothesis that `mug` carries (the main one or a further one), over
+// the hidden frames in [from, to) of every seed.
+double carried_by(const ExperimentResults& r, const std::string& mug, int from, int to) {
+  double sum = 0.0;
+  std::size_t frames = 0;
+  for (const FrameRecord& record : r.records) {
+    if (record.estimate.object != "ball" || record.visible || record.frame < from ||
+        record.frame >= to || record.estimate.mode != EstimateMode::kCarried ||
+        record.estimate.motion_model != mug)
+      continue;
+    sum += (translation_of(record.estimate.pose.mean) - record.truth.position).norm();
+    ++frames;
+  }
+  EXPECT_GT(frames, 0u) << mug;
+  return frames ? sum / double(frames) : 0.0;
+}
+
 TEST_F(TwinMugs, OneHypothesisFollowsEachMugAndTheRightOneSurvivesTheReveal) {
   const ExperimentResults r = run(settings());
   const HypothesisStats h = hypothesis_stats(r, "opf");
-  // The tie fires at onset (the mugs' distances differ by the estimates' few mm, under the
-  // 1 cm epsilon_occ) and both hypotheses live through every hidden frame of every seed.
   ASSERT_GT(h.hidden_frames, 150u);
-  EXPECT_EQ(h.with_more, h.hidden_frames);
+  // At onset (the mugs' rims 4.5 cm either side): left where it vanished at 1/2, and carried by
+  // either mug at 1/4 each, equally plausible.
+  for (const FrameRecord& record : r.records) {
+    if (record.frame != 60 || record.estimate.object != "ball") continue;
+    const bool left = record.estimate.mode == EstimateMode::kLeft;
+    EXPECT_NEAR(record.estimate.probability, left ? 0.5 : 0.25, 0.01) << record.seed_index;
+  }
   // The hypothesis following mug B is held while B closes in and slides over the ball, then
-  // carried at its offset of B's closest approach: the estimates' few mm (4-9 mm in each of ten
-  // seeds, with 1000 or 5000 particles). The bound for the tie: 15 mm.
+  // carried at its offset of B's closest approach: the estimates' few mm to ~1 cm. The
+  // target for the tie: 15 mm.
   EXPECT_LT(h.nearest_hidden_translation, 0.015);
+  // Mug A backs off with its hypothesis beside its rim, where the ball would be as much in view
+  // as when it vanished, and the ball's old place comes into view as B carries it away: both are
+  // seen empty and lose. From 4 s (frame 120) on mug B's hypothesis is the main estimate in every
+  // seed. Before, the left one was, until B had carried the ball ~5 cm: ~10 of the 93 hidden
+  // frames at up to 5.5 cm.
+  for (const FrameRecord& record : r.records) {
+    if (record.frame < 120 || record.visible || record.estimate.object != "ball" ||
+        record.estimate.hypothesis != 0)
+      continue;
+    EXPECT_EQ(record.estimate.motion_model, "mug_b") << record.frame;
+  }
+  EXPECT_LT(h.main_hidden_translation, 0.025);
   // Seen again under mug B's last place: one hypothesis is left, on the ball.
   for (const FrameRecord& record : r.records) {
     if (record.frame < config_.frames - 30) continue;
@@ -59,34 +92,16 @@ TEST_F(TwinMugs, OneHypothesisFollowsEachMugAndTheRightOneSurvivesTheReveal) {
     EXPECT_LT((translation_of(record.estimate.pose.mean) - record.truth.position).norm(), 0.01)
         << record.frame;
   }
-  // Mid-carry (4 s) one hypothesis is on the ball and the other with mug A, which is 0.39 m
-  // away by then: they are over 0.3 m apart.
-  std::map<std::size_t, std::vector<const FrameRecord*>> at_four_seconds;
-  for (const FrameRecord& record : r.records)
-    if (record.frame == 120 && record.estimate.object == "ball")
-      at_four_seconds[record.seed_index].push_back(&record);
-  ASSERT_EQ(at_four_seconds.size(), 3u);
-  for (const auto& [seed, both] : at_four_seconds) {
-    ASSERT_EQ(both.size(), 2u) << seed;
-    const auto error = [](const FrameRecord* record) {
-      return (translation_of(record->estimate.pose.mean) - record->truth.position).norm();
-    };
-    EXPECT_LT(std::min(error(both[0]), error(both[1])), 0.05) << seed;
-    EXPECT_GT(
-        (translation_of(both[0]->estimate.pose.mean) - translation_of(both[1]->estimate.pose.mean))
-            .norm(),
-        0.3)
-        << seed;
-  }
 }
 
 TEST_F(TwinMugs, CarriedFromOnsetTheBallsMugIsFollowedAtItsCentre) {
-  // Without waiting for the departure, the hypothesis following mug B takes B's centre from
-  // onset, 4.5-5.5 cm beside the ball until B has slid over it at 3 s: over a third of the 93
-  // hidden frames, about 15 mm on average on top of the carry's few mm (18 mm here).
+  // Until mug B has slid over the ball (3 s, frame 90), its hypothesis waits at the ball's place
+  // (7.6 mm off here); without waiting for the departure it takes B's centre from onset, 4.5-5.5 cm
+  // beside the ball (37 mm here).
+  EXPECT_LT(carried_by(run(settings()), "mug_b", 0, 90), 0.01);
   EstimatorSettings s = settings();
   s.opf.occluder.carry_from_departure = false;
-  EXPECT_GT(hypothesis_stats(run(s), "opf").nearest_hidden_translation, 0.015);
+  EXPECT_GT(carried_by(run(s), "mug_b", 0, 90), 0.03);
 }
 
 }  // namespace

@@ -143,7 +143,7 @@ TEST_F(EstimateCsv, RoundTripsExactly) {
       make_estimate(0.1 + 0.2, "ball", mrpt::poses::CPose3D(0, 0, 0, 0, 0, 0))};
   estimates[1].mode = EstimateMode::kPredicted;
   estimates[1].observation_trace = 1.0 / 7.0;
-  estimates[2].mode = EstimateMode::kOccluder;
+  estimates[2].mode = EstimateMode::kCarried;
   estimates[2].recovery = {.weights_underflow = true, .trace_capped = true};
 
   const auto records = read_estimate_csv(write(estimates));
@@ -159,7 +159,7 @@ TEST_F(EstimateCsv, RoundTripsExactly) {
     EXPECT_EQ(records[i].trace, estimates[i].observation_trace);
     EXPECT_EQ(records[i].mode, mode_column(estimates[i].mode, estimates[i].recovery));
   }
-  EXPECT_EQ(records[2].mode, "occluder+underflow+capped");
+  EXPECT_EQ(records[2].mode, "carried+underflow+capped");
 }
 
 TEST_F(EstimateCsv, RoundTripsHypothesisAlertAndModel) {

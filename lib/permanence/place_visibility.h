@@ -1,0 +1,41 @@
+#pragma once
+// Whether the camera would see a hidden object where a hypothesis puts it: the negative
+// information that weighs the occluder module's hypotheses (carried or left). Each tracked object
+// covers a place with the probability that its centre lies within a radius of the place's across
+// the line of sight; the objects cover it independently.
+
+#include "opf/permanence/occluder_selection.h"
+
+#include <Eigen/Core>
+
+#include <span>
+
+namespace opf {
+
+/// P(|x| <= radius) for x ~ N(offset, covariance) in the occlusion plane, to first order: the
+/// disc's edge taken as straight where it is nearest the offset, Phi((radius - |m|) / sigma)
+/// with sigma the spread along m. At a zero offset, the spread along the first axis.
+double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance,
+                            double radius);
+
+/// Another tracked object's position estimate, as something that may stand in the way.
+struct ViewBlocker {
+  Eigen::Vector3d mean;
+  Eigen::Matrix3d covariance;
+};
+
+/// The probability that the camera sees a place (a position estimate `place` +- `covariance`):
+/// that no blocker covers it, each covering it when its centre lies within `radius` (m) of the
+/// place's across the line of sight (options.plane) and no more than `radius` behind it along
+/// the ray: prod_k (1 - P_k), the objects covering independently. A blocker whose estimate is not
+/// finite is passed over.
+double seen_probability(const Eigen::Vector3d& place, const Eigen::Matrix3d& covariance,
+                        std::span<const ViewBlocker> blockers, double radius,
+                        const OccluderOptions& options);
+
+/// m: how near an occluder's centre was to a place across the line of sight (options.plane) when
+/// it last let it be seen, at most `options.reach`: any tracked object nearer covers the place.
+double hiding_radius(const Eigen::Vector3d& place, const Eigen::Vector3d& occluder,
+                     const OccluderOptions& options);
+
+}  // namespace opf

@@ -1,0 +1,64 @@
+#include "opf/permanence/place_visibility.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace opf {
+namespace {
+
+const Eigen::Matrix3d kTight = Eigen::Matrix3d::Identity() * 1e-6;  // 1 mm std per axis
+const Eigen::Vector3d kPlace(0.5, 0.0, 0.0);
+
+double phi(double x) {
+  return 0.5 * std::erfc(-x / std::sqrt(2.0));
+}
+
+TEST(PlaceVisibility, CoveringProbabilityIsPhiOfTheMarginOverTheSpreadAlongTheOffset) {
+  const Eigen::Matrix2d spread = Eigen::Vector2d(1e-4, 4e-4).asDiagonal();  // 1 cm along x, 2 on y
+  // On the edge: one half. Two standard deviations inside: Phi(2). Along y the spread is 2 cm.
+  EXPECT_NEAR(covering_probability(Eigen::Vector2d(0.1, 0.0), spread, 0.1), 0.5, 1e-12);
+  EXPECT_NEAR(covering_probability(Eigen::Vector2d(0.1, 0.0), spread, 0.12), phi(2.0), 1e-12);
+  EXPECT_NEAR(covering_probability(Eigen::Vector2d(0.0, 0.1), spread, 0.12), phi(1.0), 1e-12);
+  EXPECT_NEAR(covering_probability(Eigen::Vector2d(0.14, 0.0), spread, 0.1), phi(-4.0), 1e-12);
+  // At a zero offset, the spread along the first axis.
+  EXPECT_NEAR(covering_probability(Eigen::Vector2d::Zero(), spread, 0.01), phi(1.0), 1e-12);
+}
+
+TEST(PlaceVisibility, APlaceIsSeenWhenNoTrackedObjectIsNearItsLineOfSight) {
+  const OccluderOptions top_down;  // no camera: the line of sight is -z
+  const auto seen = [&](const std::vector<ViewBlocker>& blockers) {
+    return seen_probability(kPlace, kTight, blockers, 0.08, top_down);
+  };
+  EXPECT_EQ(seen({}), 1.0);
+  // A hand 5 cm across the line of sight, 12 cm above: within the 8 cm it hides.
+  EXPECT_LT(seen({{Eigen::Vector3d(0.5, 0.05, 0.12), kTight}}), 1e-9);
+  // 30 cm across: clear.
+  EXPECT_GT(seen({{Eigen::Vector3d(0.5, 0.3, 0.12), kTight}}), 1.0 - 1e-9);
+  // Under the place (the table, or an object below it) hides nothing.
+  EXPECT_EQ(seen({{Eigen::Vector3d(0.5, 0.0, -0.2), kTight}}), 1.0);
+  // Two on the edge each cover it half the time, independently: a quarter.
+  EXPECT_NEAR(seen({{Eigen::Vector3d(0.58, 0.0, 0.1), Eigen::Matrix3d::Zero()},
+                    {Eigen::Vector3d(0.42, 0.0, 0.1), Eigen::Matrix3d::Zero()}}),
+              0.25, 1e-6);
+}
+
+TEST(PlaceVisibility, AnObliqueCameraLooksAlongItsOwnRay) {
+  OccluderOptions oblique;
+  oblique.camera_position = Eigen::Vector3d(0.5, -1.0, 1.0);
+  // On the ray from the camera to the place, 0.2 m away from it across the table: it hides the
+  // place from this camera, though not from one straight above.
+  const std::vector<ViewBlocker> on_the_ray = {{Eigen::Vector3d(0.5, -0.2, 0.2), kTight}};
+  EXPECT_LT(seen_probability(kPlace, kTight, on_the_ray, 0.08, oblique), 1e-9);
+  EXPECT_GT(seen_probability(kPlace, kTight, on_the_ray, 0.08, OccluderOptions{}), 1.0 - 1e-9);
+}
+
+TEST(PlaceVisibility, TheHidingRadiusIsTheOccludersOffsetWhenTheObjectWasLastSeenAtMostReach) {
+  const OccluderOptions options;  // reach 0.15 m
+  EXPECT_NEAR(hiding_radius(kPlace, Eigen::Vector3d(0.56, 0.08, 0.12), options), 0.1, 1e-12);
+  EXPECT_EQ(hiding_radius(kPlace, Eigen::Vector3d(0.8, 0.0, 0.12), options), 0.15);
+}
+
+}  // namespace
+}  // namespace opf

@@ -1,0 +1,47 @@
+"""The hand scenes' reveal statistic: was the OPF's main hypothesis the right one when the cube
+was seen again (carried if it moved while hidden, left otherwise)?"""
+
+import csv
+import importlib.util
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "experiments" / "real_motion"))
+_spec = importlib.util.spec_from_file_location(
+    "hand_scenes", ROOT / "experiments" / "real_motion" / "hand_scenes.py")
+hand_scenes = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(hand_scenes)
+
+FIELDS = ["frame", "object", "estimator", "seed", "hypothesis", "visible", "mode",
+          "true_x", "true_y"]
+
+
+def write_frames(path, rows):
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, FIELDS)
+        writer.writeheader()
+        for r in rows:
+            writer.writerow(dict(zip(FIELDS, r)))
+
+
+def test_each_reveal_is_judged_by_whether_the_cube_moved(tmp_path):
+    path = tmp_path / "frames.csv"
+    rows = []
+    # Seed 0: hidden in frames 1-3 while it moves 5 cm, main `carried` at the end: right. Then
+    # hidden in frames 5-6 without moving, main `carried+capped`: wrong.
+    # Seed 1: hidden in frames 1-2 without moving, main `left`: right. Hidden from frame 4 to
+    # the end: no reveal. The other rows (another object, a further hypothesis, the PF) count not.
+    for frame, visible, mode, x in [(0, 1, "measured", 0.0), (1, 0, "left", 0.0),
+                                    (2, 0, "left", 0.02), (3, 0, "carried", 0.05),
+                                    (4, 1, "measured", 0.05), (5, 0, "left", 0.05),
+                                    (6, 0, "carried+capped", 0.051), (7, 1, "measured", 0.051)]:
+        rows.append((frame, "cube", "opf", 0, 0, visible, mode, x, 0.0))
+        rows.append((frame, "cube", "opf", 0, 1, visible, "carried", x, 0.0))
+        rows.append((frame, "cube", "pf", 0, 0, visible, "predicted", x, 0.0))
+        rows.append((frame, "hand", "opf", 0, 0, 1, "measured", x, 0.0))
+    for frame, visible, mode in [(0, 1, "measured"), (1, 0, "carried"), (2, 0, "left"),
+                                 (3, 1, "measured"), (4, 0, "left"), (5, 0, "left")]:
+        rows.append((frame, "cube", "opf", 1, 0, visible, mode, 0.3, 0.1))
+    write_frames(path, rows)
+    assert hand_scenes.reveals(path) == (2, 3)
