@@ -76,9 +76,10 @@ void extend(ChartSeries& track, int& last_frame, int frame, const Eigen::Vector3
 }
 
 // The top view of an object's hypotheses from the first seed, when the estimator kept more than
-// one: the truth, each hypothesis by what it says (dashed grey shades, across the frames it
-// exists in, main or not), the objects carrying them (thin, their main estimates) and the main
-// estimate in the estimator's style on top. None when it kept one throughout.
+// one: the truth, each of the occluder module's hypotheses by what it says (grey, dashed or
+// dotted, across the frames it exists in, main or not), the objects carrying them (thin, their main
+// estimates) and the main estimate in the estimator's style on top. None when it kept one
+// throughout.
 std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
                                           const std::string& object, const std::string& estimator) {
   ChartSeries truth{"truth", {}, {}, 0, 0, 0};
@@ -98,14 +99,18 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
       truth.x.push_back(record.truth.position.x());
       truth.y.push_back(record.truth.position.y());
     }
-    if (record.visible) continue;
+    const EstimateMode mode = record.estimate.mode;
+    if (mode != EstimateMode::kCarried && mode != EstimateMode::kLeft) continue;
     const std::string name = hypothesis_name(record.estimate);
     auto [it, added] = tracks.try_emplace(name);
     if (added) {
-      const auto shade =
-          static_cast<std::uint8_t>(std::min<std::size_t>(200, 60 + 45 * tracks.size()));
+      // Dashed, dash-dotted, dotted, then the same in lighter greys.
+      static constexpr std::array<LineStyle, 3> kStyles = {LineStyle::kDashed, LineStyle::kDashDot,
+                                                           LineStyle::kDotted};
+      const std::size_t i = tracks.size() - 1;
+      const auto shade = static_cast<std::uint8_t>(70 + 55 * ((i / kStyles.size()) % 3));
       it->second.first = ChartSeries{name, {}, {}, shade, shade, shade};
-      it->second.first.style = LineStyle::kDashed;
+      it->second.first.style = kStyles[i % kStyles.size()];
     }
     extend(it->second.first, it->second.second, record.frame, p);
   }
