@@ -28,7 +28,8 @@ TEST(CupsGame, TheOpfFollowsTheBallsCupThroughTheShuffle) {
   // the nearest follows the ball across the line of sight at its own depth: what remains is the
   // x-y offset taken at onset, while the cup still slides over the ball, and the lag of the
   // carrier's filtered estimate through the swaps (7 mm here; the target: 15 mm). The main
-  // one is the hand's, which leaves cup B before it is lifted (docs/occluder.md).
+  // one, with 1000 particles, is the hand's, which lets go of cup B before it is lifted
+  // (docs/occluder.md).
   EXPECT_GT(pf.translation_unobserved, 0.15);
   EXPECT_LT(hypothesis_stats(r, "opf").nearest_hidden_translation, 0.015);
   // Once the ball is seen again, both end on it.
