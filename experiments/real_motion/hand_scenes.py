@@ -4,16 +4,21 @@
 The hand (a 14 cm plate, as a gripper seen from above) moves along the horizontal path and the
 turn about the vertical of a TUM VI hand-held recording (the shipped excerpts, raw/handheld),
 scaled by 0.25 into a table's workspace and held 0.12 m above the table, under a top-down camera
-at 30 Hz; a 2 cm cube rests on the table. Two scenes per recording:
+at 30 Hz; a 2 cm cube rests on the table. Three scenes per recording:
 
   carry  the cube lies where the hand is 2.5 s in; the hand picks it up there, carries it for
          4 s along the recording and puts it down;
   pass   the cube lies where the hand is 4 s in; the hand passes over it and moves on.
 
+and the cups game: cup B, moved by a hand (a 6 cm grip 0.2 m up) along the recording, slides over a
+ball 2.5 s in, carries it and is lifted off it at 6.5 s; cup A is moved by another hand along the
+next recording, and cup C rests 12 cm beside the ball.
+
 Occlusion comes from the rendered geometry; the truth is the scene's. Each scene is written as an
 experiment file and run by `opf run` with every estimator; the table gives, per scene and
-estimator, the cube's error while hidden (the main estimate's, and for the OPF the hypothesis
-nearest the truth).
+estimator, the hidden object's error while hidden (the main estimate's, and for the OPF the
+hypothesis nearest the truth), and how often the OPF's main hypothesis was the right one when it
+was seen again.
 
 Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and hand_scenes.md.
 
@@ -44,16 +49,16 @@ SCALE = 0.25           # the recording's horizontal motion into the workspace
 HOVER = 0.12           # m above the table, the hand's centre
 WORKSPACE = (0.55, 0.0)  # m, the table's centre under the camera
 PICK, PLACE, PASS = 2.5, 6.5, 4.0  # s
+COVER, LIFT = 2.5, 6.5  # s: in the cups game, cup B over the ball, and lifted off it
 ESTIMATORS = "opf,pf,cvkf,imm,oapf"
 # m: the hand's centre this far from the cube's leaves it in view (the plate's half-diagonal 9.9 cm
 # plus the cube's half-width).
 CLEAR = 0.11
 
 
-def hand_path(read, path, cube_time, left_at):
-    """(t, x, y, yaw) at 30 Hz over the scene, from the first window of the recording (from 2 s
-    on, in steps of 0.5 s) in which the cube is seen before the hand reaches it and after the
-    hand leaves it."""
+def windows(read, path):
+    """(t, x, y, yaw) at 30 Hz over the scene for each window of the recording, from 2 s on in
+    steps of 0.5 s: the horizontal path scaled into the workspace, the turn about the vertical."""
     t, p, q = read(os.path.join(HERE, path))
     t = t - t[0]
     # Yaw about the vertical from the quaternion (x, y, z, w), unwrapped.
@@ -66,20 +71,40 @@ def hand_path(read, path, cube_time, left_at):
         x = WORKSPACE[0] + SCALE * (xs - xs.mean())
         y = WORKSPACE[1] + SCALE * (ys - ys.mean())
         yaw = np.interp(times + start, t, yaw_all)
-        if clear_at_both_ends(times, x, y, cube_time, left_at):
-            return times, x, y, yaw - yaw[0]
+        yield times, x, y, yaw - yaw[0]
+
+
+def hand_path(read, path, cube_time, left_at):
+    """The first window in which the cube, lying where the hand is at cube_time, is seen before
+    the hand reaches it, and after the hand leaves where it is at left_at."""
+    for times, x, y, yaw in windows(read, path):
+        cube = (at(times, x, cube_time), at(times, y, cube_time))
+        left = (at(times, x, left_at), at(times, y, left_at))
+        if clear_at_both_ends(times, x, y, cube, left):
+            return times, x, y, yaw
     raise SystemExit(f"hand_scenes: no window of {path} leaves the cube in view at both ends")
 
 
-def clear_at_both_ends(times, x, y, cube_time, left_at):
-    """The hand is at least CLEAR from where the cube lies over the first second, and from where
+def clear_at_both_ends(times, x, y, cube, left):
+    """The path is at least CLEAR from where the cube lies over the first second, and from where
     it is left over the last second."""
-    def distance(t0, t1, at_time):
-        cx, cy = at(times, x, at_time), at(times, y, at_time)
+    def distance(t0, t1, place):
         span = (times >= t0) & (times <= t1)
-        return np.hypot(x[span] - cx, y[span] - cy).min()
-    return (distance(0.0, 1.0, cube_time) >= CLEAR
-            and distance(DURATION - 1.0, DURATION, left_at) >= CLEAR)
+        return np.hypot(x[span] - place[0], y[span] - place[1]).min()
+    return distance(0.0, 1.0, cube) >= CLEAR and distance(DURATION - 1.0, DURATION, left) >= CLEAR
+
+
+def cups_paths(moving_b, moving_a):
+    """Cup B's path (the first window of its recording that leaves the ball in view before B
+    covers it and after B is lifted off it) and cup A's (the first window of the other recording
+    that leaves it in view then too)."""
+    times, bx, by, _ = hand_path(moving_b[1], moving_b[2], COVER, LIFT)
+    ball = (at(times, bx, COVER), at(times, by, COVER))
+    left = (at(times, bx, LIFT), at(times, by, LIFT))
+    for _, ax, ay, _ in windows(moving_a[1], moving_a[2]):
+        if clear_at_both_ends(times, ax, ay, ball, left):
+            return times, (bx, by), (ax, ay)
+    raise SystemExit(f"hand_scenes: no window of {moving_a[2]} leaves the ball in view")
 
 
 def at(times, values, t):
@@ -113,6 +138,43 @@ def scene_yaml(name, kind, times, x, y, yaw):
     return "\n".join(lines) + "\n"
 
 
+def cups_yaml(name, times, b, a):
+    """The cups game on recorded paths: cups A and B each moved by a hand (a 6 cm grip 0.2 m up,
+    leaving the cup's rim in view) along a recording, a third cup C resting 12 cm beside the ball (clear of where it is
+    left); the ball lies where B is at COVER, B slides over it and carries it until LIFT, then is lifted off
+    it and moves on."""
+    ball = (at(times, b[0], COVER), at(times, b[1], COVER))
+    lines = [f"# the cups game on recorded paths ({name}); hand_scenes.py",
+             f"name: {name}_cups", f"rate: {int(RATE)}", f"frames: {len(times)}",
+             "camera:", "  position: [0.55, 0.0, 0.8]", "  look_at: [0.55, 0.0, 0.0]",
+             "  up: [1, 0, 0]", "  vertical_fov_deg: 75",
+             "measurement:", "  position_noise: 0.002", "  orientation_noise: 0.01",
+             "  min_visible_fraction: 0.3", "  min_area_pixels: 30",
+             "objects_of_interest: ball", "bodies:",
+             "  - name: table", "    shape: box", "    size: [1.4, 1.4, 0.02]",
+             "    colour: [150, 150, 150]", "    tracked: false",
+             "    waypoints: [{t: 0, position: [0.55, 0.0, -0.035]}]",
+             "  - name: ball", "    shape: sphere", "    size: [0.025]", "    colour: [255, 0, 0]",
+             f"    waypoints: [{{t: 0, position: [{ball[0]:.6f}, {ball[1]:.6f}, 0.0]}}]",
+             "    carried:", f"      - {{from: {COVER}, to: {LIFT}, by: cup_b}}"]
+    left = (at(times, b[0], LIFT), at(times, b[1], LIFT))
+    c = next(p for p in ((ball[0] + dx, ball[1] + dy) for dx, dy in
+                         ((0.12, 0), (-0.12, 0), (0, 0.12), (0, -0.12)))
+             if np.hypot(p[0] - left[0], p[1] - left[1]) >= CLEAR)
+    lines += ["  - name: cup_c", "    shape: cylinder", "    size: [0.045, 0.1]",
+              "    colour: [255, 0, 255]",
+              f"    waypoints: [{{t: 0, position: [{c[0]:.6f}, {c[1]:.6f}, 0.03]}}]"]
+    for cup, hand, (x, y), colours in (("cup_a", "hand_a", a, ("[0, 255, 0]", "[0, 255, 255]")),
+                                       ("cup_b", "hand_b", b, ("[0, 0, 255]", "[255, 255, 0]"))):
+        for body, shape, size, z, tint in ((cup, "cylinder", "[0.045, 0.1]", 0.03, colours[0]),
+                                           (hand, "box", "[0.06, 0.06, 0.03]", 0.2, colours[1])):
+            lines += [f"  - name: {body}", f"    shape: {shape}", f"    size: {size}",
+                      f"    colour: {tint}", "    waypoints:"]
+            lines += [f"      - {{t: {t:.6f}, position: [{xi:.6f}, {yi:.6f}, {z}]}}"
+                      for t, xi, yi in zip(times, x, y)]
+    return "\n".join(lines) + "\n"
+
+
 def hidden_errors(summary_json, experiment):
     """Per estimator: the cube's mean hidden translation error of the main estimate and of the
     hypothesis nearest the truth, over the seeds' hidden frames, and their number (`opf run`'s
@@ -124,14 +186,15 @@ def hidden_errors(summary_json, experiment):
             for e, r in runs.items()}
 
 
-def reveals(frames_csv):
-    """The OPF's reveals of the cube: for each hidden span of every seed that ends in a detection,
-    whether the main hypothesis in its last hidden frame was the right one: `carried` if the cube
-    moved more than 1 cm over the span (the truth), `left` otherwise. Returns (right, reveals)."""
+def reveals(frames_csv, target="cube", carriers=None):
+    """The OPF's reveals of the target: for each hidden span of every seed that ends in a
+    detection, whether the main hypothesis in its last hidden frame was the right one: `carried`
+    (by one of `carriers`, when given) if the target moved more than 1 cm over the span (the
+    truth), `left` otherwise. Returns (right, reveals)."""
     spans = {}  # seed -> list of [first row, last row] of the hidden spans, in frame order
     with open(frames_csv) as f:
         rows = [r for r in csv.DictReader(f)
-                if r["object"] == "cube" and r["estimator"] == "opf" and r["hypothesis"] == "0"]
+                if r["object"] == target and r["estimator"] == "opf" and r["hypothesis"] == "0"]
     right = total = 0
     previous = {}
     for r in rows:
@@ -146,7 +209,11 @@ def reveals(frames_csv):
             first, last = span[-1]
             moved = np.hypot(float(last["true_x"]) - float(first["true_x"]),
                              float(last["true_y"]) - float(first["true_y"])) > 0.01
-            right += last["mode"].split("+")[0] == ("carried" if moved else "left")
+            mode = last["mode"].split("+")[0]
+            if moved:
+                right += mode == "carried" and (carriers is None or last["model"] in carriers)
+            else:
+                right += mode == "left"
             total += 1
         previous[seed] = r
     return right, total
@@ -161,20 +228,31 @@ def main():
     args = parser.parse_args()
     os.makedirs(args.out, exist_ok=True)
     table = []
-    for name, read, path in RECORDINGS[:args.recordings]:
+    for i, (name, read, path) in enumerate(RECORDINGS[:args.recordings]):
         for kind, cube_time, left_at in (("carry", PICK, PLACE), ("pass", PASS, PASS)):
             times, x, y, yaw = hand_path(read, path, cube_time, left_at)
-            scene = os.path.join(args.out, f"{name}_{kind}.yaml")
-            with open(scene, "w") as f:
-                f.write(scene_yaml(name, kind, times, x, y, yaw))
-            run_dir = os.path.join(args.out, f"{name}_{kind}")
-            subprocess.run([args.opf, "run", scene, "--estimators", ESTIMATORS, "--seeds",
-                            str(args.seeds), "--quiet", "--out", run_dir], check=True,
-                           stdout=subprocess.DEVNULL)
-            errors = hidden_errors(os.path.join(run_dir, "summary.json"), f"{name}_{kind}")
-            revealed = reveals(os.path.join(run_dir, f"{name}_{kind}_frames.csv"))
-            table.append((name, kind, errors, revealed))
+            table.append((name, kind, *run_scene(args, f"{name}_{kind}",
+                                                 scene_yaml(name, kind, times, x, y, yaw),
+                                                 "cube")))
+        # The cups game: cup B on this recording, cup A on the next.
+        times, b, a = cups_paths(RECORDINGS[i], RECORDINGS[(i + 1) % len(RECORDINGS)])
+        table.append((name, "cups", *run_scene(args, f"{name}_cups", cups_yaml(name, times, b, a),
+                                               "ball", {"cup_b", "hand_b"})))
     write_results(args.out, table)
+
+
+def run_scene(args, experiment, text, target, carriers=None):
+    """Writes the experiment file, runs every estimator on it and returns the target's hidden
+    errors (hidden_errors) and the OPF's reveals (reveals)."""
+    scene = os.path.join(args.out, f"{experiment}.yaml")
+    with open(scene, "w") as f:
+        f.write(text)
+    run_dir = os.path.join(args.out, experiment)
+    subprocess.run([args.opf, "run", scene, "--estimators", ESTIMATORS, "--seeds",
+                    str(args.seeds), "--quiet", "--out", run_dir], check=True,
+                   stdout=subprocess.DEVNULL)
+    return (hidden_errors(os.path.join(run_dir, "summary.json"), experiment),
+            reveals(os.path.join(run_dir, f"{experiment}_frames.csv"), target, carriers))
 
 
 def write_results(out, table):
@@ -197,9 +275,11 @@ def write_results(out, table):
         cells = [f"{errors[e][0] * 1000:.1f}" for e in estimators]
         lines.append(f"| {name} | {kind} | {errors['opf'][2]} | " + " | ".join(cells) +
                      f" | {errors['opf'][1] * 1000:.1f} | {right}/{total} |")
-    text = ("The cube's mean translation error while hidden [mm], over the seeds; hidden frames "
-            "summed over the seeds. Right at reveal: the reveals at which the OPF's main hypothesis "
-            "was the right one (carried if the cube moved while hidden, left otherwise).\n\n" +
+    text = ("The hidden object's mean translation error while hidden [mm] (the cube; in the cups "
+            "game the ball), over the seeds; hidden frames summed over the seeds. Right at reveal: "
+            "the reveals at which the OPF's main hypothesis was the right one (carried, in the "
+            "cups game by cup B or its hand, if the object moved while hidden; left "
+            "otherwise).\n\n" +
             "\n".join(lines) + "\n")
     with open(os.path.join(out, "hand_scenes.md"), "w") as f:
         f.write(text)

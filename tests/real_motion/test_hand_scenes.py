@@ -45,3 +45,22 @@ def test_each_reveal_is_judged_by_whether_the_cube_moved(tmp_path):
         rows.append((frame, "cube", "opf", 1, 0, visible, mode, 0.3, 0.1))
     write_frames(path, rows)
     assert hand_scenes.reveals(path) == (2, 3)
+
+
+def test_in_the_cups_game_only_the_right_carrier_counts(tmp_path):
+    path = tmp_path / "frames.csv"
+    rows = []
+    # The ball moves under cup B while hidden in both seeds; seed 0 ends carried by cup B's hand
+    # (right), seed 1 by cup A (wrong).
+    for seed, carrier in ((0, "hand_b"), (1, "cup_a")):
+        for frame, visible, mode, x in [(0, 1, "measured", 0.0), (1, 0, "left", 0.0),
+                                        (2, 0, "carried", 0.1), (3, 1, "measured", 0.1)]:
+            rows.append((frame, "ball", "opf", seed, 0, visible, mode, x, 0.0,
+                         carrier if mode == "carried" else ""))
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, FIELDS + ["model"])
+        writer.writeheader()
+        for r in rows:
+            writer.writerow(dict(zip(FIELDS + ["model"], r)))
+    assert hand_scenes.reveals(path, "ball", {"cup_b", "hand_b"}) == (1, 2)
+    assert hand_scenes.reveals(path, "ball") == (2, 2)
