@@ -7,7 +7,8 @@
 # presets, 3 seeds: about two minutes on 2 cores) into results/real_motion/; the dynamics
 # module's ablation on it (each motion model removed in turn, about two minutes) into
 # results/dynamics_ablation/; the hand scenes (a hand on recorded human motion carries a cube or
-# passes over it, every estimator, 5 seeds, about 25 s) into results/hand_scenes/; last, the
+# passes over it, and two such hands play the cups game, every estimator, 5 seeds, about 75 s)
+# into results/hand_scenes/; last, the
 # notebooks executed against these results into results/notebooks/ (.ipynb and .html; about
 # 30 s; the sweeps, not run here, are skipped there with the command that runs them).
 # Extra arguments go to `opf reproduce` (see `build/bin/opf reproduce --help`).
