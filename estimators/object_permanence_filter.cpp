@@ -380,7 +380,7 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
     const Eigen::Vector3d place = h.filter.translation_moments().mean;
     const double seen =
         seen_probability(place, place_covariance_, blockers, hiding_radius_, options_.occluder);
-    h.probability *= 1.0 - seen * (1.0 - kDetectorMissProbability);
+    if (std::isfinite(seen)) h.probability *= 1.0 - seen * (1.0 - kDetectorMissProbability);
     total += h.probability;
   }
   for (Hypothesis& h : hypotheses_) h.probability /= total;
