@@ -111,21 +111,28 @@ def at(times, values, t):
     return float(np.interp(t, times, values))
 
 
+def scene_header(comment, experiment, frames, target, table_z):
+    """The lines every scene starts with: the top-down camera over the workspace, the detector's
+    noise and threshold, the object of interest and the table (its centre at table_z)."""
+    return [f"# {comment}; hand_scenes.py",
+            f"name: {experiment}", f"rate: {int(RATE)}", f"frames: {frames}",
+            "camera:", "  position: [0.55, 0.0, 0.8]", "  look_at: [0.55, 0.0, 0.0]",
+            "  up: [1, 0, 0]", "  vertical_fov_deg: 75",
+            "measurement:", "  position_noise: 0.002", "  orientation_noise: 0.01",
+            "  min_visible_fraction: 0.3", "  min_area_pixels: 30",
+            f"objects_of_interest: {target}", "bodies:",
+            "  - name: table", "    shape: box", "    size: [1.4, 1.4, 0.02]",
+            "    colour: [150, 150, 150]", "    tracked: false",
+            f"    waypoints: [{{t: 0, position: [0.55, 0.0, {table_z}]}}]"]
+
+
 def scene_yaml(name, kind, times, x, y, yaw):
     """The experiment file: camera, table, hand on its recorded path, the cube."""
     resting_t = PICK if kind == "carry" else PASS
     cube = (at(times, x, resting_t), at(times, y, resting_t))
-    lines = [f"# {kind} of a 2 cm cube by a hand on a recorded path ({name}); hand_scenes.py",
-             f"name: {name}_{kind}", f"rate: {int(RATE)}", f"frames: {len(times)}",
-             "camera:", "  position: [0.55, 0.0, 0.8]", "  look_at: [0.55, 0.0, 0.0]",
-             "  up: [1, 0, 0]", "  vertical_fov_deg: 75",
-             "measurement:", "  position_noise: 0.002", "  orientation_noise: 0.01",
-             "  min_visible_fraction: 0.3", "  min_area_pixels: 30",
-             "objects_of_interest: cube", "bodies:",
-             "  - name: table", "    shape: box", "    size: [1.4, 1.4, 0.02]",
-             "    colour: [150, 150, 150]", "    tracked: false",
-             "    waypoints: [{t: 0, position: [0.55, 0.0, -0.01]}]",
-             "  - name: hand", "    shape: box", "    size: [0.14, 0.14, 0.04]",
+    lines = scene_header(f"{kind} of a 2 cm cube by a hand on a recorded path ({name})",
+                         f"{name}_{kind}", len(times), "cube", -0.01)
+    lines += ["  - name: hand", "    shape: box", "    size: [0.14, 0.14, 0.04]",
              "    colour: [0, 255, 255]", "    waypoints:"]
     for t, xi, yi, a in zip(times, x, y, yaw):
         lines.append(f"      - {{t: {t:.6f}, position: [{xi:.6f}, {yi:.6f}, {HOVER}], "
@@ -140,21 +147,14 @@ def scene_yaml(name, kind, times, x, y, yaw):
 
 def cups_yaml(name, times, b, a):
     """The cups game on recorded paths: cups A and B each moved by a hand (a 6 cm grip 0.2 m up,
-    leaving the cup's rim in view) along a recording, a third cup C resting 12 cm beside the ball (clear of where it is
-    left); the ball lies where B is at COVER, B slides over it and carries it until LIFT, then is lifted off
-    it and moves on."""
+    leaving the cup's rim in view) along a recording, a third cup C resting 12 cm beside the ball
+    (clear of where it is left); the ball lies where B is at COVER, B slides over it and carries
+    it until LIFT, then is lifted off it and moves on."""
     ball = (at(times, b[0], COVER), at(times, b[1], COVER))
-    lines = [f"# the cups game on recorded paths ({name}); hand_scenes.py",
-             f"name: {name}_cups", f"rate: {int(RATE)}", f"frames: {len(times)}",
-             "camera:", "  position: [0.55, 0.0, 0.8]", "  look_at: [0.55, 0.0, 0.0]",
-             "  up: [1, 0, 0]", "  vertical_fov_deg: 75",
-             "measurement:", "  position_noise: 0.002", "  orientation_noise: 0.01",
-             "  min_visible_fraction: 0.3", "  min_area_pixels: 30",
-             "objects_of_interest: ball", "bodies:",
-             "  - name: table", "    shape: box", "    size: [1.4, 1.4, 0.02]",
-             "    colour: [150, 150, 150]", "    tracked: false",
-             "    waypoints: [{t: 0, position: [0.55, 0.0, -0.035]}]",
-             "  - name: ball", "    shape: sphere", "    size: [0.025]", "    colour: [255, 0, 0]",
+    lines = scene_header(f"the cups game on recorded paths ({name})", f"{name}_cups",
+                         len(times), "ball", -0.035)
+    lines += ["  - name: ball", "    shape: sphere", "    size: [0.025]",
+              "    colour: [255, 0, 0]",
              f"    waypoints: [{{t: 0, position: [{ball[0]:.6f}, {ball[1]:.6f}, 0.0]}}]",
              "    carried:", f"      - {{from: {COVER}, to: {LIFT}, by: cup_b}}"]
     left = (at(times, b[0], LIFT), at(times, b[1], LIFT))
@@ -275,10 +275,10 @@ def write_results(out, table):
         cells = [f"{errors[e][0] * 1000:.1f}" for e in estimators]
         lines.append(f"| {name} | {kind} | {errors['opf'][2]} | " + " | ".join(cells) +
                      f" | {errors['opf'][1] * 1000:.1f} | {right}/{total} |")
-    text = ("The hidden object's mean translation error while hidden [mm] (the cube; in the cups "
-            "game the ball), over the seeds; hidden frames summed over the seeds. Right at reveal: "
-            "the reveals at which the OPF's main hypothesis was the right one (carried, in the "
-            "cups game by cup B or its hand, if the object moved while hidden; left "
+    text = ("The hidden object's mean translation error while hidden [mm] (the cube; in the "
+            "cups game the ball), over the seeds; hidden frames summed over the seeds. Right at "
+            "reveal: the reveals at which the OPF's main hypothesis was the right one (carried, "
+            "in the cups game by cup B or its hand, if the object moved while hidden; left "
             "otherwise).\n\n" +
             "\n".join(lines) + "\n")
     with open(os.path.join(out, "hand_scenes.md"), "w") as f:
