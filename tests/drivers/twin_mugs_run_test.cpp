@@ -8,9 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <map>
-#include <vector>
+#include <string>
 
 namespace opf::experiments {
 namespace {
