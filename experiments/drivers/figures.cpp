@@ -14,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <utility>
 
@@ -78,14 +79,15 @@ void extend(ChartSeries& track, int& last_frame, int frame, const Eigen::Vector3
 // The top view of an object's hypotheses from the first seed, when the estimator kept more than
 // one: the truth, each of the occluder module's hypotheses by what it says (grey, dashed or
 // dotted, across the frames it exists in, main or not), the objects carrying them (thin, their main
-// estimates) and the main estimate in the estimator's style on top. None when it kept one
-// throughout.
+// estimates while the object is hidden) and the main estimate in the estimator's style on top. None
+// when it kept one throughout.
 std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
                                           const std::string& object, const std::string& estimator) {
   ChartSeries truth{"truth", {}, {}, 0, 0, 0};
   truth.width = 4;
   ChartSeries main = series_of("main", estimator);
   std::map<std::string, std::pair<ChartSeries, int>> tracks;  // by name: series, last frame
+  std::set<int> hidden_frames;                                // the object's
   bool several = false;
   for (const FrameRecord& record : results.records) {
     if (record.seed_index != results.first_seed || record.estimator != estimator ||
@@ -93,6 +95,7 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
       continue;
     const Eigen::Vector3d p = translation_of(record.estimate.pose.mean);
     several = several || record.estimate.hypothesis > 0;
+    if (record.estimate.hypothesis == 0 && !record.visible) hidden_frames.insert(record.frame);
     if (record.estimate.hypothesis == 0) {
       main.x.push_back(p.x());
       main.y.push_back(p.y());
@@ -128,14 +131,14 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
     const std::string carrier = name.rfind("carried by ", 0) == 0 ? name.substr(11) : "";
     if (carrier.empty()) continue;
     const auto& hue = kCarrierHues[carriers++ % kCarrierHues.size()];
-    ChartSeries path{carrier + " (estimate)", {}, {}, hue[0], hue[1], hue[2]};
+    ChartSeries path{carrier + " (estimate, while hidden)", {}, {}, hue[0], hue[1], hue[2]};
     path.width = 1;
+    int last_frame = -1;
     for (const FrameRecord& record : results.records)
       if (record.seed_index == results.first_seed && record.estimator == estimator &&
-          record.estimate.object == carrier && record.estimate.hypothesis == 0) {
-        path.x.push_back(translation_of(record.estimate.pose.mean).x());
-        path.y.push_back(translation_of(record.estimate.pose.mean).y());
-      }
+          record.estimate.object == carrier && record.estimate.hypothesis == 0 &&
+          hidden_frames.count(record.frame))
+        extend(path, last_frame, record.frame, translation_of(record.estimate.pose.mean));
     top.series.push_back(std::move(path));
   }
   for (auto& [name, track] : tracks) top.series.push_back(std::move(track.first));
