@@ -56,8 +56,7 @@ ChartSeries series_of(const std::string& label, const std::string& estimator) {
   return series;
 }
 
-// A hypothesis by what it says: "left", or "carried by mug_a"; the main estimate's own word
-// otherwise ("dynamics", "measured").
+// A hypothesis by what it says: "left", or "carried by mug_a".
 std::string hypothesis_name(const Estimate& estimate) {
   std::string name(to_string(estimate.mode));
   if (estimate.mode == EstimateMode::kCarried && !estimate.motion_model.empty())
@@ -76,18 +75,54 @@ void extend(ChartSeries& track, int& last_frame, int frame, const Eigen::Vector3
   last_frame = frame;
 }
 
+// One of the occluder module's hypotheses of an object, as drawn: its track and its carrier.
+struct HypothesisTrack {
+  ChartSeries series;
+  int last_frame = -1;
+  std::string carrier;  ///< empty for `left`
+};
+
+// The n-th hypothesis's line: dashed, dash-dotted, dotted, then the same in lighter greys.
+ChartSeries hypothesis_series(const std::string& name, std::size_t n) {
+  static constexpr std::array<LineStyle, 3> kStyles = {LineStyle::kDashed, LineStyle::kDashDot,
+                                                       LineStyle::kDotted};
+  const auto shade = static_cast<std::uint8_t>(70 + 55 * ((n / kStyles.size()) % 3));
+  ChartSeries series{name, {}, {}, shade, shade, shade};
+  series.style = kStyles[n % kStyles.size()];
+  return series;
+}
+
+// The n-th carrier's main estimate over the frames the object is hidden in, thin, in a light hue
+// apart from the estimators' and the greys.
+ChartSeries carrier_path(const ExperimentResults& results, const std::string& estimator,
+                         const std::string& carrier, const std::set<int>& hidden_frames,
+                         std::size_t n) {
+  static constexpr std::array<std::array<std::uint8_t, 3>, 4> kHues = {
+      {{110, 170, 230}, {230, 170, 90}, {120, 200, 160}, {200, 140, 210}}};
+  const auto& hue = kHues[n % kHues.size()];
+  ChartSeries path{carrier + " (estimate, while hidden)", {}, {}, hue[0], hue[1], hue[2]};
+  path.width = 1;
+  int last_frame = -1;
+  for (const FrameRecord& record : results.records)
+    if (record.seed_index == results.first_seed && record.estimator == estimator &&
+        record.estimate.object == carrier && record.estimate.hypothesis == 0 &&
+        hidden_frames.count(record.frame))
+      extend(path, last_frame, record.frame, translation_of(record.estimate.pose.mean));
+  return path;
+}
+
 // The top view of an object's hypotheses from the first seed, when the estimator kept more than
 // one: the truth, each of the occluder module's hypotheses by what it says (grey, dashed or
 // dotted, across the frames it exists in, main or not), the objects carrying them (thin, their main
-// estimates while the object is hidden) and the main estimate in the estimator's style on top. None
-// when it kept one throughout.
+// estimates while the object is hidden) and the main estimate in the estimator's style on top.
+// None when it kept one throughout.
 std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
                                           const std::string& object, const std::string& estimator) {
   ChartSeries truth{"truth", {}, {}, 0, 0, 0};
   truth.width = 4;
   ChartSeries main = series_of("main", estimator);
-  std::map<std::string, std::pair<ChartSeries, int>> tracks;  // by name: series, last frame
-  std::set<int> hidden_frames;                                // the object's
+  std::map<std::string, HypothesisTrack> tracks;  // by name
+  std::set<int> hidden_frames;                    // the object's
   bool several = false;
   for (const FrameRecord& record : results.records) {
     if (record.seed_index != results.first_seed || record.estimator != estimator ||
@@ -95,8 +130,8 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
       continue;
     const Eigen::Vector3d p = translation_of(record.estimate.pose.mean);
     several = several || record.estimate.hypothesis > 0;
-    if (record.estimate.hypothesis == 0 && !record.visible) hidden_frames.insert(record.frame);
     if (record.estimate.hypothesis == 0) {
+      if (!record.visible) hidden_frames.insert(record.frame);
       main.x.push_back(p.x());
       main.y.push_back(p.y());
       truth.x.push_back(record.truth.position.x());
@@ -107,15 +142,10 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
     const std::string name = hypothesis_name(record.estimate);
     auto [it, added] = tracks.try_emplace(name);
     if (added) {
-      // Dashed, dash-dotted, dotted, then the same in lighter greys.
-      static constexpr std::array<LineStyle, 3> kStyles = {LineStyle::kDashed, LineStyle::kDashDot,
-                                                           LineStyle::kDotted};
-      const std::size_t i = tracks.size() - 1;
-      const auto shade = static_cast<std::uint8_t>(70 + 55 * ((i / kStyles.size()) % 3));
-      it->second.first = ChartSeries{name, {}, {}, shade, shade, shade};
-      it->second.first.style = kStyles[i % kStyles.size()];
+      it->second.series = hypothesis_series(name, tracks.size() - 1);
+      if (mode == EstimateMode::kCarried) it->second.carrier = record.estimate.motion_model;
     }
-    extend(it->second.first, it->second.second, record.frame, p);
+    extend(it->second.series, it->second.last_frame, record.frame, p);
   }
   if (!several) return std::nullopt;
   LineChart top;
@@ -123,25 +153,12 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
   top.y_label = "y [m]";
   top.height = 560;
   top.series.push_back(std::move(truth));
-  // Light hues apart from the estimators' and the greys.
-  static constexpr std::array<std::array<std::uint8_t, 3>, 4> kCarrierHues = {
-      {{110, 170, 230}, {230, 170, 90}, {120, 200, 160}, {200, 140, 210}}};
   std::size_t carriers = 0;
-  for (const auto& [name, track] : tracks) {
-    const std::string carrier = name.rfind("carried by ", 0) == 0 ? name.substr(11) : "";
-    if (carrier.empty()) continue;
-    const auto& hue = kCarrierHues[carriers++ % kCarrierHues.size()];
-    ChartSeries path{carrier + " (estimate, while hidden)", {}, {}, hue[0], hue[1], hue[2]};
-    path.width = 1;
-    int last_frame = -1;
-    for (const FrameRecord& record : results.records)
-      if (record.seed_index == results.first_seed && record.estimator == estimator &&
-          record.estimate.object == carrier && record.estimate.hypothesis == 0 &&
-          hidden_frames.count(record.frame))
-        extend(path, last_frame, record.frame, translation_of(record.estimate.pose.mean));
-    top.series.push_back(std::move(path));
-  }
-  for (auto& [name, track] : tracks) top.series.push_back(std::move(track.first));
+  for (const auto& [name, track] : tracks)
+    if (!track.carrier.empty())
+      top.series.push_back(
+          carrier_path(results, estimator, track.carrier, hidden_frames, carriers++));
+  for (auto& [name, track] : tracks) top.series.push_back(std::move(track.series));
   top.series.push_back(std::move(main));
   return top;
 }
