@@ -24,8 +24,8 @@ std::vector<OptionSpec> estimator_option_specs() {
       {"particles", "N", "particles per portion (translation and rotation); default 5000"},
       {"seed", "S", "seed of every random draw; the same seed gives identical output (default 1)"},
       {"threads", "N",
-       "threads that step the objects of a frame (default: the machine's cores); the output is "
-       "the same for any N"},
+       "threads that step the objects of a frame, at most 256 (default: the machine's cores); "
+       "the output is the same for any N"},
   };
 }
 
@@ -72,6 +72,11 @@ void require_camera_for_line_of_sight(const EstimatorSettings& settings) {
 std::size_t threads_from(const Arguments& args) {
   if (const auto threads = args.get_count("threads")) {
     if (*threads == 0) throw UsageError{"option '--threads' must be at least 1"};
+    // The pool starts every thread up front, each with its stack: beyond a few per core they
+    // only cost memory.
+    if (*threads > kMaxThreads)
+      throw UsageError{"option '--threads' must be at most " + std::to_string(kMaxThreads) +
+                       ", got " + std::to_string(*threads)};
     return *threads;
   }
   return std::max(1u, std::thread::hardware_concurrency());

@@ -20,7 +20,10 @@ void require_camera_for_line_of_sight(const EstimatorSettings& settings);
 /// portions).
 EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base = {});
 
-/// --threads, or the machine's hardware threads.
+/// The most threads --threads takes.
+constexpr std::size_t kMaxThreads = 256;
+
+/// --threads (1 to kMaxThreads; UsageError otherwise), or the machine's hardware threads.
 std::size_t threads_from(const Arguments& args);
 
 /// --seed, or the toolkit's default seed.

@@ -11,15 +11,52 @@
 #include "opf/io/input_file.h"
 #include "opf/io/measurement_log.h"
 
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace opf::cli {
 namespace {
+
+namespace fs = std::filesystem;
+
+// The estimates must not replace the measurements: an output that is the input (the same file,
+// also through a link) is refused.
+void refuse_writing_over_the_input(const std::string& in, const std::string& out) {
+  if (in == "-" || out == "-") return;
+  std::error_code ec;
+  if (fs::equivalent(in, out, ec))
+    throw UsageError{"--out '" + out + "' is the input log '" + in +
+                     "': the estimates would replace it; write them to another file"};
+}
+
+// A FIFO, a character device or anything else that exists and is not a regular file is written
+// through, not replaced by a new regular file (a FIFO's reader would wait for ever).
+bool written_through(const std::string& out) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(out, ec);
+  return !ec && fs::exists(status) && !fs::is_regular_file(status);
+}
+
+// Every write is checked: a full disk or a closed pipe ends the run with the output named and
+// the system's reason, instead of a report of estimates that were never written. Call it right
+// after the write or flush, before anything else can change errno.
+void check_written(const std::ostream& os, const std::string& out) {
+  if (os) return;
+  const int error = errno;
+  throw std::runtime_error("cannot write the estimates to " +
+                           (out == "-" ? std::string("standard output") : "'" + out + "'") + ": " +
+                           (error != 0 ? std::strerror(error) : "write error"));
+}
 
 std::vector<OptionSpec> specs() {
   std::vector<OptionSpec> s = {
@@ -92,6 +129,17 @@ class EstimateWriter {
   std::size_t frames_ = 0;
 };
 
+// A frame's rows, formatted first and written in one call, then checked.
+void write_checked(EstimateWriter& writer, std::ostream& os, const Frame& frame,
+                   const std::string& out) {
+  std::ostringstream rows;
+  writer.write(rows, frame);
+  const std::string text = rows.str();
+  errno = 0;
+  os.write(text.data(), static_cast<std::streamsize>(text.size()));
+  check_written(os, out);
+}
+
 }  // namespace
 
 CommandHelp track_help() {
@@ -107,6 +155,7 @@ int track_command(const std::vector<std::string>& raw) {
   }
   const std::string in = args.require("in");
   const std::string out = args.require("out");
+  refuse_writing_over_the_input(in, out);
   const std::string estimator = args.get("estimator").value_or("opf");
   const EstimatorSettings settings = settings_from(args);
   require_camera_for_line_of_sight(settings);
@@ -141,22 +190,36 @@ int track_command(const std::vector<std::string>& raw) {
     }
     std::ostream& output = out_file ? static_cast<std::ostream&>(*out_file) : std::cout;
     write_estimate_header(output, columns);
+    errno = 0;
     output.flush();
+    check_written(output, out);
     while (const std::optional<Frame> frame = frames.next()) {
-      writer.write(output, *frame);
+      write_checked(writer, output, *frame, out);
+      errno = 0;
       output.flush();  // answered now, not when the input ends
+      check_written(output, out);
     }
+    if (out_file) out_file->close();
+    if (out_file) check_written(*out_file, out);
     assembly = frames.report();
   } else {
     const MeasurementLog log = read_measurement_log(in, log_options);
     assembly = log.report;
     const auto write_all = [&](std::ostream& os) {
       write_estimate_header(os, columns);
-      for (const Frame& frame : log.frames) writer.write(os, frame);
+      for (const Frame& frame : log.frames) write_checked(writer, os, frame, out);
+      errno = 0;
+      os.flush();
+      check_written(os, out);
     };
     if (out == "-") {
       write_all(std::cout);
-      std::cout.flush();
+    } else if (written_through(out)) {
+      std::ofstream device(out, std::ios::binary);
+      if (!device) throw std::runtime_error("cannot open '" + out + "' for writing");
+      write_all(device);
+      device.close();
+      check_written(device, out);
     } else {
       write_file_atomically(out, write_all);
     }

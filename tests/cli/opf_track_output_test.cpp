@@ -1,0 +1,91 @@
+// `opf track` loses no data: it never writes over its input, writes through FIFOs and devices,
+// checks every write, and takes a bounded number of threads.
+
+#include "cli/opf_program.h"
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace opf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kLog = std::string(OPF_SOURCE_DIR) + "/experiments/data/example_log.csv";
+
+// Runs a shell command line (for redirections the fixture's run() does not make) and returns its
+// exit status.
+int shell(const std::string& line) {
+  const int status = std::system(("bash -c '" + line + "'").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST_F(OpfProgram, TrackRefusesToWriteOverItsInput) {
+  const fs::path log = dir_ / "log.csv", link = dir_ / "link.csv";
+  fs::copy_file(kLog, log);
+  fs::create_symlink(log, link);
+  const std::string before = read(log);
+  for (const fs::path& out : {log, link})
+    for (const char* mode : {"", " --stream"}) {
+      EXPECT_EQ(run("track --in " + log.string() + " --out " + out.string() + mode), 2) << mode;
+      EXPECT_NE(err().find("is the input log"), std::string::npos) << err();
+    }
+  EXPECT_EQ(read(log), before);
+}
+
+TEST_F(OpfProgram, TrackReportsAFullDeviceAndExitsNonZero) {
+  for (const char* mode : {"", " --stream"}) {
+    EXPECT_EQ(run("track --quiet --in " + kLog + " --out /dev/full" + mode), 1) << mode;
+    EXPECT_NE(err().find("cannot write the estimates to '/dev/full': No space left on device"),
+              std::string::npos)
+        << err();
+    const std::string errors = (dir_ / "stderr").string();
+    EXPECT_EQ(
+        shell(kOpf + " track --quiet --in " + kLog + " --out -" + mode + " >/dev/full 2>" + errors),
+        1)
+        << mode;
+    EXPECT_NE(err().find("cannot write the estimates to standard output"), std::string::npos)
+        << err();
+  }
+}
+
+TEST_F(OpfProgram, TrackEndsAtOnceOnAClosedPipe) {
+  // With SIGPIPE ignored (as a Python parent leaves it), the failed write is the signal: the run
+  // ends with an error instead of tracking the whole log into nowhere.
+  const std::string errors = (dir_ / "stderr").string();
+  EXPECT_EQ(shell("trap \"\" PIPE; " + kOpf + " track --quiet --stream --in " + kLog +
+                  " --out - 2>" + errors + " | head -c 100 >/dev/null; exit ${PIPESTATUS[0]}"),
+            1);
+  EXPECT_NE(err().find("Broken pipe"), std::string::npos) << err();
+}
+
+TEST_F(OpfProgram, TrackWritesThroughAFifo) {
+  const fs::path fifo = dir_ / "fifo", got = dir_ / "got.csv", file = dir_ / "file.csv";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // The reader runs in the background and ends when the writer closes the FIFO.
+  EXPECT_EQ(shell("cat " + fifo.string() + " >" + got.string() + " & " + kOpf +
+                  " track --quiet --in " + kLog + " --out " + fifo.string() + "; wait"),
+            0);
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  ASSERT_EQ(run("track --quiet --in " + kLog + " --out " + file.string()), 0) << err();
+  EXPECT_EQ(read(got), read(file));
+}
+
+TEST_F(OpfProgram, ThreadsAreBounded) {
+  EXPECT_EQ(run("track --in " + kLog + " --out " + (dir_ / "a.csv").string() + " --threads 257"),
+            2);
+  EXPECT_NE(err().find("'--threads' must be at most 256, got 257"), std::string::npos) << err();
+  EXPECT_EQ(
+      run("track --quiet --in " + kLog + " --out " + (dir_ / "b.csv").string() + " --threads 256"),
+      0)
+      << err();
+}
+
+}  // namespace
+}  // namespace opf
