@@ -4,14 +4,36 @@
 #include "cli/version.h"
 #include "command_table.h"
 #include "opf/core/heap_policy.h"
+#include "opf/io/atomic_file.h"
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <string>
 #include <vector>
 
+namespace {
+
+// Interrupted (Ctrl-C, or `kill`), the program removes the temporary file of a result it was
+// writing, then ends as the signal would have ended it (the handler is reset on entry).
+extern "C" void on_interrupt(int signal) {
+  opf::remove_open_temporary_files();
+  std::raise(signal);
+}
+
+void remove_temporaries_when_interrupted() {
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  for (int signal : {SIGINT, SIGTERM}) sigaction(signal, &action, nullptr);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   opf::retain_freed_heap_memory();  // the filters free and allocate particles every step
+  remove_temporaries_when_interrupted();
   const std::vector<std::string> all(argv + 1, argv + argc);
   if (all.empty() || all[0] == "--help" || all[0] == "-h" || all[0] == "help") {
     std::cout << opf::cli::program_help();

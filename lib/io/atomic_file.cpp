@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -11,21 +12,54 @@ namespace opf {
 
 namespace {
 
-/// Removes the temporary unless released, whichever way the scope is left.
+// The temporaries being written, where a signal handler can reach them: static storage is all it
+// may touch. A slot is claimed (0 -> 1) by the writer, filled, published (-> 2), and freed (-> 0)
+// before its file is renamed or removed; the handler unlinks the published ones.
+struct PendingTemporary {
+  std::atomic<int> state{0};
+  char path[4096] = {};
+};
+constexpr std::size_t kPendingSlots = 32;
+PendingTemporary g_pending[kPendingSlots];  // NOLINT: reached from signal handlers
+
+/// Removes the temporary unless released, whichever way the scope is left; while it exists, a
+/// signal handler calling remove_open_temporary_files() removes it too.
 class TemporaryFile {
  public:
-  explicit TemporaryFile(std::filesystem::path path) : path_(std::move(path)) {}
+  explicit TemporaryFile(std::filesystem::path path) : path_(std::move(path)) {
+    const std::string text = path_.string();
+    for (PendingTemporary& slot : g_pending) {
+      int free = 0;
+      if (text.size() >= sizeof slot.path || !slot.state.compare_exchange_strong(free, 1)) continue;
+      text.copy(slot.path, text.size());
+      slot.path[text.size()] = '\0';
+      slot.state.store(2);
+      slot_ = &slot;
+      break;
+    }
+  }
   TemporaryFile(const TemporaryFile&) = delete;
   TemporaryFile& operator=(const TemporaryFile&) = delete;
   ~TemporaryFile() {
+    unpublish();
     std::error_code ignored;
     if (!released_) std::filesystem::remove(path_, ignored);
   }
   const std::filesystem::path& path() const { return path_; }
-  void release() { released_ = true; }
+  /// After the rename: the file is the result now, not a temporary.
+  void release() {
+    unpublish();
+    released_ = true;
+  }
 
  private:
+  void unpublish() {
+    if (slot_) slot_->state.store(0);
+    slot_ = nullptr;
+  }
+
   std::filesystem::path path_;
+  PendingTemporary* slot_ = nullptr;  ///< none when every slot is taken: not reachable then
   bool released_ = false;
 };
 
@@ -56,6 +90,11 @@ void write_file_atomically(const std::filesystem::path& path,
   std::filesystem::rename(temporary.path(), path, ec);
   if (ec) fail(path, "cannot rename the temporary file into place: " + ec.message());
   temporary.release();
+}
+
+void remove_open_temporary_files() noexcept {
+  for (PendingTemporary& slot : g_pending)
+    if (slot.state.load() == 2) ::unlink(slot.path);
 }
 
 }  // namespace opf

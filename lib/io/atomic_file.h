@@ -15,4 +15,9 @@ namespace opf {
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write);
 
+/// Removes every temporary file write_file_atomically has open in this process. Async-signal-safe
+/// (unlink(2) only): a program's SIGINT / SIGTERM handler calls it so that an interrupted run
+/// leaves no temporary behind (`opf` does; a library user decides for their own handlers).
+void remove_open_temporary_files() noexcept;
+
 }  // namespace opf

@@ -1,5 +1,6 @@
 // `opf track` loses no data: it never writes over its input, writes through FIFOs and devices,
-// checks every write, and takes a bounded number of threads.
+// checks every write, leaves no temporary file when interrupted, and takes a bounded number of
+// threads.
 
 #include "cli/opf_program.h"
 
@@ -10,6 +11,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 namespace opf {
@@ -75,6 +77,29 @@ TEST_F(OpfProgram, TrackWritesThroughAFifo) {
   EXPECT_TRUE(fs::is_fifo(fifo));
   ASSERT_EQ(run("track --quiet --in " + kLog + " --out " + file.string()), 0) << err();
   EXPECT_EQ(read(got), read(file));
+}
+
+TEST_F(OpfProgram, TrackLeavesNoTemporaryFileWhenInterrupted) {
+  // 3000 frames at 100 000 particles: seconds of tracking, into the temporary file.
+  const fs::path log = dir_ / "long.csv", out = dir_ / "est.csv";
+  {
+    std::ofstream file(log);
+    file << "t,object,x,y,z,qx,qy,qz,qw\n";
+    for (int k = 0; k < 3000; ++k)
+      file << k / 30.0 << ",box," << 0.5 + 0.001 * k << ",0,0,0,0,0,1\n";
+  }
+  for (const char* signal : {"INT", "TERM"}) {
+    // Sent once the temporary exists; the run ends as the signal ends it (128 + its number).
+    const std::string line = kOpf + " track --quiet --particles 100000 --in " + log.string() +
+                             " --out " + out.string() + " & pid=$!; for i in $(seq 200); do " +
+                             "ls " + out.string() +
+                             ".tmp.* >/dev/null 2>&1 && break; sleep 0.05; " + "done; kill -" +
+                             signal + " $pid; wait $pid";
+    EXPECT_EQ(shell(line), std::string(signal) == "INT" ? 130 : 143) << signal;
+    for (const auto& entry : fs::directory_iterator(dir_))
+      EXPECT_EQ(entry.path().filename().string().rfind("est.csv", 0), std::string::npos)
+          << entry.path() << " after SIG" << signal;
+  }
 }
 
 TEST_F(OpfProgram, ThreadsAreBounded) {
