@@ -14,7 +14,8 @@ namespace {
 
 // The temporaries being written, where a signal handler can reach them: static storage is all it
 // may touch. A slot is claimed (0 -> 1) by the writer, filled, published (-> 2), and freed (-> 0)
-// before its file is renamed or removed; the handler unlinks the published ones.
+// once its file is renamed into place, or before it is removed; the handler unlinks the published
+// ones (one renamed a moment before is gone already: the unlink fails harmlessly).
 struct PendingTemporary {
   std::atomic<int> state{0};
   char path[4096] = {};
