@@ -72,8 +72,16 @@ class TemporaryFile {
 
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
+  // Through a symbolic link the file it names is replaced, not the link (as an editor saves).
+  std::error_code no_such_file;  // a path that does not exist yet is no link
+  std::filesystem::path target = path;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, no_such_file))) {
+    std::error_code ec;
+    target = std::filesystem::weakly_canonical(path, ec);
+    if (ec) fail(path, "cannot follow the link: " + ec.message());
+  }
   // A sibling, so the rename stays within one file system; the pid keeps concurrent runs apart.
-  std::filesystem::path temporary_path = path;
+  std::filesystem::path temporary_path = target;
   temporary_path += ".tmp." + std::to_string(::getpid());
   TemporaryFile temporary(temporary_path);
 
@@ -88,7 +96,7 @@ void write_file_atomically(const std::filesystem::path& path,
   }
 
   std::error_code ec;
-  std::filesystem::rename(temporary.path(), path, ec);
+  std::filesystem::rename(temporary.path(), target, ec);
   if (ec) fail(path, "cannot rename the temporary file into place: " + ec.message());
   temporary.release();
 }

@@ -9,7 +9,8 @@
 namespace opf {
 
 /// Calls `write` on a stream to a temporary file next to `path`, checks the stream, then renames
-/// the temporary over `path` (atomic on POSIX within one file system). If `write` throws or the
+/// the temporary over `path` (atomic on POSIX within one file system); a symbolic link `path` is
+/// followed, and the file it names replaced. If `write` throws or the
 /// file cannot be written, the temporary is removed, `path` is left untouched and the exception
 /// propagates; I/O failures throw std::runtime_error naming the path.
 void write_file_atomically(const std::filesystem::path& path,

@@ -49,6 +49,16 @@ TEST_F(AtomicFile, ReplacesAnExistingFile) {
   EXPECT_EQ(files_in_dir(), 1u);
 }
 
+TEST_F(AtomicFile, ThroughALinkReplacesTheFileItNames) {
+  const auto file = dir_ / "results.csv", link = dir_ / "latest.csv";
+  std::ofstream(file) << "old";
+  std::filesystem::create_symlink(file, link);
+  write_file_atomically(link, [](std::ostream& out) { out << "new"; });
+  EXPECT_TRUE(std::filesystem::is_symlink(link));
+  EXPECT_EQ(read(file), "new");
+  EXPECT_EQ(files_in_dir(), 2u);
+}
+
 TEST_F(AtomicFile, FailedWriteLeavesNoFileAndNoTemporary) {
   const auto path = dir_ / "out.csv";
   EXPECT_THROW(write_file_atomically(path,
