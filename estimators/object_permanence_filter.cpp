@@ -375,16 +375,20 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
     if (e.object != object_)
       blockers.push_back({translation_of(e.pose.mean), translation_covariance(e)});
   // p(no detection | the object at the place) = 1 - P(seen) (1 - P_miss).
-  double total = 0.0;
   for (Hypothesis& h : hypotheses_) {
     const Eigen::Vector3d place = h.filter.translation_moments().mean;
     const double seen =
         seen_probability(place, place_covariance_, blockers, hiding_radius_, options_.occluder);
     if (std::isfinite(seen)) h.probability *= 1.0 - seen * (1.0 - kDetectorMissProbability);
-    total += h.probability;
   }
-  for (Hypothesis& h : hypotheses_) h.probability /= total;
+  normalise_probabilities();
   most_probable_first();
+}
+
+void ObjectPermanenceFilter::normalise_probabilities() {
+  double total = 0.0;
+  for (const Hypothesis& h : hypotheses_) total += h.probability;
+  for (Hypothesis& h : hypotheses_) h.probability /= total;
 }
 
 void ObjectPermanenceFilter::most_probable_first() {
@@ -403,9 +407,7 @@ void ObjectPermanenceFilter::most_probable_first() {
   while (kept < hypotheses_.size() && hypotheses_[kept].probability >= kNegligibleProbability)
     ++kept;
   hypotheses_.erase(hypotheses_.begin() + kept, hypotheses_.end());
-  double total = 0.0;
-  for (const Hypothesis& h : hypotheses_) total += h.probability;
-  for (Hypothesis& h : hypotheses_) h.probability /= total;
+  normalise_probabilities();
 }
 
 Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) const {

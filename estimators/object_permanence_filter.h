@@ -82,6 +82,8 @@ class ObjectPermanenceFilter final : public Estimator {
   /// its place unless another is substantially more probable), drops the negligible ones and
   /// renormalises.
   void most_probable_first();
+  /// Scales the hypotheses' probabilities to sum to one.
+  void normalise_probabilities();
   Estimate make_estimate(const Hypothesis& hypothesis, int index) const;
 
   OpfOptions options_;

@@ -129,6 +129,13 @@ class EstimateWriter {
   std::size_t frames_ = 0;
 };
 
+// Flushes, then checks, errno still the flush's.
+void flush_checked(std::ostream& os, const std::string& out) {
+  errno = 0;
+  os.flush();
+  check_written(os, out);
+}
+
 // A frame's rows, formatted first and written in one call, then checked.
 void write_checked(EstimateWriter& writer, std::ostream& os, const Frame& frame,
                    const std::string& out) {
@@ -190,14 +197,10 @@ int track_command(const std::vector<std::string>& raw) {
     }
     std::ostream& output = out_file ? static_cast<std::ostream&>(*out_file) : std::cout;
     write_estimate_header(output, columns);
-    errno = 0;
-    output.flush();
-    check_written(output, out);
+    flush_checked(output, out);
     while (const std::optional<Frame> frame = frames.next()) {
       write_checked(writer, output, *frame, out);
-      errno = 0;
-      output.flush();  // answered now, not when the input ends
-      check_written(output, out);
+      flush_checked(output, out);  // answered now, not when the input ends
     }
     if (out_file) out_file->close();
     if (out_file) check_written(*out_file, out);
@@ -208,9 +211,7 @@ int track_command(const std::vector<std::string>& raw) {
     const auto write_all = [&](std::ostream& os) {
       write_estimate_header(os, columns);
       for (const Frame& frame : log.frames) write_checked(writer, os, frame, out);
-      errno = 0;
-      os.flush();
-      check_written(os, out);
+      flush_checked(os, out);
     };
     if (out == "-") {
       write_all(std::cout);
