@@ -1,5 +1,6 @@
 #include "opf/estimators/registry.h"
 
+#include "opf/core/closest_name.h"
 #include "opf/estimators/cv_kalman.h"
 #include "opf/estimators/imm_kalman.h"
 #include "opf/estimators/object_permanence_filter.h"
@@ -12,6 +13,15 @@ namespace opf {
 
 std::vector<std::string> estimator_names() {
   return {"opf", "pf", "cvkf", "imm", "oapf"};
+}
+
+std::string unknown_estimator_message(const std::string& name) {
+  std::string known;
+  for (const auto& n : estimator_names()) known += (known.empty() ? "" : ", ") + n;
+  std::string message = "unknown estimator '" + name + "' (known: " + known + ")";
+  if (const auto closest = closest_name(name, estimator_names()))
+    message += "; did you mean '" + *closest + "'?";
+  return message;
 }
 
 EstimatorFactory make_estimator_factory(const std::string& name,
@@ -52,9 +62,7 @@ EstimatorFactory make_estimator_factory(const std::string& name,
       return std::make_unique<OcclusionAwareParticleFilter>(options, seed);
     };
   }
-  std::string known;
-  for (const auto& n : estimator_names()) known += (known.empty() ? "" : ", ") + n;
-  throw std::invalid_argument("unknown estimator '" + name + "' (known: " + known + ")");
+  throw std::invalid_argument(unknown_estimator_message(name));
 }
 
 }  // namespace opf

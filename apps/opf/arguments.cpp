@@ -1,10 +1,24 @@
 #include "arguments.h"
 
+#include "opf/core/closest_name.h"
+
 #include <charconv>
 #include <cmath>
 #include <sstream>
 
 namespace opf::cli {
+namespace {
+
+std::string unknown_option(const std::string& name, const std::vector<OptionSpec>& specs) {
+  std::vector<std::string> names;
+  for (const auto& s : specs) names.push_back(s.name);
+  std::string message = "unknown option '--" + name + "'";
+  if (const auto closest = closest_name(name, names))
+    message += "; did you mean '--" + *closest + "'?";
+  return message;
+}
+
+}  // namespace
 
 Arguments::Arguments(const std::vector<std::string>& args, const std::vector<OptionSpec>& specs) {
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -23,7 +37,7 @@ Arguments::Arguments(const std::vector<std::string>& args, const std::vector<Opt
     const OptionSpec* spec = nullptr;
     for (const auto& s : specs)
       if (s.name == name) spec = &s;
-    if (!spec) throw UsageError{"unknown option '--" + name + "'"};
+    if (!spec) throw UsageError{unknown_option(name, specs)};
     if (has(name)) throw UsageError{"option '--" + name + "' given twice"};
     if (spec->value_name.empty()) {
       if (inline_value) throw UsageError{"option '--" + name + "' takes no value"};

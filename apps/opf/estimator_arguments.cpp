@@ -1,6 +1,7 @@
 #include "estimator_arguments.h"
 
 #include "cli/presets.h"
+#include "opf/estimators/registry.h"
 #include "opf/io/estimator_settings_yaml.h"
 
 #include <algorithm>
@@ -80,6 +81,13 @@ std::size_t threads_from(const Arguments& args) {
     return *threads;
   }
   return std::max(1u, std::thread::hardware_concurrency());
+}
+
+void require_known_estimators(const std::string& option, const std::vector<std::string>& names) {
+  const std::vector<std::string> known = estimator_names();
+  for (const std::string& name : names)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw UsageError{"option '--" + option + "': " + unknown_estimator_message(name)};
 }
 
 std::uint64_t seed_from(const Arguments& args) {

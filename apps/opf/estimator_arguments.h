@@ -6,6 +6,7 @@
 #include "opf/estimators/estimator_settings.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace opf::cli {
@@ -25,6 +26,9 @@ constexpr std::size_t kMaxThreads = 256;
 
 /// --threads (1 to kMaxThreads; UsageError otherwise), or the machine's hardware threads.
 std::size_t threads_from(const Arguments& args);
+
+/// Every name of `names` is a registered estimator; else a UsageError naming `option`.
+void require_known_estimators(const std::string& option, const std::vector<std::string>& names);
 
 /// --seed, or the toolkit's default seed.
 std::uint64_t seed_from(const Arguments& args);

@@ -313,15 +313,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   const std::string truth_path = args.get("truth").value_or(data + "example_truth.csv");
   const auto names =
       args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
-  // Every name is checked before the first run, not when its turn comes.
-  const std::vector<std::string> known = estimator_names();
-  for (const std::string& name : names)
-    if (std::find(known.begin(), known.end(), name) == known.end()) {
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw UsageError{"option '--estimators': unknown estimator '" + name + "' (known: " + list +
-                       ")"};
-    }
+  require_known_estimators("estimators", names);  // all before the first run
   if (const auto path = args.get("out")) {
     const auto extension = std::filesystem::path(*path).extension();
     if (extension != ".csv" && extension != ".json")
@@ -343,9 +335,12 @@ int evaluate_command(const std::vector<std::string>& raw) {
     throw UsageError{"option '--hidden-profile': expected a file name ending in .csv, got \"" +
                      *path + "\""};
 
-  const LogReadOptions log_options = log_options_from(args);
-  const MeasurementLog log = read_measurement_log(in, log_options);
-  LogReadOptions truth_options = log_options;
+  const LogReadOptions log_options = log_options_from(args, in);
+  const MeasurementLog log = read_whole_log(in, log_options, "evaluate", false);
+  LogReadOptions truth_options = log_options_from(args, truth_path);
+  // A TUM truth of the log's one object is that object's, whatever the two files are called.
+  if (truth_options.format == LogFormat::kTum && !args.has("object") && log.objects.size() == 1)
+    truth_options.object = log.objects.front();
   truth_options.fill_gaps = false;
   truth_options.rate.reset();
   const TruthTable truth(read_measurement_log(truth_path, truth_options),

@@ -46,7 +46,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
                     const std::string& command, const std::filesystem::path& out) {
   const auto names =
       args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
-  for (const auto& name : names) make_estimator_factory(name, EstimatorSettings{});  // fail early
+  require_known_estimators("estimators", names);  // before any rendering
   const std::size_t seeds = args.get_count("seeds").value_or(5);
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   settings_from(args);  // a bad --config fails before any rendering

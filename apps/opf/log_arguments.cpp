@@ -1,5 +1,10 @@
 #include "log_arguments.h"
 
+#include "opf/io/log_format_detection.h"
+#include "opf/io/quaternion_order_check.h"
+
+#include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <string>
 
@@ -7,6 +12,12 @@ namespace opf::cli {
 
 std::vector<OptionSpec> log_option_specs() {
   return {
+      {"format", "csv|tum",
+       "the log's format (default: TUM for a file starting with a '#' line, named *.tum, or *.txt "
+       "with eight numbers per line; CSV otherwise)"},
+      {"object", "NAME",
+       "the object of a log of one object without an object column (default for a TUM file: "
+       "its name without the extension)"},
       {"time-unit", "s|ms|us|ns",
        "unit of the log's t (default s; a log whose times cannot be seconds is refused)"},
       {"length-unit", "m|mm",
@@ -21,8 +32,26 @@ std::vector<OptionSpec> log_option_specs() {
   };
 }
 
-LogReadOptions log_options_from(const Arguments& args) {
+LogReadOptions log_options_from(const Arguments& args, const std::string& path) {
   LogReadOptions options;
+  if (const auto format = args.get("format")) {
+    const auto parsed = parse_log_format(*format);
+    if (!parsed)
+      throw UsageError{"option '--format': expected csv or tum, got \"" + *format + "\""};
+    options.format = *parsed;
+  } else if (path != "-") {
+    options.format = detect_log_format(path);
+  }
+  options.object = args.get("object");
+  if (options.object && options.object->empty())
+    throw UsageError{"option '--object' expects a name, got an empty one"};
+  if (options.format == LogFormat::kTum && !options.object) {
+    if (path == "-")
+      throw UsageError{"a TUM log on standard input needs its object's name: --object NAME"};
+    options.object = std::filesystem::path(path).stem().string();
+  }
+  if (options.format == LogFormat::kTum && args.has("columns"))
+    throw UsageError{"option '--columns' renames CSV columns; a TUM log has none"};
   if (const auto unit = args.get("time-unit")) {
     options.time_unit = parse_time_unit(*unit);
     if (!options.time_unit)
@@ -54,6 +83,16 @@ LogReadOptions log_options_from(const Arguments& args) {
         "options '--rate' and '--no-fill' contradict each other: --rate sets the "
         "rate gaps are filled at"};
   return options;
+}
+
+MeasurementLog read_whole_log(const std::string& path, const LogReadOptions& options,
+                              const std::string& command, bool quiet) {
+  MeasurementLog log = read_measurement_log(path, options);
+  if (!quiet)
+    for (const std::string& object : objects_with_w_first_quaternions(log))
+      std::cerr << "opf " << command << ": warning: " << path << ": "
+                << w_first_warning(object, options.format) << "\n";
+  return log;
 }
 
 }  // namespace opf::cli

@@ -1,8 +1,10 @@
-// The `opf` command-line program: `opf <command> [options]`, `opf <command> --help`.
+// The `opf` command-line program: `opf <command> [options]`, `opf <command> --help`. The same
+// main() is `opf-experiments`'s, with that program's command table (command_table.h).
 
 #include "arguments.h"
 #include "cli/version.h"
 #include "command_table.h"
+#include "experiments_program.h"
 #include "opf/core/heap_policy.h"
 #include "opf/io/atomic_file.h"
 
@@ -46,9 +48,13 @@ int main(int argc, char** argv) {
   const std::string& command = all[0];
   const std::vector<std::string> rest(all.begin() + 1, all.end());
   try {
-    for (const opf::cli::Command& entry : opf::cli::commands())
-      if (entry.name == command) return entry.run(rest);
-    std::cerr << "opf: unknown command '" << command << "'\n\n" << opf::cli::program_help();
+    for (const opf::cli::Command& entry : opf::cli::commands()) {
+      if (entry.name != command) continue;
+      if (entry.run == nullptr) opf::cli::run_experiments_program(argv);
+      return entry.run(rest);
+    }
+    std::cerr << "opf: " << opf::cli::unknown_command_message(command) << "\n\n"
+              << opf::cli::program_help();
     return 2;
   } catch (const opf::cli::UsageError& error) {
     std::cerr << "opf " << command << ": " << error.message << " (see 'opf " << command

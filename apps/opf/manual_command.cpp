@@ -61,6 +61,10 @@ std::string man_page(const std::vector<Command>& commands, const std::string& ve
     }
   }
   out << ".SH FILES\n"
+      << ".TP\n.I <prefix>/libexec/opf/opf-experiments\n"
+      << "Runs reproduce, run, render, sweep, detect, completion and manual, which load OpenCV "
+         "and OpenGL; opf runs it in its own place for those commands, with the same "
+         "arguments.\n"
       << ".TP\n.I <prefix>/share/opf/experiments\n"
       << "The bundled experiment files, estimator settings (configs/estimators.yaml lists every "
          "key with its default) and the example log, found beside the program.\n"

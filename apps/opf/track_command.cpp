@@ -8,6 +8,7 @@
 #include "opf/estimators/registry.h"
 #include "opf/io/atomic_file.h"
 #include "opf/io/estimate_csv.h"
+#include "opf/io/estimate_tum.h"
 #include "opf/io/input_file.h"
 #include "opf/io/measurement_log.h"
 
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -65,6 +67,10 @@ std::vector<OptionSpec> specs() {
        "standard input as a stream"},
       {"out", "EST.csv",
        "estimates: t,object,x,y,z,qx,qy,qz,qw,trace,mode,... (required); - writes standard output"},
+      {"out-format", "csv|tum",
+       "csv: every column and hypothesis; tum: each object's main estimate as a TUM trajectory "
+       "(timestamp tx ty tz qx qy qz qw), one file per object, OUT_<object>.tum for several "
+       "(default: tum when --out ends in .tum, else csv)"},
       {"estimator", "NAME", "estimator to run: opf (default), pf, cvkf, imm or oapf"},
       {"stream", "",
        "read --in as a stream (as for -): rows in time order, each frame written and flushed as "
@@ -147,6 +153,48 @@ void write_checked(EstimateWriter& writer, std::ostream& os, const Frame& frame,
   check_written(os, out);
 }
 
+bool tum_output(const Arguments& args, const std::string& out) {
+  const auto format = args.get("out-format");
+  if (!format) return fs::path(out).extension() == ".tum";
+  if (*format != "csv" && *format != "tum")
+    throw UsageError{"option '--out-format': expected csv or tum, got \"" + *format + "\""};
+  return *format == "tum";
+}
+
+// The TUM output: each object's main estimates, kept until the whole run succeeded, then one
+// file per object (tum_paths), none of them the input. Returns the paths written.
+std::vector<fs::path> track_to_tum(Tracker& tracker, const MeasurementLog& log,
+                                   const std::string& in, const std::string& out) {
+  if (out == "-" && log.objects.size() > 1)
+    throw UsageError{
+        "--out-format tum writes one file per object: standard output holds one, "
+        "and the log has " +
+        std::to_string(log.objects.size())};
+  std::map<std::string, std::ostringstream> rows;
+  for (const Frame& frame : log.frames)
+    for (const Estimate& estimate : tracker.step(frame))
+      write_tum_row(rows[estimate.object], estimate);
+  const std::vector<fs::path> paths = tum_paths(out, log.objects);
+  for (const fs::path& path : paths) refuse_writing_over_the_input(in, path.string());
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const std::string text = rows[log.objects[i]].str();
+    const std::string name = paths[i].string();
+    const auto write = [&](std::ostream& os) {
+      write_tum_header(os);
+      errno = 0;
+      os.write(text.data(), static_cast<std::streamsize>(text.size()));
+      check_written(os, name);
+      flush_checked(os, name);
+    };
+    if (out == "-") {
+      write(std::cout);
+    } else {
+      write_file_atomically(paths[i], write);
+    }
+  }
+  return paths;
+}
+
 }  // namespace
 
 CommandHelp track_help() {
@@ -164,9 +212,10 @@ int track_command(const std::vector<std::string>& raw) {
   const std::string out = args.require("out");
   refuse_writing_over_the_input(in, out);
   const std::string estimator = args.get("estimator").value_or("opf");
+  require_known_estimators("estimator", {estimator});
   const EstimatorSettings settings = settings_from(args);
   require_camera_for_line_of_sight(settings);
-  const LogReadOptions log_options = log_options_from(args);
+  const LogReadOptions log_options = log_options_from(args, in);
   const bool stream = in == "-" || args.has("stream");
   const bool quiet = args.has("quiet");
   // With the estimates on standard output, everything else goes to standard error.
@@ -185,7 +234,18 @@ int track_command(const std::vector<std::string>& raw) {
   });
 
   FrameAssemblyReport assembly;
-  if (stream) {
+  std::string written;  // what the closing line says was written, and where
+  if (tum_output(args, out)) {
+    if (stream)
+      throw UsageError{"--out-format tum is written when the log is read whole, not from a stream"};
+    const MeasurementLog log = read_whole_log(in, log_options, "track", quiet);
+    assembly = log.report;
+    std::string names;
+    for (const fs::path& path : track_to_tum(tracker, log, in, out))
+      names += (names.empty() ? "" : ", ") + path.string();
+    written = std::to_string(log.frames.size()) + " frames, " + std::to_string(log.objects.size()) +
+              " objects: main estimates written as TUM to " + names;
+  } else if (stream) {
     std::optional<std::ifstream> file;
     if (in != "-") file = open_input_file(in, "measurement log");
     std::istream& input = file ? static_cast<std::istream&>(*file) : std::cin;
@@ -206,7 +266,7 @@ int track_command(const std::vector<std::string>& raw) {
     if (out_file) check_written(*out_file, out);
     assembly = frames.report();
   } else {
-    const MeasurementLog log = read_measurement_log(in, log_options);
+    const MeasurementLog log = read_whole_log(in, log_options, "track", quiet);
     assembly = log.report;
     const auto write_all = [&](std::ostream& os) {
       write_estimate_header(os, columns);
@@ -234,9 +294,10 @@ int track_command(const std::vector<std::string>& raw) {
   if (assembly.long_gaps > 0)
     std::cerr << "opf track: warning: " << assembly.long_gaps
               << " gaps longer than 10 s left unfilled (a clock jump or a pause)\n";
-  report << "opf track: " << estimator << " over " << writer.frames() << " frames, "
-         << writer.objects() << " objects: " << writer.rows() << " estimates written to " << out
-         << "\n";
+  if (written.empty())
+    written = std::to_string(writer.frames()) + " frames, " + std::to_string(writer.objects()) +
+              " objects: " + std::to_string(writer.rows()) + " estimates written to " + out;
+  report << "opf track: " << estimator << " over " << written << "\n";
   return 0;
 }
 

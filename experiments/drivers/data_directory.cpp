@@ -18,7 +18,12 @@ std::filesystem::path data_directory() {
     if (error)
       throw std::runtime_error("cannot locate the bundled experiments: /proc/self/exe: " +
                                error.message() + " (set OPF_DATA_DIR to <prefix>/share/opf)");
-    dir = program.parent_path().parent_path() / "share" / "opf";
+    // <prefix>/bin/opf, or <prefix>/libexec/opf/opf-experiments.
+    const std::filesystem::path prefix = program.parent_path().parent_path();
+    dir = prefix / "share" / "opf";
+    if (!std::filesystem::is_directory(dir / "experiments") &&
+        std::filesystem::is_directory(prefix.parent_path() / "share" / "opf" / "experiments"))
+      dir = prefix.parent_path() / "share" / "opf";
     origin = "the program's prefix";
   }
   if (!std::filesystem::is_directory(dir / "experiments"))

@@ -7,7 +7,8 @@
 
 namespace opf::experiments {
 
-/// $OPF_DATA_DIR when set, else <directory of the running program>/../share/opf. Throws
+/// $OPF_DATA_DIR when set, else <prefix>/share/opf for a program in <prefix>/bin or
+/// <prefix>/libexec/opf. Throws
 /// std::runtime_error naming the place looked at when it holds no experiments/ folder.
 std::filesystem::path data_directory();
 

@@ -44,6 +44,18 @@ std::string_view trim(std::string_view text) {
   return text;
 }
 
+std::vector<std::string> split_whitespace(std::string_view text) {
+  std::vector<std::string> fields;
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && (text[i] == ' ' || text[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < text.size() && text[i] != ' ' && text[i] != '\t') ++i;
+    if (i > start) fields.emplace_back(text.substr(start, i - start));
+  }
+  return fields;
+}
+
 std::string join_quoted(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "'" : ", '") + name + "'";
@@ -155,6 +167,12 @@ Reader::Reader(std::istream& in, std::string source,
   }
 }
 
+Reader::Reader(std::istream& in, std::string source, Headerless format)
+    : in_(in),
+      source_(std::move(source)),
+      header_(std::move(format.columns)),
+      whitespace_separated_(true) {}
+
 std::size_t Reader::column(std::string_view name) const {
   const auto it = std::find(header_.begin(), header_.end(), name);
   if (it == header_.end())
@@ -164,6 +182,12 @@ std::size_t Reader::column(std::string_view name) const {
 
 bool Reader::next() {
   if (!read_line(fields_)) return false;
+  if (whitespace_separated_ && fields_.size() != header_.size()) {
+    std::string names;
+    for (const auto& name : header_) names += (names.empty() ? "" : " ") + name;
+    fail("expected " + std::to_string(header_.size()) + " fields separated by spaces (" + names +
+         "), got " + std::to_string(fields_.size()));
+  }
   if (fields_.size() != header_.size())
     fail("expected " + std::to_string(header_.size()) + " fields as in the header (line " +
          std::to_string(header_line_) + "), got " + std::to_string(fields_.size()));
@@ -205,7 +229,12 @@ bool Reader::read_line(std::vector<std::string>& fields) {
     if (view.ends_with('\r')) view.remove_suffix(1);
     if (trim(view).empty()) continue;
     line_ = lines_read_;
-    fields = split_line(view, source_, line_);
+    if (whitespace_separated_) {
+      if (trim(view).starts_with('#')) continue;
+      fields = split_whitespace(view);
+    } else {
+      fields = split_line(view, source_, line_);
+    }
     return true;
   }
   return false;

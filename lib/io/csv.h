@@ -44,6 +44,13 @@ class Reader {
   /// missing (listing them all) or when one appears more than once.
   Reader(std::istream& in, std::string source, std::span<const std::string_view> required_columns);
 
+  /// A file of whitespace-separated fields with no header line, lines starting with '#' being
+  /// comments (the TUM trajectory format): `columns` names its fields, in order.
+  struct Headerless {
+    std::vector<std::string> columns;
+  };
+  Reader(std::istream& in, std::string source, Headerless format);
+
   const std::string& source() const { return source_; }
   const std::vector<std::string>& header() const { return header_; }
 
@@ -79,6 +86,7 @@ class Reader {
   std::vector<std::string> fields_;
   std::size_t line_ = 0;
   std::size_t lines_read_ = 0;
+  bool whitespace_separated_ = false;  // and '#' comments: the Headerless format
 };
 
 }  // namespace opf::csv

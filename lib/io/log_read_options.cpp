@@ -41,6 +41,12 @@ std::optional<Unit> parse_unit(const std::array<UnitEntry<Unit>, N>& table, std:
 
 }  // namespace
 
+std::optional<LogFormat> parse_log_format(std::string_view name) {
+  if (name == "csv") return LogFormat::kCsv;
+  if (name == "tum") return LogFormat::kTum;
+  return std::nullopt;
+}
+
 std::optional<TimeUnit> parse_time_unit(std::string_view name) {
   return parse_unit(kTimeUnits, name);
 }
@@ -98,6 +104,16 @@ std::vector<std::pair<std::string, std::string>> parse_column_mapping(std::strin
     mapping.emplace_back(name, column);
   }
   if (mapping.empty()) throw std::invalid_argument("expected NAME=COLUMN entries, e.g. qx=rx");
+  // Onto a column another name still reads by default (object=t): two fields from one column.
+  for (const auto& [name, column] : mapping) {
+    const bool renamed = std::any_of(mapping.begin(), mapping.end(),
+                                     [&](const auto& entry) { return entry.first == column; });
+    if (column != name && !renamed &&
+        std::find(kLogColumns.begin(), kLogColumns.end(), column) != kLogColumns.end())
+      throw std::invalid_argument("'" + name + "=" + column + "' reads " + name +
+                                  " from the column that " + column + " reads too; map " + column +
+                                  " elsewhere as well");
+  }
   return mapping;
 }
 

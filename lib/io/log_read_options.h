@@ -16,10 +16,22 @@ namespace opf {
 inline constexpr std::array<std::string_view, 9> kLogColumns = {"t",  "object", "x",  "y", "z",
                                                                 "qx", "qy",     "qz", "qw"};
 
+/// kCsv: the toolkit's CSV (a header naming kLogColumns). kTum: the TUM RGB-D trajectory format
+/// (evo, most SLAM systems): "timestamp tx ty tz qx qy qz qw" per line, separated by spaces or
+/// tabs, '#' starting a comment line; one object.
+enum class LogFormat { kCsv, kTum };
+/// The fields of a kTum line, in order.
+inline constexpr std::array<std::string_view, 8> kTumColumns = {"timestamp", "tx", "ty", "tz",
+                                                                "qx",        "qy", "qz", "qw"};
+
 enum class TimeUnit { kSeconds, kMilliseconds, kMicroseconds, kNanoseconds };
 enum class LengthUnit { kMetres, kMillimetres };
 
 struct LogReadOptions {
+  LogFormat format = LogFormat::kCsv;
+  /// The one object every row is of, for a log without an object column (required for kTum; with
+  /// kCsv, the file then must have no object column).
+  std::optional<std::string> object;
   /// The unit of t. Unset: seconds, and a log whose times cannot be seconds (one object detected
   /// less often than every 10 s, or epoch-like values past the year 5000) is refused with the unit
   /// they look like.
@@ -45,6 +57,9 @@ inline constexpr double kMaxPlausibleSpeed = 100.0;
 inline constexpr double kMaxPlausibleInterval = 10.0;
 /// Gaps longer than this (s) are not filled (reported instead): a clock jump, not a dropout.
 inline constexpr double kMaxFilledGap = 10.0;
+
+/// "csv", "tum": the names of --format.
+std::optional<LogFormat> parse_log_format(std::string_view name);
 
 /// "s", "ms", "us", "ns" and "m", "mm": the names the command line and the settings file use.
 std::optional<TimeUnit> parse_time_unit(std::string_view name);

@@ -6,7 +6,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string_view>
 #include <vector>
 
@@ -16,15 +18,30 @@ namespace {
 constexpr std::size_t kPoseFields = 7;  // x, y, z, qx, qy, qz, qw: kLogColumns[2..8]
 constexpr double kQuaternionNormTolerance = 0.01;
 
+// The file's names of t, object, x, y, z, qx, qy, qz, qw; the object's empty when the log has no
+// object column.
 std::array<std::string, 9> file_names(const LogReadOptions& options) {
   std::array<std::string, 9> names;
+  if (options.format == LogFormat::kTum) {
+    names = {std::string(kTumColumns[0]), ""};
+    for (std::size_t i = 1; i < kTumColumns.size(); ++i) names[i + 1] = kTumColumns[i];
+    return names;
+  }
   for (std::size_t i = 0; i < kLogColumns.size(); ++i)
     names[i] = mapped_column(options, kLogColumns[i]);
+  if (options.object) names[1].clear();
   return names;
 }
 
-std::vector<std::string_view> views(const std::array<std::string, 9>& names) {
-  return {names.begin(), names.end()};
+csv::Reader open_reader(std::istream& in, const std::string& source, const LogReadOptions& options,
+                        const std::array<std::string, 9>& names) {
+  if (options.format == LogFormat::kTum)
+    return csv::Reader(in, source,
+                       csv::Reader::Headerless{{kTumColumns.begin(), kTumColumns.end()}});
+  std::vector<std::string_view> required;
+  for (const std::string& name : names)
+    if (!name.empty()) required.push_back(name);
+  return csv::Reader(in, source, required);
 }
 
 }  // namespace
@@ -32,18 +49,33 @@ std::vector<std::string_view> views(const std::array<std::string, 9>& names) {
 LogRowReader::LogRowReader(std::istream& in, const std::string& source,
                            const LogReadOptions& options)
     : names_(file_names(options)),
-      reader_(in, source, views(names_)),
+      reader_(open_reader(in, source, options, names_)),
+      object_(options.object.value_or("")),
       seconds_per_unit_(options.time_unit ? seconds_per(*options.time_unit) : 1.0),
       metres_per_unit_(options.length_unit ? metres_per(*options.length_unit) : 1.0) {
-  for (std::size_t i = 0; i < names_.size(); ++i) column_[i] = reader_.column(names_[i]);
+  if (names_[1].empty() && object_.empty())
+    throw std::invalid_argument("a log without an object column needs the object's name");
+  const std::string& object_column = mapped_column(options, "object");
+  if (options.format == LogFormat::kCsv && options.object &&
+      std::find(reader_.header().begin(), reader_.header().end(), object_column) !=
+          reader_.header().end())
+    throw InputError(source, reader_.line(), object_column,
+                     "the log has an object column, so every row names its object: drop the "
+                     "object's name (--object) or the column");
+  for (std::size_t i = 0; i < names_.size(); ++i)
+    if (!names_[i].empty()) column_[i] = reader_.column(names_[i]);
 }
 
 bool LogRowReader::next(LogRow& row) {
   if (!reader_.next()) return false;
   row.line = reader_.line();
   row.t = reader_.number(column_[0]) * seconds_per_unit_;
-  row.object = reader_.field(column_[1]);
-  if (row.object.empty()) reader_.fail(column_[1], "expected an object name, got an empty field");
+  if (names_[1].empty()) {
+    row.object = object_;
+  } else {
+    row.object = reader_.field(column_[1]);
+    if (row.object.empty()) reader_.fail(column_[1], "expected an object name, got an empty field");
+  }
   row.pose.reset();
 
   std::size_t empty_fields = 0;

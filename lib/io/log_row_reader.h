@@ -26,7 +26,9 @@ struct LogRow {
 
 class LogRowReader {
  public:
-  /// Reads the header; throws InputError when a (mapped) column is missing.
+  /// Reads the header (a TUM file has none); throws InputError when a (mapped) column is missing.
+  /// A log without an object column (TUM, or a CSV with `options.object`) gives every row
+  /// `options.object`.
   LogRowReader(std::istream& in, const std::string& source, const LogReadOptions& options);
 
   /// The next row, false at the end of input. Throws InputError naming the file, line and column
@@ -38,6 +40,7 @@ class LogRowReader {
  private:
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
   csv::Reader reader_;
+  std::string object_;  // every row's object when the file has no object column
   std::array<std::size_t, 9> column_{};
   double seconds_per_unit_ = 1.0;
   double metres_per_unit_ = 1.0;

@@ -1,5 +1,6 @@
 #include "opf/io/yaml_reader.h"
 
+#include "opf/core/closest_name.h"
 #include "opf/io/csv.h"
 #include "opf/io/input_error.h"
 
@@ -51,23 +52,6 @@ std::optional<std::size_t> to_count(std::string_view text) {
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec != std::errc() || ptr != end) return std::nullopt;
   return value;
-}
-
-/// Optimal-string-alignment distance: insertions, deletions, substitutions and swaps of two
-/// neighbours, the usual typos, each cost 1.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
-  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
-  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t substitution = a[i - 1] == b[j - 1] ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + substitution});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-    }
-  }
-  return d[a.size()][b.size()];
 }
 
 }  // namespace
@@ -314,13 +298,8 @@ void YamlReader::finish() const {
   for (const auto& entry : entries_) {
     if (entry.read) continue;
     std::string message = "unknown key";
-    const auto closest = std::min_element(
-        known_keys_.begin(), known_keys_.end(), [&](const std::string& a, const std::string& b) {
-          return edit_distance(entry.key, a) < edit_distance(entry.key, b);
-        });
     // Only a near miss is worth suggesting; otherwise list what would have been understood.
-    if (closest != known_keys_.end() &&
-        edit_distance(entry.key, *closest) <= std::max<std::size_t>(2, closest->size() / 3)) {
+    if (const auto closest = closest_name(entry.key, known_keys_)) {
       message += "; did you mean '" + *closest + "'?";
     } else if (!known_keys_.empty()) {
       message += "; expected one of ";

@@ -224,8 +224,9 @@ TEST_F(OpfProgram, BadCommandLinesFailWithAMessageOnStderr) {
   EXPECT_EQ(run("track --in a --out b --bogus 1"), 2);
   EXPECT_NE(err().find("unknown option '--bogus'"), std::string::npos) << err();
   EXPECT_EQ(run("frobnicate"), 2);
-  EXPECT_EQ(run("track --in " + kData + "example_log.csv --out x --estimator nope"), 1);
-  EXPECT_NE(err().find("unknown estimator 'nope'"), std::string::npos) << err();
+  EXPECT_EQ(run("track --in " + kData + "example_log.csv --out x --estimator nope"), 2);
+  EXPECT_NE(err().find("option '--estimator': unknown estimator 'nope'"), std::string::npos)
+      << err();
 }
 
 TEST_F(OpfProgram, MissingInputFileFailsWithoutWritingOutput) {

@@ -20,8 +20,14 @@ TEST(Registry, UnknownNameListsTheKnownOnes) {
     make_estimator_factory("opff", EstimatorSettings{});
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
-    EXPECT_STREQ(e.what(), "unknown estimator 'opff' (known: opf, pf, cvkf, imm, oapf)");
+    EXPECT_STREQ(e.what(),
+                 "unknown estimator 'opff' (known: opf, pf, cvkf, imm, oapf); did you mean 'opf'?");
   }
+}
+
+TEST(Registry, AFarMissSuggestsNothing) {
+  EXPECT_EQ(unknown_estimator_message("ekf"),
+            "unknown estimator 'ekf' (known: opf, pf, cvkf, imm, oapf)");
 }
 
 TEST(Registry, ValidatesOptionsWhenTheFactoryIsMade) {

@@ -6,7 +6,8 @@
 #   3. find_package(opf COMPONENTS vision sim mrpt_bridge) resolves the optional layers;
 #   4. the Python module imports from <prefix>/lib/python3/dist-packages;
 #   5. CPack's .deb holds the same files under /usr;
-#   6. the installed `opf` runs from the prefix with its bundled data.
+#   6. the installed `opf` runs from the prefix with its bundled data, also a command it hands to
+#      libexec/opf/opf-experiments.
 #   bash tests/package/install_and_consume.sh BUILD_DIR SCRATCH_DIR
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -19,7 +20,7 @@ prefix="$scratch/prefix"
 cmake --install "$build" --prefix "$prefix" >"$scratch/install.log"
 for f in include/opf/opf.h include/opf/core/tracker.h lib/cmake/opf/opfConfig.cmake \
   lib/cmake/opf/opfConfigVersion.cmake lib/pkgconfig/opf.pc bin/opf \
-  share/opf/experiments/general_op.yaml share/opf/experiments/data/example_log.csv \
+  libexec/opf/opf-experiments share/opf/experiments/general_op.yaml share/opf/experiments/data/example_log.csv \
   share/bash-completion/completions/opf share/man/man1/opf.1; do
   [ -e "$prefix/$f" ] || { echo "install: $prefix/$f missing" >&2; exit 1; }
 done
@@ -79,7 +80,7 @@ fi
 (cd "$build" && cpack -G DEB -B "$scratch/deb" >"$scratch/cpack.log")
 deb="$(ls "$scratch"/deb/opf-toolkit_*.deb)"
 contents="$(dpkg-deb -c "$deb")"
-for f in ./usr/bin/opf ./usr/include/opf/opf.h ./usr/lib/cmake/opf/opfConfig.cmake \
+for f in ./usr/bin/opf ./usr/libexec/opf/opf-experiments ./usr/include/opf/opf.h ./usr/lib/cmake/opf/opfConfig.cmake \
   ./usr/lib/pkgconfig/opf.pc ./usr/share/opf/experiments/general_op.yaml \
   ./usr/share/bash-completion/completions/opf ./usr/share/man/man1/opf.1; do
   grep -q " $f\$" <<<"$contents" || { echo "deb: $f missing from $deb" >&2; exit 1; }
@@ -89,3 +90,9 @@ echo "deb: $(basename "$deb") holds the program, headers, package config, data, 
 OPF_DATA_DIR="" "$prefix/bin/opf" evaluate --seeds 1 --estimators cvkf >"$scratch/evaluate.out"
 grep -q "cvkf" "$scratch/evaluate.out"
 echo "installed opf: evaluate ran on the bundled example log"
+# A command of the experiments program, run from the prefix: `opf` finds it in libexec/opf, and
+# it finds the bundled experiments in share/opf.
+OPF_DATA_DIR="" "$prefix/bin/opf" render "$prefix/share/opf/experiments/general_op.yaml" \
+  --out "$scratch/render.png" >"$scratch/render.out"
+[ -s "$scratch/render.png" ] || { echo "installed opf render wrote no image" >&2; exit 1; }
+echo "installed opf: render ran through libexec/opf/opf-experiments"

@@ -1,0 +1,47 @@
+#include "opf/io/log_format_detection.h"
+
+#include "opf/io/csv.h"
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace opf {
+namespace {
+
+bool eight_numbers(std::string_view line) {
+  std::istringstream fields{std::string(line)};
+  std::size_t count = 0;
+  for (std::string field; fields >> field; ++count)
+    if (!csv::parse_double(field)) return false;
+  return count == kTumColumns.size();
+}
+
+}  // namespace
+
+LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line) {
+  const std::size_t start = first_line.find_first_not_of(" \t");
+  if (start != std::string_view::npos && first_line[start] == '#') return LogFormat::kTum;
+  const std::filesystem::path extension = name.extension();
+  if (extension == ".tum") return LogFormat::kTum;
+  if (extension == ".txt" && eight_numbers(first_line)) return LogFormat::kTum;
+  return LogFormat::kCsv;
+}
+
+LogFormat detect_log_format(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) return LogFormat::kCsv;
+  // The first 64 KiB hold the first line of any log; a file without line ends is not read whole.
+  std::ifstream in(path, std::ios::binary);
+  std::string head(std::size_t{1} << 16, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  std::istringstream lines(head);
+  std::string line;
+  while (std::getline(lines, line) && line.find_first_not_of(" \t\r") == std::string::npos) {
+  }
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return detect_log_format(path, line);
+}
+
+}  // namespace opf

@@ -1,0 +1,21 @@
+#pragma once
+// Which format a log file is in, from its name and first line, so that a TUM trajectory tracks
+// without an option.
+
+#include "opf/io/log_read_options.h"
+
+#include <filesystem>
+#include <string_view>
+
+namespace opf {
+
+/// kTum when `first_line` (the file's first non-blank line) starts with '#', or when the file
+/// name ends in .tum, or in .txt with a first line of eight numbers separated by spaces or tabs;
+/// kCsv otherwise.
+LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line);
+
+/// The same for the file at `path`, its first line read; kCsv for what is not a regular file (a
+/// pipe is read once, so its first line cannot be looked at first).
+LogFormat detect_log_format(const std::filesystem::path& path);
+
+}  // namespace opf

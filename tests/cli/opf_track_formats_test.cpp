@@ -1,0 +1,138 @@
+// The formats people have, end to end: a TUM trajectory tracks with no option and its estimates
+// are written as TUM (one file per object) that read back; a log that would be read wrong (a
+// column read as two fields, quaternions written w first) is refused or warned about.
+
+#include "cli/opf_program.h"
+#include "opf/io/estimate_csv.h"
+#include "opf/io/measurement_log.h"
+
+#include "opf/core/pose_conversion.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace opf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kExampleLog = std::string(OPF_SOURCE_DIR) + "/experiments/data/example_log.csv";
+
+// A SLAM-style trajectory: epoch times, 30 Hz, a turn about z, lines 20-29 missing (a gap).
+void write_tum_trajectory(const fs::path& path) {
+  std::ofstream out(path);
+  out << "# ground truth trajectory\n# timestamp tx ty tz qx qy qz qw\n";
+  out.precision(17);
+  for (int k = 0; k < 60; ++k) {
+    if (k >= 20 && k < 30) continue;
+    const double t = 1403715273.0 + k / 30.0, yaw = 0.01 * k;
+    out << t << ' ' << 0.2 * k / 30.0 << " 0.1 1.5 0 0 " << std::sin(yaw / 2) << ' '
+        << std::cos(yaw / 2) << '\n';
+  }
+}
+
+LogReadOptions tum(const std::string& object) {
+  LogReadOptions options;
+  options.format = LogFormat::kTum;
+  options.object = object;
+  options.fill_gaps = false;
+  return options;
+}
+
+TEST_F(OpfProgram, ATumTrajectoryTracksWithNoOptionAndItsEstimatesReadBackAsTum) {
+  const fs::path log = dir_ / "room1.txt";
+  write_tum_trajectory(log);
+  const std::string common = " --estimator cvkf --seed 2 --quiet";
+  ASSERT_EQ(run("track --in " + log.string() + " --out " + (dir_ / "est.csv").string() + common), 0)
+      << err();
+  ASSERT_EQ(run("track --in " + log.string() + " --out " + (dir_ / "est.tum").string() + common), 0)
+      << err();
+  // The CSV names the object after the file; the TUM file holds the same main estimates.
+  const std::vector<EstimateRecord> rows = read_estimate_csv(dir_ / "est.csv");
+  ASSERT_EQ(rows.size(), 60u);  // 50 frames of the log and 10 filled in its gap
+  EXPECT_EQ(rows.front().object, "room1");
+  const MeasurementLog back = read_measurement_log(dir_ / "est.tum", tum("est"));
+  ASSERT_EQ(back.frames.size(), rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const mrpt::poses::CPose3D& read = back.frames[i].detections.at(0).pose;
+    EXPECT_DOUBLE_EQ(back.frames[i].t, rows[i].t);
+    EXPECT_LT((translation_of(read) - translation_of(rows[i].pose)).norm(), 1e-12) << i;
+    EXPECT_LT(orientation_of(read).angularDistance(orientation_of(rows[i].pose)), 1e-9) << i;
+  }
+  // --format tum reads it (its name says nothing), --object names the object.
+  const fs::path renamed = dir_ / "est.data";
+  fs::copy_file(dir_ / "est.tum", renamed);
+  ASSERT_EQ(run("track --in " + renamed.string() + " --format tum --object cup --out " +
+                (dir_ / "again.csv").string() + common),
+            0)
+      << err();
+  EXPECT_EQ(read_estimate_csv(dir_ / "again.csv").front().object, "cup");
+}
+
+TEST_F(OpfProgram, TumOutputIsOneFilePerObjectAndNeedsTheWholeLog) {
+  const std::string out = (dir_ / "est.tum").string();
+  ASSERT_EQ(run("track --in " + kExampleLog + " --out " + out + " --estimator cvkf --quiet"), 0)
+      << err();
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(read_measurement_log(dir_ / "est_ball.tum", tum("ball")).objects.size(), 1u);
+  EXPECT_EQ(read_measurement_log(dir_ / "est_mug.tum", tum("mug")).objects.size(), 1u);
+  EXPECT_EQ(run("track --in " + kExampleLog + " --out - --out-format tum"), 2);
+  EXPECT_NE(err().find("standard output holds one, and the log has 2"), std::string::npos) << err();
+  EXPECT_EQ(run("track --in " + kExampleLog + " --stream --out " + out), 2);
+  EXPECT_NE(err().find("not from a stream"), std::string::npos) << err();
+  EXPECT_EQ(run("track --in " + kExampleLog + " --out x.csv --out-format kml"), 2);
+}
+
+TEST_F(OpfProgram, EvaluateComparesATumLogWithATumTruthOfAnotherName) {
+  write_tum_trajectory(dir_ / "slam_output.txt");
+  write_tum_trajectory(dir_ / "groundtruth.txt");
+  ASSERT_EQ(run("evaluate --in " + (dir_ / "slam_output.txt").string() + " --truth " +
+                (dir_ / "groundtruth.txt").string() + " --estimators cvkf --seeds 1"),
+            0)
+      << err();
+  EXPECT_NE(out().find("1 objects"), std::string::npos) << out();
+}
+
+TEST_F(OpfProgram, ALogThatWouldBeReadWrongIsRefusedOrWarnedAbout) {
+  EXPECT_EQ(run("track --in " + kExampleLog + " --out x.csv --columns object=t"), 2);
+  EXPECT_NE(err().find("'object=t' reads object from the column that t reads too"),
+            std::string::npos)
+      << err();
+  EXPECT_EQ(run("track --in " + kExampleLog + " --out x.csv --format tum --columns x=px"), 2);
+  // The example log with each quaternion written w first under the same header.
+  const fs::path w_first = dir_ / "w_first.csv";
+  {
+    std::ifstream in(kExampleLog);
+    std::ofstream out(w_first);
+    std::string line;
+    std::getline(in, line);  // t,object,x,y,z,qx,qy,qz,qw,source
+    out << "t,object,x,y,z,qx,qy,qz,qw\n";
+    while (std::getline(in, line)) {
+      std::vector<std::string> f;
+      std::stringstream fields(line);
+      for (std::string field; std::getline(fields, field, ',');) f.push_back(field);
+      if (f.size() < 9 || f[2].empty()) {
+        out << f.at(0) << ',' << f.at(1) << ",,,,,,,\n";
+        continue;
+      }
+      out << f[0] << ',' << f[1] << ',' << f[2] << ',' << f[3] << ',' << f[4] << ',' << f[8] << ','
+          << f[5] << ',' << f[6] << ',' << f[7] << '\n';
+    }
+  }
+  const std::string est = (dir_ / "est.csv").string();
+  ASSERT_EQ(run("track --in " + w_first.string() + " --out " + est + " --estimator cvkf"), 0);
+  EXPECT_NE(err().find("warning: " + w_first.string() + ": object 'mug': its quaternions"),
+            std::string::npos)
+      << err();
+  ASSERT_EQ(run("track --in " + w_first.string() + " --out " + est +
+                " --estimator cvkf --columns qw=qx,qx=qy,qy=qz,qz=qw"),
+            0);
+  EXPECT_EQ(err().find("its quaternions"), std::string::npos) << err();
+}
+
+}  // namespace
+}  // namespace opf
