@@ -11,23 +11,36 @@ The log format, the settings file and the estimate columns are those of the `opf
 (docs/logs.md, experiments/configs/estimators.yaml, docs/library.md).
 """
 
-from ._opf import Estimate, InputError, Tracker, estimators
+import os
+
+from ._opf import Estimate, InputError, Tracker, estimators, __version__
 from ._opf import _track_log
 
-__all__ = ["Estimate", "InputError", "Tracker", "estimators", "track_log"]
+__all__ = ["Estimate", "InputError", "Tracker", "estimators", "track_log", "__version__"]
 
 
-def track_log(path, estimator="opf", seed=1, particles=5000, config=None, dataframe=True):
-    """Replays the measurement log at `path` through `estimator` (the same frames and rows as
-    `opf track`: one per object per frame, then the further hypotheses) and returns its columns:
-    a pandas DataFrame when pandas is installed and `dataframe` is true, else a dict of numpy
-    arrays (object, mode and model as lists of str)."""
-    columns = _track_log(str(path), estimator=estimator, seed=seed, particles=particles,
-                         config=config)
+def track_log(path, estimator="opf", seed=1, particles=None, config=None, dataframe=True, *,
+              preset="default", camera=None, time_unit=None, length_unit=None, columns=None,
+              frame_tolerance=None, rate=None, fill=True, covariance=False):
+    """Replays the measurement log at `path` through `estimator` and returns the columns of the
+    estimate file `opf track` writes for the same log, options and seed (one row per object per
+    frame, then the further hypotheses): a pandas DataFrame when pandas is installed and
+    `dataframe` is true, else a dict of numpy arrays (object, mode and model as lists of str).
+
+    The options are `opf track`'s of the same names, with the same defaults and checks:
+    particles (None: the config's, else 5000), config (a settings file's path or a dict),
+    preset ("default" or "paper"), camera ([X, Y, Z] or "X,Y,Z", m), time_unit (s, ms, us, ns),
+    length_unit (m, mm), columns ({"qx": "rx", ...} or "qx=rx,..."), frame_tolerance (s),
+    rate (Hz), fill (False: --no-fill) and covariance (True: the 21 cov_* columns too)."""
+    result = _track_log(os.fspath(path), estimator=estimator, seed=seed, particles=particles,
+                        config=config, preset=preset, camera=camera, time_unit=time_unit,
+                        length_unit=length_unit, columns=columns,
+                        frame_tolerance=frame_tolerance, rate=rate, fill=fill,
+                        covariance=covariance)
     if dataframe:
         try:
             import pandas
         except ImportError:
-            return columns
-        return pandas.DataFrame(columns)
-    return columns
+            return result
+        return pandas.DataFrame(result)
+    return result

@@ -1,12 +1,17 @@
 """The Python module `opf` against the C++ program it wraps: the same numbers, the same errors.
 
 Run by ctest (Python.Module) with PYTHONPATH at the build's staged package and OPF (the built
-`opf` program) and OPF_SOURCE_DIR in the environment."""
+`opf` program) and OPF_SOURCE_DIR in the environment; without OPF the comparisons with the
+program are skipped."""
 
 import csv
+import itertools
 import math
 import os
+import re
 import subprocess
+import threading
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 import pytest
@@ -14,9 +19,45 @@ import pytest
 import opf
 
 SOURCE = os.environ["OPF_SOURCE_DIR"]
-OPF = os.environ["OPF"]
+OPF = os.environ.get("OPF")
 EXAMPLE_LOG = os.path.join(SOURCE, "experiments", "data", "example_log.csv")
 PARTICLES = 500
+TEXT_COLUMNS = ("object", "mode", "model")
+
+
+def program():
+    """The `opf` program the module is compared with; without OPF the test is skipped."""
+    if not OPF:
+        pytest.skip("OPF (the opf program) is not set")
+    return OPF
+
+
+def opf_track(*arguments):
+    """Runs `opf track` quietly; returns its stderr (bytes) and exit status."""
+    run = subprocess.run([program(), "track", "--quiet", *map(str, arguments)],
+                         capture_output=True)
+    return run.stderr, run.returncode
+
+
+def assert_columns_are_the_files(columns, path):
+    """Every column of the estimate file at `path`, in its order, value for value (the file holds
+    the shortest text that reads back exactly: equality, not closeness)."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = next(reader)
+        rows = list(reader)
+    assert list(columns) == header
+    assert len(columns["t"]) == len(rows)
+    for i, name in enumerate(header):
+        values = [row[i] for row in rows]
+        if name in TEXT_COLUMNS:
+            assert columns[name] == values, name
+        elif name == "hypothesis":
+            assert list(columns[name]) == [int(v) for v in values], name
+        elif name == "alert":
+            assert list(columns[name]) == [v == "1" for v in values], name
+        else:
+            assert np.array_equal(columns[name], np.array([float(v) for v in values])), name
 
 
 def cup_at(t):
@@ -58,23 +99,280 @@ def test_the_same_seed_gives_the_same_estimates_and_another_seed_does_not():
     assert not all(np.array_equal(a, b) for a, b in zip(run(5), run(6)))
 
 
+TRAY = [0.5, -0.2, 0.5, 0.0, 0.0, 0.0, 1.0]
+
+
+def snapshot(estimates):
+    return {name: (e.t, e.position.copy(), e.quaternion.copy(), e.covariance.copy(), e.mode)
+            for name, e in estimates.items()}
+
+
+def assert_same_estimates(a, b):
+    assert set(a) == set(b)
+    for name in a:
+        t, position, quaternion, covariance, mode = a[name]
+        u, position_b, quaternion_b, covariance_b, mode_b = b[name]
+        assert (t, mode) == (u, mode_b), name
+        assert np.array_equal(position, position_b), name
+        assert np.array_equal(quaternion, quaternion_b), name
+        assert np.array_equal(covariance, covariance_b), name
+
+
+def test_threads_stepping_one_tracker_take_turns_and_get_the_serial_estimates():
+    threads, steps = 4, 30
+    tracker = opf.Tracker("opf", seed=8, particles=PARTICLES)
+    frames = itertools.count()  # frame k at k / 30 s, drawn under the lock: each time once
+    frames_lock = threading.Lock()
+    accepted = {}
+
+    def worker(_):
+        done = refused = 0
+        while done < steps:
+            with frames_lock:
+                t = next(frames) / 30.0
+            try:
+                estimates = tracker.step(t, {"cup": cup_at(t), "tray": TRAY})
+            except ValueError as error:
+                # A later frame drawn by another thread reached the tracker first: this one is
+                # refused whole (time does not go back) and the thread draws the next.
+                assert re.fullmatch(r"Tracker: frame time \S+ s does not follow the previous "
+                                    r"frame at \S+ s", str(error)), str(error)
+                refused += 1
+                continue
+            accepted[t] = snapshot(estimates)
+            done += 1
+        return refused
+
+    with ThreadPoolExecutor(threads) as pool:
+        refused = sum(pool.map(worker, range(threads)))
+    assert len(accepted) == threads * steps
+    assert next(frames) == threads * steps + refused  # every frame drawn accepted or refused
+    # One step at a time, whole: the estimates of the accepted frames stepped in time order.
+    serial = opf.Tracker("opf", seed=8, particles=PARTICLES)
+    for t in sorted(accepted):
+        expected = snapshot(serial.step(t, {"cup": cup_at(t), "tray": TRAY}))
+        assert {name: value[0] for name, value in accepted[t].items()} == {"cup": t, "tray": t}
+        assert_same_estimates(accepted[t], expected)
+
+
+NEXT = None  # the next frame's own time: the pose alone is wrong
+CUP = [0.1, 0.2, 0.3, 0.0, 0.0, 0.0, 1.0]
+
+
+@pytest.mark.parametrize("t, pose, message", [
+    (math.nan, CUP, "field 't': expected a finite number, got nan"),
+    (math.inf, CUP, "field 't': expected a finite number, got inf"),
+    (NEXT, [math.nan, 0.2, 0.3, 0, 0, 0, 1],
+     "object 'cup', field 'x': expected a finite number, got nan"),
+    (NEXT, [0.1, -math.inf, 0.3, 0, 0, 0, 1],
+     "object 'cup', field 'y': expected a finite number, got -inf"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, math.inf, 1],
+     "object 'cup', field 'qz': expected a finite number, got inf"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, math.nan],
+     "object 'cup', field 'qw': expected a finite number, got nan"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 0], "object 'cup', fields 'qx,qy,qz,qw': expected a unit "
+                                        "quaternion (norm within 0.01 of 1), got norm 0"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 1],
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw], got 6"),
+    (NEXT, "0.1,0.2,0.3,0,0,0,1", "object 'cup': expected a pose [x, y, z, qx, qy, qz, qw] or "
+                                  "None, got '0.1,0.2,0.3,0,0,0,1'"),
+])
+def test_a_bad_input_is_refused_by_name_and_the_tracker_goes_on(t, pose, message):
+    times = [k / 30.0 for k in range(4)]
+
+    def step(tracker, s, cup=CUP):
+        return snapshot(tracker.step(s, {"cup": cup, "tray": TRAY}))
+
+    tracker = opf.Tracker("opf", seed=5, particles=PARTICLES)
+    estimates = []
+    for k, s in enumerate(times):
+        if k in (0, 2):  # refused as the very first step, and between good ones
+            with pytest.raises(ValueError) as error:
+                step(tracker, s if t is NEXT else t, pose)
+            assert str(error.value) == message
+        estimates.append(step(tracker, s))
+    # A refused step leaves no trace: the estimates of a tracker that never saw it.
+    reference = opf.Tracker("opf", seed=5, particles=PARTICLES)
+    for s, got in zip(times, estimates):
+        assert_same_estimates(got, step(reference, s))
+        assert all(np.isfinite(e[1]).all() and np.isfinite(e[3]).all() for e in got.values())
+
+
+def test_a_step_back_in_time_is_refused_and_an_empty_name_too():
+    tracker = opf.Tracker("cvkf")
+    tracker.step(1.0, {"cup": CUP})
+    with pytest.raises(ValueError) as error:
+        tracker.step(0.5, {"cup": CUP})
+    assert str(error.value) == "Tracker: frame time 0.5 s does not follow the previous frame at 1 s"
+    with pytest.raises(ValueError) as error:
+        tracker.step(2.0, {"": CUP})
+    assert str(error.value) == "object '': expected an object name, got an empty string"
+    assert tracker.step(2.0, {"cup": None})["cup"].t == 2.0
+
+
+def test_a_configs_particle_counts_are_used_unless_particles_is_given():
+    def run(**arguments):
+        tracker = opf.Tracker("pf", seed=9, **arguments)
+        return [snapshot(tracker.step(k / 30.0, {"cup": cup_at(k / 30.0)})) for k in range(6)]
+
+    def same(a, b):
+        try:
+            for x, y in zip(a, b, strict=True):
+                assert_same_estimates(x, y)
+        except AssertionError:
+            return False
+        return True
+
+    counts = {"pf": {"translation_particles": 200, "rotation_particles": 200}}
+    with_200 = run(particles=200)
+    assert same(run(config=counts), with_200)
+    assert same(run(config=counts, particles=200), with_200)  # the same count twice
+    assert not same(run(), with_200)  # the default, 5000
+    # A count the config leaves alone is the default's, not the other's.
+    assert same(run(config={"pf": {"rotation_particles": 200}}),
+                run(config={"pf": {"translation_particles": 5000, "rotation_particles": 200}}))
+    with pytest.raises(ValueError) as error:
+        opf.Tracker("pf", particles=100, config=counts)
+    assert str(error.value) == ("particles=100 and the config's pf.translation_particles (200) "
+                                "contradict each other: give the particle count in one place")
+    with pytest.raises(ValueError) as error:
+        opf.Tracker("pf", particles=100, config={"pf": {"rotation_particles": 200}})
+    assert str(error.value).startswith("particles=100 and the config's pf.rotation_particles (200)")
+
+
+def test_track_log_takes_a_settings_files_particle_count_as_opf_track_does(tmp_path):
+    settings = tmp_path / "settings.yaml"
+    settings.write_text("pf:\n  translation_particles: 300\n  rotation_particles: 200\n")
+    out = tmp_path / "estimates.csv"
+    assert opf_track("--in", EXAMPLE_LOG, "--out", out, "--estimator", "pf", "--seed", 2,
+                     "--config", settings) == (b"", 0)
+    columns = opf.track_log(EXAMPLE_LOG, estimator="pf", seed=2, config=settings,
+                            dataframe=False)
+    assert_columns_are_the_files(columns, out)
+
+
+def test_the_version_is_the_projects_and_the_programs():
+    with open(os.path.join(SOURCE, "CMakeLists.txt")) as f:
+        project = re.search(r"project\(opf_toolkit VERSION (\S+)", f.read()).group(1)
+    assert opf.__version__ == project
+    if OPF:
+        printed = subprocess.run([OPF, "--version"], capture_output=True, text=True,
+                                 check=True).stdout
+        assert printed.split()[:2] == ["opf", opf.__version__]
+
+
 def test_track_log_is_opf_track_number_for_number(tmp_path):
     out = tmp_path / "estimates.csv"
-    subprocess.run([OPF, "track", "--in", EXAMPLE_LOG, "--out", str(out), "--estimator", "opf",
-                    "--seed", "4", "--particles", str(PARTICLES), "--quiet"], check=True)
-    with open(out, newline="") as f:
-        rows = list(csv.DictReader(f))
+    assert opf_track("--in", EXAMPLE_LOG, "--out", out, "--estimator", "opf", "--seed", 4,
+                     "--particles", PARTICLES) == (b"", 0)
     columns = opf.track_log(EXAMPLE_LOG, estimator="opf", seed=4, particles=PARTICLES,
                             dataframe=False)
-    assert len(columns["t"]) == len(rows) > 300
-    for name in ("t", "x", "y", "z", "qx", "qy", "qz", "qw", "trace"):
-        # The file holds the shortest text that reads back exactly: equality, not closeness.
-        assert np.array_equal(columns[name], np.array([float(r[name]) for r in rows])), name
-    assert columns["object"] == [r["object"] for r in rows]
-    assert columns["mode"] == [r["mode"] for r in rows]
-    assert list(columns["hypothesis"]) == [int(r["hypothesis"]) for r in rows]
-    assert list(columns["alert"]) == [r["alert"] == "1" for r in rows]
-    assert columns["model"] == [r["model"] for r in rows]
+    assert len(columns) == 21 and len(columns["t"]) > 300
+    assert_columns_are_the_files(columns, out)
+
+
+# The measurement log in another system's shape: t in ms, positions in mm, the quaternion under
+# other names, and a 0.5 s gap (filled at the rate).
+OWN_COLUMNS = {"t": "time_ms", "qx": "rx", "qy": "ry", "qz": "rz", "qw": "rw"}
+OWN_OPTIONS = {"time_unit": "ms", "length_unit": "mm", "columns": OWN_COLUMNS}
+OWN_FLAGS = ["--time-unit", "ms", "--length-unit", "mm",
+             "--columns", ",".join(f"{k}={v}" for k, v in OWN_COLUMNS.items())]
+
+
+def write_own_log(path):
+    with open(EXAMPLE_LOG, newline="") as f:
+        rows = list(csv.DictReader(f))
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(OWN_COLUMNS.get(name, name) for name in
+                     ("t", "object", "x", "y", "z", "qx", "qy", "qz", "qw"))
+        for row in rows:
+            if 2.0 <= float(row["t"]) < 2.5:
+                continue
+            millimetres = [repr(float(row[k]) * 1000) if row[k] else "" for k in "xyz"]
+            out.writerow([repr(float(row["t"]) * 1000), row["object"], *millimetres,
+                          row["qx"], row["qy"], row["qz"], row["qw"]])
+
+
+@pytest.mark.parametrize("options, flags", [
+    ({"preset": "paper", "rate": 20, "covariance": True},
+     ["--preset", "paper", "--rate", "20", "--covariance"]),
+    ({"camera": [2.0, 0.0, 0.3], "fill": False}, ["--camera", "2.0,0.0,0.3", "--no-fill"]),
+    ({"camera": "2.0,0.0,0.3", "columns": OWN_FLAGS[5]}, ["--camera", "2.0,0.0,0.3"]),
+])
+def test_track_log_takes_opf_tracks_log_options(tmp_path, options, flags):
+    log = tmp_path / "own.csv"
+    write_own_log(log)
+    out = tmp_path / "estimates.csv"
+    assert opf_track("--in", log, "--out", out, "--seed", 3, "--particles", PARTICLES,
+                     *OWN_FLAGS, *flags) == (b"", 0)
+    common = dict(OWN_OPTIONS, seed=3, particles=PARTICLES, dataframe=False)
+    columns = opf.track_log(log, **dict(common, **options))
+    assert_columns_are_the_files(columns, out)
+    assert len(columns) == (42 if options.get("covariance") else 21)
+    # Each option changes the estimates of this log: none of them is ignored.
+    defaults = {"preset": "default", "fill": True}
+    for name in set(options) - {"covariance", "columns"}:
+        without = opf.track_log(log, **{**common, **options, name: defaults.get(name)})
+        assert not (len(without["t"]) == len(columns["t"])
+                    and np.array_equal(without["x"], columns["x"])), name
+
+
+@pytest.mark.parametrize("options, flag, message", [
+    ({"time_unit": "h"}, ["--time-unit", "h"], 'expected s, ms, us or ns, got "h"'),
+    ({"length_unit": "km"}, ["--length-unit", "km"], 'expected m or mm, got "km"'),
+    ({"columns": {"foo": "bar"}}, ["--columns", "foo=bar"],
+     "'foo' is not a column of the log format (t, object, x, y, z, qx, qy, qz, qw)"),
+    ({"columns": "qx"}, ["--columns", "qx"],
+     "'qx' is not NAME=COLUMN (e.g. qx=rx: the column rx holds qx)"),
+    ({"camera": "0,0"}, ["--camera", "0,0"], 'expected three numbers X,Y,Z in metres, got "0,0"'),
+    ({"preset": "fast"}, ["--preset", "fast"], 'expected default or paper, got "fast"'),
+])
+def test_track_log_refuses_a_bad_option_in_opf_tracks_words(tmp_path, options, flag, message):
+    (name,) = options
+    with pytest.raises(ValueError) as error:
+        opf.track_log(EXAMPLE_LOG, **options)
+    assert str(error.value) == f"option '{name}': {message}"
+    stderr, status = opf_track("--in", EXAMPLE_LOG, "--out", tmp_path / "never.csv", *flag)
+    assert (stderr.decode(), status) == (
+        f"opf track: option '{flag[0]}': {message} (see 'opf track --help')\n", 2)
+
+
+def test_track_log_refuses_the_other_bad_options_by_name():
+    refusals = [
+        ({"rate": 0}, "option 'rate' expects a frame rate in Hz > 0"),
+        ({"rate": math.inf}, "option 'rate' expects a frame rate in Hz > 0"),
+        ({"frame_tolerance": -0.1}, "option 'frame_tolerance' expects seconds >= 0"),
+        ({"rate": 20, "fill": False}, "options 'rate' and 'fill=False' contradict each other: "
+                                      "rate sets the rate gaps are filled at"),
+        ({"camera": [0, 0, math.nan]},
+         "option 'camera': expected three numbers X,Y,Z in metres, got [0, 0, nan]"),
+        ({"columns": {"qx": "a,b"}},
+         "option 'columns': expected names without commas, got 'qx': 'a,b'"),
+        ({"config": {"opf": {"occluder": {"plane": "line_of_sight"}}}},
+         "opf.occluder.plane is line_of_sight but no camera position is given: pass camera=[X, "
+         "Y, Z] (or set opf.occluder.camera_position), or use plane auto (a top-down camera "
+         "without one)"),
+    ]
+    for options, message in refusals:
+        with pytest.raises(ValueError) as error:
+            opf.track_log(EXAMPLE_LOG, **options)
+        assert str(error.value) == message
+
+
+def test_a_binary_file_is_refused_in_opf_tracks_words(tmp_path):
+    binary = tmp_path / "image.bin"
+    binary.write_bytes(b"\x7fELF\x02\x01\xff\xfe,\x01\n\x00\x00\x00")
+    missing = "missing required columns 't', 'object', 'x', 'y', 'z', 'qx', 'qy', 'qz', 'qw'"
+    with pytest.raises(opf.InputError) as error:
+        opf.track_log(binary)
+    # The header's bytes escaped: not UTF-8, they used to leave the message empty.
+    assert str(error.value) == (f"{binary}:1: {missing} (the header has "
+                                "'\\x7fELF\\x02\\x01\\xff\\xfe', '\\x01'); is the header line missing?")
+    stderr, status = opf_track("--in", binary, "--out", tmp_path / "never.csv")
+    assert (stderr, status) == (
+        f"opf track: error: {binary}:1: {missing} (the header has '".encode()
+        + b"\x7fELF\x02\x01\xff\xfe', '\x01'); is the header line missing?\n", 1)
 
 
 def test_track_log_gives_a_dataframe_when_pandas_is_there():
@@ -109,7 +407,7 @@ def test_errors_carry_the_programs_messages(tmp_path):
     bad.write_text("t,object,x,y,z,qx,qy,qz,qw\n0,cup,0,0,0,0,0,0,2\n")
     with pytest.raises(opf.InputError, match=r"bad.csv:2: .*qx,qy,qz,qw"):
         opf.track_log(bad)
-    with pytest.raises(ValueError, match="unit norm"):
+    with pytest.raises(ValueError, match="expected a unit quaternion"):
         opf.Tracker().step(0.0, {"cup": [0, 0, 0, 0, 0, 0, 2]})
     with pytest.raises(ValueError, match="particles must be at least 1"):
         opf.Tracker(particles=0)

@@ -1,0 +1,97 @@
+#include "py_tracker.h"
+
+#include "opf/core/pose_conversion.h"
+#include "opf/estimators/registry.h"
+#include "opf/io/csv.h"
+
+#include <pybind11/stl.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace py = pybind11;
+
+namespace opf::python {
+namespace {
+
+constexpr std::array<const char*, 7> kPoseFields = {"x", "y", "z", "qx", "qy", "qz", "qw"};
+// The measurement log's tolerance (io/log_row_reader.cpp), and its wording below.
+constexpr double kQuaternionNormTolerance = 0.01;
+
+void require_finite(double value, const std::string& where) {
+  if (!std::isfinite(value))
+    throw std::invalid_argument(where + ": expected a finite number, got " +
+                                csv::format_double(value));
+}
+
+std::vector<double> pose_fields(const std::string& object, const py::object& pose) {
+  const std::string where = "object '" + object + "'";
+  std::vector<double> p;
+  try {
+    p = py::cast<std::vector<double>>(pose);
+  } catch (const py::cast_error&) {
+    throw std::invalid_argument(where +
+                                ": expected a pose [x, y, z, qx, qy, qz, qw] or None, got " +
+                                py::cast<std::string>(py::repr(pose)));
+  }
+  if (p.size() != kPoseFields.size())
+    throw std::invalid_argument(where + ": expected 7 pose fields [x, y, z, qx, qy, qz, qw], got " +
+                                std::to_string(p.size()));
+  for (std::size_t i = 0; i < p.size(); ++i)
+    require_finite(p[i], where + ", field '" + kPoseFields[i] + "'");
+  return p;
+}
+
+// The frame of one step, every input checked: the tracker never sees one it would choke on.
+Frame frame_from(double t, const std::map<std::string, py::object>& detections) {
+  require_finite(t, "field 't'");
+  Frame frame;
+  frame.t = t;
+  for (const auto& [object, pose] : detections) {
+    if (object.empty())
+      throw std::invalid_argument("object '': expected an object name, got an empty string");
+    if (pose.is_none()) continue;  // unobserved in this frame
+    const std::vector<double> p = pose_fields(object, pose);
+    const Eigen::Quaterniond q(p[6], p[3], p[4], p[5]);
+    if (!(std::abs(q.norm() - 1.0) <= kQuaternionNormTolerance))
+      throw std::invalid_argument("object '" + object +
+                                  "', fields 'qx,qy,qz,qw': expected a unit quaternion (norm "
+                                  "within 0.01 of 1), got norm " +
+                                  csv::format_double(q.norm()));
+    frame.detections.push_back(
+        {object, make_pose(Eigen::Vector3d(p[0], p[1], p[2]), q.normalized())});
+  }
+  return frame;
+}
+
+}  // namespace
+
+PyTracker::PyTracker(const std::string& estimator, std::uint64_t seed,
+                     const SettingsArguments& settings)
+    : tracker_(make_estimator_factory(estimator, settings_from(settings)), seed) {}
+
+std::map<std::string, PyEstimate> PyTracker::step(
+    double t, const std::map<std::string, py::object>& detections) {
+  const Frame frame = frame_from(t, detections);  // reads Python objects: with the GIL
+  // The GIL first, then the lock: a thread waiting for the lock never holds the GIL that the
+  // thread holding the lock needs to return.
+  const py::gil_scoped_release release;
+  const std::lock_guard lock(mutex_);
+  std::map<std::string, PyEstimate> out;
+  for (const Estimate& e : tracker_.step(frame)) out.emplace(e.object, to_python(e));
+  return out;
+}
+
+std::vector<PyEstimate> PyTracker::hypotheses() {
+  const py::gil_scoped_release release;
+  const std::lock_guard lock(mutex_);
+  std::vector<PyEstimate> out;
+  for (const Estimate& e : tracker_.hypotheses()) out.push_back(to_python(e));
+  return out;
+}
+
+}  // namespace opf::python
