@@ -113,7 +113,8 @@ void bind_track_log(py::module_& m) {
       "_track_log",
       [](const std::string& path, const std::string& estimator, std::uint64_t seed,
          std::optional<std::size_t> particles, const py::object& config, const std::string& preset,
-         const py::object& camera, std::optional<std::string> time_unit,
+         const py::object& camera, std::optional<std::string> format,
+         std::optional<std::string> object, std::optional<std::string> time_unit,
          std::optional<std::string> length_unit, const py::object& columns,
          std::optional<double> frame_tolerance, std::optional<double> rate, bool fill,
          bool covariance) {
@@ -122,15 +123,16 @@ void bind_track_log(py::module_& m) {
              .estimator = estimator,
              .seed = seed,
              .settings = {preset, config, camera, particles},
-             .log = {time_unit, length_unit, columns, frame_tolerance, rate, fill},
+             .log = {format, object, time_unit, length_unit, columns, frame_tolerance, rate, fill},
              .covariance = covariance});
       },
       py::arg("path"), py::arg("estimator") = "opf", py::arg("seed") = 1,
       py::arg("particles") = py::none(), py::arg("config") = py::none(),
-      py::arg("preset") = "default", py::arg("camera") = py::none(),
-      py::arg("time_unit") = py::none(), py::arg("length_unit") = py::none(),
-      py::arg("columns") = py::none(), py::arg("frame_tolerance") = py::none(),
-      py::arg("rate") = py::none(), py::arg("fill") = true, py::arg("covariance") = false);
+      py::arg("preset") = "default", py::arg("camera") = py::none(), py::arg("format") = py::none(),
+      py::arg("object") = py::none(), py::arg("time_unit") = py::none(),
+      py::arg("length_unit") = py::none(), py::arg("columns") = py::none(),
+      py::arg("frame_tolerance") = py::none(), py::arg("rate") = py::none(), py::arg("fill") = true,
+      py::arg("covariance") = false);
 }
 
 }  // namespace

@@ -92,7 +92,7 @@ py::dict track_log(const TrackLogArguments& arguments) {
   // The options are checked in opf track's order, before the log is read.
   const EstimatorSettings settings = settings_from(arguments.settings);
   require_camera_for_line_of_sight(settings);
-  const LogReadOptions options = log_options_from(arguments.log);
+  const LogReadOptions options = log_options_from(arguments.log, arguments.path);
   ColumnTable table(arguments.covariance);
   {
     const py::gil_scoped_release release;

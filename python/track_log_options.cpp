@@ -1,6 +1,9 @@
 #include "track_log_options.h"
 
+#include "opf/io/log_format_detection.h"
+
 #include <cmath>
+#include <filesystem>
 #include <stdexcept>
 
 namespace py = pybind11;
@@ -32,8 +35,23 @@ std::string column_text(const py::object& columns) {
 
 }  // namespace
 
-LogReadOptions log_options_from(const LogArguments& arguments) {
+LogReadOptions log_options_from(const LogArguments& arguments, const std::string& path) {
   LogReadOptions options;
+  if (const auto& format = arguments.format) {
+    const auto parsed = parse_log_format(*format);
+    if (!parsed)
+      throw std::invalid_argument("option 'format': expected csv or tum, got \"" + *format + "\"");
+    options.format = *parsed;
+  } else {
+    options.format = detect_log_format(path);
+  }
+  options.object = arguments.object;
+  if (options.object && options.object->empty())
+    throw std::invalid_argument("option 'object' expects a name, got an empty one");
+  if (options.format == LogFormat::kTum && !options.object)
+    options.object = std::filesystem::path(path).stem().string();
+  if (options.format == LogFormat::kTum && !arguments.columns.is_none())
+    throw std::invalid_argument("option 'columns' renames CSV columns; a TUM log has none");
   if (const auto& unit = arguments.time_unit) {
     options.time_unit = parse_time_unit(*unit);
     if (!options.time_unit)

@@ -1,5 +1,6 @@
 #pragma once
-// track_log's log options: opf track's --time-unit, --length-unit, --columns, --frame-tolerance,
+// track_log's log options: opf track's --format, --object, --time-unit, --length-unit, --columns,
+// --frame-tolerance,
 // --rate and --no-fill, with the same meanings, defaults and checks, mapped onto LogReadOptions
 // by the same lib/io functions. (The command line's own mapping lives in the program, apps/opf.)
 
@@ -13,6 +14,8 @@
 namespace opf::python {
 
 struct LogArguments {
+  std::optional<std::string> format;       ///< csv or tum; None: detected from the file
+  std::optional<std::string> object;       ///< the one object of a log without an object column
   std::optional<std::string> time_unit;    ///< s, ms, us or ns; None: s, checked
   std::optional<std::string> length_unit;  ///< m or mm; None: m, checked
   /// None, {"qx": "rx", ...} or opf track's text "qx=rx,...".
@@ -22,7 +25,8 @@ struct LogArguments {
   bool fill = true;                       ///< false: opf track --no-fill
 };
 
-/// Throws std::invalid_argument (ValueError) naming the option of a bad value.
-LogReadOptions log_options_from(const LogArguments& arguments);
+/// The options for the log at `path`; throws std::invalid_argument (ValueError) naming the option
+/// of a bad value.
+LogReadOptions log_options_from(const LogArguments& arguments, const std::string& path);
 
 }  // namespace opf::python

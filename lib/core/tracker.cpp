@@ -3,6 +3,7 @@
 #include "opf/core/random.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,6 +15,12 @@ Tracker::Tracker(EstimatorFactory factory, std::uint64_t seed, std::size_t threa
 }
 
 const std::vector<Estimate>& Tracker::step(const Frame& frame) {
+  // A non-finite time would pass every later comparison as false and stop the tracker for good.
+  if (!std::isfinite(frame.t)) {
+    std::ostringstream msg;
+    msg << "Tracker: frame time " << frame.t << " s is not a finite number";
+    throw std::invalid_argument(msg.str());
+  }
   if (has_stepped_ && !(frame.t > last_t_)) {
     std::ostringstream msg;
     msg << "Tracker: frame time " << frame.t << " s does not follow the previous frame at "

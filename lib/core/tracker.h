@@ -26,8 +26,9 @@ class Tracker {
   /// `threads` >= 1 threads step the objects of a frame (1: all on the caller's thread).
   Tracker(EstimatorFactory factory, std::uint64_t seed, std::size_t threads = 1);
 
-  /// Steps every known object through `frame` (timestamps must increase) and returns one estimate
-  /// per object seen so far, in order of first appearance.
+  /// Steps every known object through `frame` (timestamps finite and increasing, else
+  /// std::invalid_argument and nothing changes) and returns one estimate per object seen so far,
+  /// in order of first appearance.
   const std::vector<Estimate>& step(const Frame& frame);
 
   const std::vector<Estimate>& estimates() const { return estimates_; }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -54,6 +55,21 @@ std::vector<std::string> split_whitespace(std::string_view text) {
     if (i > start) fields.emplace_back(text.substr(start, i - start));
   }
   return fields;
+}
+
+// A control byte (other than a tab) is no text a log holds: the file is binary, and quoting its
+// bytes in a message would write them to the terminal.
+void refuse_control_bytes(std::string_view line, const std::string& source, std::size_t number) {
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(line[i]);
+    if ((byte < 0x20 && byte != '\t') || byte == 0x7f) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", byte);
+      throw InputError(source, number, "",
+                       "not a text file: control byte " + std::string(hex) + " at byte " +
+                           std::to_string(i + 1) + " of the line");
+    }
+  }
 }
 
 std::string join_quoted(const std::vector<std::string>& names) {
@@ -227,6 +243,7 @@ bool Reader::read_line(std::vector<std::string>& fields) {
     std::string_view view = text;
     if (lines_read_ == 1 && view.starts_with(kUtf8Bom)) view.remove_prefix(kUtf8Bom.size());
     if (view.ends_with('\r')) view.remove_suffix(1);
+    refuse_control_bytes(view, source_, lines_read_);
     if (trim(view).empty()) continue;
     line_ = lines_read_;
     if (whitespace_separated_) {

@@ -20,7 +20,8 @@ __all__ = ["Estimate", "InputError", "Tracker", "estimators", "track_log", "__ve
 
 
 def track_log(path, estimator="opf", seed=1, particles=None, config=None, dataframe=True, *,
-              preset="default", camera=None, time_unit=None, length_unit=None, columns=None,
+              preset="default", camera=None, format=None, object=None, time_unit=None,
+              length_unit=None, columns=None,
               frame_tolerance=None, rate=None, fill=True, covariance=False):
     """Replays the measurement log at `path` through `estimator` and returns the columns of the
     estimate file `opf track` writes for the same log, options and seed (one row per object per
@@ -29,11 +30,14 @@ def track_log(path, estimator="opf", seed=1, particles=None, config=None, datafr
 
     The options are `opf track`'s of the same names, with the same defaults and checks:
     particles (None: the config's, else 5000), config (a settings file's path or a dict),
-    preset ("default" or "paper"), camera ([X, Y, Z] or "X,Y,Z", m), time_unit (s, ms, us, ns),
+    preset ("default" or "paper"), camera ([X, Y, Z] or "X,Y,Z", m), format ("csv" or "tum";
+    None: detected, a TUM trajectory being named after its file unless object names it),
+    object (the one object of a log without an object column), time_unit (s, ms, us, ns),
     length_unit (m, mm), columns ({"qx": "rx", ...} or "qx=rx,..."), frame_tolerance (s),
     rate (Hz), fill (False: --no-fill) and covariance (True: the 21 cov_* columns too)."""
     result = _track_log(os.fspath(path), estimator=estimator, seed=seed, particles=particles,
-                        config=config, preset=preset, camera=camera, time_unit=time_unit,
+                        config=config, preset=preset, camera=camera, format=format,
+                        object=object, time_unit=time_unit,
                         length_unit=length_unit, columns=columns,
                         frame_tolerance=frame_tolerance, rate=rate, fill=fill,
                         covariance=covariance)

@@ -84,5 +84,20 @@ TEST(Tracker, RejectsFramesThatDoNotAdvanceInTime) {
   EXPECT_THROW(tracker.step(frame(0.5, {{"a", 0.0}})), std::invalid_argument);
 }
 
+TEST(Tracker, RefusesANonFiniteTimeAndKeepsGoing) {
+  std::map<std::string, RecordingEstimator::Log> logs;
+  Tracker tracker(
+      [&](const std::string& object, std::uint64_t seed) {
+        return std::make_unique<RecordingEstimator>(seed, logs[object]);
+      },
+      1);
+  // Also as the first frame: taken, it would leave no later time accepted.
+  EXPECT_THROW(tracker.step(frame(std::nan(""), {{"a", 0.0}})), std::invalid_argument);
+  EXPECT_TRUE(tracker.estimates().empty());
+  EXPECT_EQ(tracker.step(frame(1.0, {{"a", 0.0}})).size(), 1u);
+  EXPECT_THROW(tracker.step(frame(HUGE_VAL, {{"a", 0.0}})), std::invalid_argument);
+  EXPECT_EQ(tracker.step(frame(2.0, {{"a", 0.0}})).size(), 1u);
+}
+
 }  // namespace
 }  // namespace opf

@@ -86,6 +86,32 @@ TEST(CsvReader, ReadsRowsWithLineNumbers) {
   EXPECT_FALSE(reader.next());
 }
 
+TEST(CsvReader, ABinaryFileIsRefusedWithoutEchoingItsBytes) {
+  std::istringstream header(
+      std::string("\x7f"
+                  "ELF\x02,\x01\n",
+                  8));
+  try {
+    Reader reader(header, "image.bin", kRequired);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 1u);
+    EXPECT_EQ(e.message(), "not a text file: control byte 0x7f at byte 1 of the line");
+  }
+  // In a row after a good header: the line and the byte's place; UTF-8 and tabs are text.
+  std::istringstream row(std::string("a,b,c\n1,\tcaf\xC3\xA9,3\n4,5\0,6\n", 24));
+  Reader reader(row, "f.csv", kRequired);
+  ASSERT_TRUE(reader.next());
+  EXPECT_EQ(reader.field(1), "caf\xC3\xA9");
+  try {
+    reader.next();
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.message(), "not a text file: control byte 0x00 at byte 4 of the line");
+  }
+}
+
 TEST(CsvReader, ReportsMissingAndDuplicateColumns) {
   std::istringstream missing("c,d\n");
   try {
