@@ -40,7 +40,8 @@ LogReadOptions log_options_from(const LogArguments& arguments, const std::string
   if (const auto& format = arguments.format) {
     const auto parsed = parse_log_format(*format);
     if (!parsed)
-      throw std::invalid_argument("option 'format': expected csv or tum, got \"" + *format + "\"");
+      throw std::invalid_argument("option 'format': expected csv, tum or mot, got \"" + *format +
+                                  "\"");
     options.format = *parsed;
   } else {
     options.format = detect_log_format(path);

@@ -5,7 +5,8 @@
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
-mapfile -t packages < <(grep -v '^\s*#' "$repo/scripts/packages.txt" | grep -v '^\s*$')
+mapfile -t packages < <(cat "$repo/scripts/packages-minimal.txt" "$repo/scripts/packages.txt" |
+  grep -v '^\s*#' | grep -v '^\s*$')
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
@@ -20,5 +21,7 @@ if ((${#missing[@]})); then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
-cmake --preset release -S "$repo" >/dev/null
+# Every optional part required: the tests, the benchmarks and the Python module.
+cmake --preset release -S "$repo" -DOPF_BUILD_TESTS=ON -DOPF_BUILD_BENCHMARKS=ON \
+  -DOPF_BUILD_PYTHON=ON >/dev/null
 cmake --build "$repo/build" -j 2

@@ -187,7 +187,8 @@ Reader::Reader(std::istream& in, std::string source, Headerless format)
     : in_(in),
       source_(std::move(source)),
       header_(std::move(format.columns)),
-      whitespace_separated_(true) {}
+      whitespace_separated_(format.whitespace_separated),
+      headerless_(true) {}
 
 std::size_t Reader::column(std::string_view name) const {
   const auto it = std::find(header_.begin(), header_.end(), name);
@@ -204,7 +205,10 @@ bool Reader::next() {
     fail("expected " + std::to_string(header_.size()) + " fields separated by spaces (" + names +
          "), got " + std::to_string(fields_.size()));
   }
-  if (fields_.size() != header_.size())
+  if (headerless_ && !whitespace_separated_ && fields_.size() < header_.size())
+    fail("expected at least " + std::to_string(header_.size()) + " fields, got " +
+         std::to_string(fields_.size()));
+  if (fields_.size() != header_.size() && !(headerless_ && !whitespace_separated_))
     fail("expected " + std::to_string(header_.size()) + " fields as in the header (line " +
          std::to_string(header_line_) + "), got " + std::to_string(fields_.size()));
   return true;

@@ -44,10 +44,12 @@ class Reader {
   /// missing (listing them all) or when one appears more than once.
   Reader(std::istream& in, std::string source, std::span<const std::string_view> required_columns);
 
-  /// A file of whitespace-separated fields with no header line, lines starting with '#' being
-  /// comments (the TUM trajectory format): `columns` names its fields, in order.
+  /// A file with no header line: `columns` names its first fields, in order. Whitespace-separated
+  /// with '#' comment lines (the TUM trajectory format), or comma-separated with further fields
+  /// allowed after the named ones (MOTChallenge's gt.txt and det.txt).
   struct Headerless {
     std::vector<std::string> columns;
+    bool whitespace_separated = true;
   };
   Reader(std::istream& in, std::string source, Headerless format);
 
@@ -65,6 +67,8 @@ class Reader {
   /// 1-based line number of the current row (of the header before the first next()).
   std::size_t line() const { return line_; }
   const std::string& field(std::size_t column) const { return fields_.at(column); }
+  /// The current row's number of fields (more than the header's in a Headerless comma file).
+  std::size_t fields() const { return fields_.size(); }
   /// The field as a finite number; throws InputError naming the column otherwise.
   double number(std::size_t column) const;
   /// The field as a number where nan and inf are legitimate values (as std::to_chars writes them).
@@ -86,7 +90,8 @@ class Reader {
   std::vector<std::string> fields_;
   std::size_t line_ = 0;
   std::size_t lines_read_ = 0;
-  bool whitespace_separated_ = false;  // and '#' comments: the Headerless format
+  bool whitespace_separated_ = false;  // and '#' comments
+  bool headerless_ = false;            // more fields than named are allowed when comma-separated
 };
 
 }  // namespace opf::csv

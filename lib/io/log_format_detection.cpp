@@ -1,10 +1,12 @@
 #include "opf/io/log_format_detection.h"
 
 #include "opf/io/csv.h"
+#include "opf/io/input_error.h"
 
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -17,6 +19,19 @@ bool eight_numbers(std::string_view line) {
   return count == kTumColumns.size();
 }
 
+// MOTChallenge: frame, id, box and more, separated by commas, all numbers.
+bool box_row(std::string_view line) {
+  std::vector<std::string> fields;
+  try {
+    fields = csv::split_line(line, "", 0);
+  } catch (const InputError&) {
+    return false;  // a stray quote: not a line of numbers
+  }
+  for (const std::string& field : fields)
+    if (!csv::parse_double(field)) return false;
+  return fields.size() >= kMotColumns.size();
+}
+
 }  // namespace
 
 LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line) {
@@ -25,6 +40,7 @@ LogFormat detect_log_format(const std::filesystem::path& name, std::string_view 
   const std::filesystem::path extension = name.extension();
   if (extension == ".tum") return LogFormat::kTum;
   if (extension == ".txt" && eight_numbers(first_line)) return LogFormat::kTum;
+  if (extension == ".txt" && box_row(first_line)) return LogFormat::kMot;
   return LogFormat::kCsv;
 }
 

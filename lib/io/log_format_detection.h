@@ -11,7 +11,8 @@ namespace opf {
 
 /// kTum when `first_line` (the file's first non-blank line) starts with '#', or when the file
 /// name ends in .tum, or in .txt with a first line of eight numbers separated by spaces or tabs;
-/// kCsv otherwise.
+/// kMot for a .txt whose first line is seven or more numbers separated by commas (gt.txt,
+/// det.txt); kCsv otherwise.
 LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line);
 
 /// The same for the file at `path`, its first line read; kCsv for what is not a regular file (a

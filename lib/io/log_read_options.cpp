@@ -44,6 +44,7 @@ std::optional<Unit> parse_unit(const std::array<UnitEntry<Unit>, N>& table, std:
 std::optional<LogFormat> parse_log_format(std::string_view name) {
   if (name == "csv") return LogFormat::kCsv;
   if (name == "tum") return LogFormat::kTum;
+  if (name == "mot") return LogFormat::kMot;
   return std::nullopt;
 }
 

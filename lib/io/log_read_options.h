@@ -18,11 +18,19 @@ inline constexpr std::array<std::string_view, 9> kLogColumns = {"t",  "object", 
 
 /// kCsv: the toolkit's CSV (a header naming kLogColumns). kTum: the TUM RGB-D trajectory format
 /// (evo, most SLAM systems): "timestamp tx ty tz qx qy qz qw" per line, separated by spaces or
-/// tabs, '#' starting a comment line; one object.
-enum class LogFormat { kCsv, kTum };
+/// tabs, '#' starting a comment line; one object. kMot: MOTChallenge's 2-D boxes
+/// (kMotColumns and more, no header; gt.txt, det.txt and trackers' results): each box becomes
+/// the pose of its bottom centre in the image plane (kMetresPerPixel), the track id its object.
+enum class LogFormat { kCsv, kTum, kMot };
 /// The fields of a kTum line, in order.
 inline constexpr std::array<std::string_view, 8> kTumColumns = {"timestamp", "tx", "ty", "tz",
                                                                 "qx",        "qy", "qz", "qw"};
+
+/// The first fields of a kMot line, in order.
+inline constexpr std::array<std::string_view, 7> kMotColumns = {
+    "frame", "id", "bb_left", "bb_top", "bb_width", "bb_height", "conf"};
+/// A MOTChallenge box's pixels as metres: 1 px is 1 mm, so image motion keeps plausible speeds.
+inline constexpr double kMetresPerPixel = 0.001;
 
 enum class TimeUnit { kSeconds, kMilliseconds, kMicroseconds, kNanoseconds };
 enum class LengthUnit { kMetres, kMillimetres };
@@ -48,6 +56,7 @@ struct LogReadOptions {
   /// Insert empty frames where the log has none for longer than 1.5 frame periods.
   bool fill_gaps = true;
   /// The frame rate (Hz) gaps are filled at. Unset: the median of the recent frame intervals.
+  /// Required for kMot, whose frame numbers it turns into times: t = (frame - 1) / rate.
   std::optional<double> rate;
 };
 
@@ -58,7 +67,7 @@ inline constexpr double kMaxPlausibleInterval = 10.0;
 /// Gaps longer than this (s) are not filled (reported instead): a clock jump, not a dropout.
 inline constexpr double kMaxFilledGap = 10.0;
 
-/// "csv", "tum": the names of --format.
+/// "csv", "tum", "mot": the names of --format.
 std::optional<LogFormat> parse_log_format(std::string_view name);
 
 /// "s", "ms", "us", "ns" and "m", "mm": the names the command line and the settings file use.

@@ -22,6 +22,7 @@ constexpr double kQuaternionNormTolerance = 0.01;
 // object column.
 std::array<std::string, 9> file_names(const LogReadOptions& options) {
   std::array<std::string, 9> names;
+  if (options.format == LogFormat::kMot) return names;  // kMotColumns, read by next_box()
   if (options.format == LogFormat::kTum) {
     names = {std::string(kTumColumns[0]), ""};
     for (std::size_t i = 1; i < kTumColumns.size(); ++i) names[i + 1] = kTumColumns[i];
@@ -35,6 +36,9 @@ std::array<std::string, 9> file_names(const LogReadOptions& options) {
 
 csv::Reader open_reader(std::istream& in, const std::string& source, const LogReadOptions& options,
                         const std::array<std::string, 9>& names) {
+  if (options.format == LogFormat::kMot)
+    return csv::Reader(in, source,
+                       csv::Reader::Headerless{{kMotColumns.begin(), kMotColumns.end()}, false});
   if (options.format == LogFormat::kTum)
     return csv::Reader(in, source,
                        csv::Reader::Headerless{{kTumColumns.begin(), kTumColumns.end()}});
@@ -53,6 +57,12 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
       object_(options.object.value_or("")),
       seconds_per_unit_(options.time_unit ? seconds_per(*options.time_unit) : 1.0),
       metres_per_unit_(options.length_unit ? metres_per(*options.length_unit) : 1.0) {
+  if (options.format == LogFormat::kMot) {
+    if (!options.rate)
+      throw std::invalid_argument("a MOTChallenge file needs its frame rate to time its frames");
+    box_frame_period_ = 1.0 / *options.rate;
+    return;
+  }
   if (names_[1].empty() && object_.empty())
     throw std::invalid_argument("a log without an object column needs the object's name");
   const std::string& object_column = mapped_column(options, "object");
@@ -66,7 +76,36 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
     if (!names_[i].empty()) column_[i] = reader_.column(names_[i]);
 }
 
+// gt.txt has nine fields, its seventh a flag (0: a box the benchmark ignores); a detector's or a
+// tracker's file has ten, the seventh a confidence. An id of -1 (det.txt) names no object.
+bool LogRowReader::next_box(LogRow& row) {
+  constexpr std::size_t kGroundTruthFields = 9;
+  do {
+    if (!reader_.next()) return false;
+  } while (reader_.fields() == kGroundTruthFields && reader_.number(6) == 0.0);
+  row.line = reader_.line();
+  const double frame = reader_.number(0);
+  if (frame < 1.0 || frame != std::floor(frame))
+    reader_.fail(0, "expected a frame number (1, 2, ...), got \"" + reader_.field(0) + "\"");
+  row.t = (frame - 1.0) * box_frame_period_;
+  const double id = reader_.number(1);
+  if (id < 0.0)
+    reader_.fail(1, "no track id (" + reader_.field(1) +
+                        "): the tracker needs each box's object, as gt.txt and trackers' "
+                        "results give it; det.txt's boxes need associating first");
+  row.object = reader_.field(1);
+  const double left = reader_.number(2), top = reader_.number(3);
+  const double width = reader_.number(4), height = reader_.number(5);
+  if (!(width > 0.0)) reader_.fail(4, "expected a width > 0, got " + reader_.field(4));
+  if (!(height > 0.0)) reader_.fail(5, "expected a height > 0, got " + reader_.field(5));
+  // The bottom centre: where a pedestrian stands, as the real-motion benchmark converts boxes.
+  const Eigen::Vector3d foot(left + width / 2, top + height, 0.0);
+  row.pose = make_pose(foot * kMetresPerPixel, Eigen::Quaterniond::Identity());
+  return true;
+}
+
 bool LogRowReader::next(LogRow& row) {
+  if (box_frame_period_ > 0.0) return next_box(row);
   if (!reader_.next()) return false;
   row.line = reader_.line();
   row.t = reader_.number(column_[0]) * seconds_per_unit_;

@@ -38,9 +38,12 @@ class LogRowReader {
   const std::string& source() const { return reader_.source(); }
 
  private:
+  bool next_box(LogRow& row);
+
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
   csv::Reader reader_;
-  std::string object_;  // every row's object when the file has no object column
+  std::string object_;             // every row's object when the file has no object column
+  double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge file (> 0)
   std::array<std::size_t, 9> column_{};
   double seconds_per_unit_ = 1.0;
   double metres_per_unit_ = 1.0;

@@ -97,6 +97,32 @@ TEST_F(OpfProgram, EvaluateComparesATumLogWithATumTruthOfAnotherName) {
   EXPECT_NE(out().find("1 objects"), std::string::npos) << out();
 }
 
+TEST_F(OpfProgram, AMotChallengeFileTracksItsIdsAtItsSequencesFrameRate) {
+  // The MOTChallenge layout: MOT17-02/seqinfo.ini beside MOT17-02/gt/gt.txt.
+  fs::create_directories(dir_ / "MOT17-02" / "gt");
+  std::ofstream(dir_ / "MOT17-02" / "seqinfo.ini") << "[Sequence]\nname=MOT17-02\nframeRate=30\n";
+  {
+    std::ofstream gt(dir_ / "MOT17-02" / "gt" / "gt.txt");
+    for (int frame = 1; frame <= 40; ++frame)
+      if (frame < 15 || frame > 25) gt << frame << ",7," << 100 + 2 * frame << ",200,40,80,1,1,1\n";
+  }
+  const std::string gt = (dir_ / "MOT17-02" / "gt" / "gt.txt").string();
+  const std::string est = (dir_ / "est.csv").string();
+  ASSERT_EQ(run("track --in " + gt + " --out " + est + " --estimator cvkf --quiet"), 0) << err();
+  const std::vector<EstimateRecord> rows = read_estimate_csv(est);
+  ASSERT_EQ(rows.size(), 40u);  // 29 boxes and the 11 frames of the gap, filled
+  EXPECT_EQ(rows.front().object, "7");
+  EXPECT_NEAR(rows.back().t, 39.0 / 30.0, 1e-9);
+  // Boxes moving 2 px per frame at constant velocity: through the gap within a millimetre.
+  EXPECT_NEAR(rows[20].pose.x(), (100 + 2 * 21 + 20) * 1e-3, 1e-3);
+  // Without a seqinfo.ini the frame rate must be given; ids name the objects, not --object.
+  fs::remove(dir_ / "MOT17-02" / "seqinfo.ini");
+  EXPECT_EQ(run("track --in " + gt + " --out " + est), 2);
+  EXPECT_NE(err().find("need the frame rate: --rate HZ"), std::string::npos) << err();
+  EXPECT_EQ(run("track --in " + gt + " --out " + est + " --rate 30 --quiet"), 0) << err();
+  EXPECT_EQ(run("track --in " + gt + " --out " + est + " --rate 30 --object p"), 2);
+}
+
 TEST_F(OpfProgram, ALogThatWouldBeReadWrongIsRefusedOrWarnedAbout) {
   EXPECT_EQ(run("track --in " + kExampleLog + " --out x.csv --columns object=t"), 2);
   EXPECT_NE(err().find("'object=t' reads object from the column that t reads too"),

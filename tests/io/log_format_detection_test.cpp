@@ -16,6 +16,11 @@ TEST(TumLog, IsDetectedByItsFirstLineOrName) {
   EXPECT_EQ(detect_log_format("a.txt", "1 2 3 4 5 6 7"), LogFormat::kCsv);
   EXPECT_EQ(detect_log_format("a.txt", "t,object,x,y,z,qx,qy,qz,qw"), LogFormat::kCsv);
   EXPECT_EQ(detect_log_format("a.csv", "1 2 3 4 5 6 7 8"), LogFormat::kCsv);
+  // MOTChallenge: a .txt of seven or more comma-separated numbers (gt.txt, det.txt).
+  EXPECT_EQ(detect_log_format("gt.txt", "1,7,100,200,40,80,1,1,0.9"), LogFormat::kMot);
+  EXPECT_EQ(detect_log_format("det.txt", "1,-1,100,200,40,80,0.7,-1,-1,-1"), LogFormat::kMot);
+  EXPECT_EQ(detect_log_format("a.txt", "1,2,3,4,5,6"), LogFormat::kCsv);
+  EXPECT_EQ(detect_log_format("a.txt", "1,\"2,3,4,5,6,7"), LogFormat::kCsv);
   // Standard input, or what does not exist, cannot be looked at: CSV.
   EXPECT_EQ(detect_log_format("/nonexistent/a.tum"), LogFormat::kCsv);
 }

@@ -68,6 +68,47 @@ TEST(TumLog, ErrorsNameTheFileLineAndField) {
   EXPECT_NE(e.message().find("unit quaternion"), std::string::npos) << e.what();
 }
 
+LogReadOptions boxes(double rate) {
+  LogReadOptions options;
+  options.format = LogFormat::kMot;
+  options.rate = rate;
+  return options;
+}
+
+TEST(MotLog, BoxesBecomeTheirBottomCentresTimedByFrameNumber) {
+  // gt.txt: frame, id, left, top, width, height, flag, class, visibility; flag 0 is not scored.
+  const MeasurementLog log = parse(
+      "1,7,100,200,40,80,1,1,0.9\n"
+      "1,8,500,200,40,80,0,7,1.0\n"
+      "2,7,104,200,40,80,1,1,0.8\n",
+      boxes(25.0));
+  ASSERT_EQ(log.objects, std::vector<std::string>{"7"});
+  ASSERT_EQ(log.frames.size(), 2u);
+  EXPECT_DOUBLE_EQ(log.frames[1].t, 0.04);  // (2 - 1) / 25 Hz
+  const mrpt::poses::CPose3D& foot = log.frames[1].find("7")->pose;
+  EXPECT_DOUBLE_EQ(foot.x(), 0.124);  // (104 + 40 / 2) px at 1 mm per px
+  EXPECT_DOUBLE_EQ(foot.y(), 0.280);  // 200 + 80: the bottom edge
+  EXPECT_DOUBLE_EQ(foot.z(), 0.0);
+  // A tracker's results (ten fields, a confidence in the seventh) keep every row.
+  EXPECT_EQ(parse("1,3,10,20,4,8,0.2,-1,-1,-1\n", boxes(30.0)).objects,
+            std::vector<std::string>{"3"});
+}
+
+TEST(MotLog, BoxesWithoutAnIdOrASizeAreRefusedByField) {
+  InputError e = parse_error("1,-1,10,20,4,8,0.9,-1,-1,-1\n", boxes(30.0));  // det.txt
+  EXPECT_EQ(e.field(), "id");
+  EXPECT_NE(e.message().find("det.txt's boxes need associating first"), std::string::npos);
+  e = parse_error("1,2,10,20,0,8,0.9,-1,-1,-1\n", boxes(30.0));
+  EXPECT_EQ(e.field(), "bb_width");
+  e = parse_error("0,2,10,20,4,8,0.9,-1,-1,-1\n", boxes(30.0));
+  EXPECT_EQ(e.field(), "frame");
+  e = parse_error("1,2,10,20,4,8\n", boxes(30.0));
+  EXPECT_NE(e.message().find("expected at least 7 fields, got 6"), std::string::npos);
+  LogReadOptions no_rate = boxes(30.0);
+  no_rate.rate.reset();
+  EXPECT_THROW(parse("1,2,10,20,4,8,1,1,1\n", no_rate), std::invalid_argument);
+}
+
 TEST(OneObjectLog, ACsvWithoutAnObjectColumnTakesTheGivenName) {
   LogReadOptions options;
   options.object = "cup";
