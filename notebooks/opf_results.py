@@ -8,6 +8,7 @@ module). A result file that is not there is skipped with a note naming it and th
 makes it: the `*_or_skip` functions return None after showing that note.
 """
 
+import csv
 import json
 import math
 import os
@@ -78,19 +79,30 @@ METRIC_LABELS = {
     "translation_error_unobserved": "translation error while hidden [m]",
 }
 
-# Two-sided 95% Student t quantiles by degrees of freedom (no scipy on a bare Debian).
-_T95 = {1: 12.706, 2: 4.303, 3: 3.182, 4: 2.776, 5: 2.571, 6: 2.447, 7: 2.365, 8: 2.306,
-        9: 2.262, 10: 2.228, 15: 2.131, 20: 2.086, 30: 2.042}
+def mean_std(values):
+    """The mean, the sample standard deviation (ddof=1: one std over the seeds, NaN for one value)
+    and the number of finite values."""
+    values = np.asarray([v for v in values if v is not None and math.isfinite(v)], dtype=float)
+    if len(values) == 0:
+        return float("nan"), float("nan"), 0
+    std = float(values.std(ddof=1)) if len(values) > 1 else float("nan")
+    return float(values.mean()), std, len(values)
 
 
-def t95(dof):
-    """The 95% two-sided t quantile for `dof` degrees of freedom (1.96 beyond 30)."""
-    if dof < 1:
-        return float("nan")
-    for bound in sorted(_T95):
-        if dof <= bound:
-            return _T95[bound]
-    return 1.96
+def seeds_text(counts):
+    """"5 seeds", or "2-5 seeds" when the groups ran different numbers."""
+    counts = sorted({int(c) for c in counts})
+    if not counts:
+        return "no seeds"
+    span = str(counts[0]) if len(counts) == 1 else f"{counts[0]}-{counts[-1]}"
+    return f"{span} seed{'' if counts == [1] else 's'}"
+
+
+def geometric_mean(values):
+    """The geometric mean of the finite positive values (NaN when there is none)."""
+    values = np.asarray(values, dtype=float)
+    values = values[np.isfinite(values) & (values > 0)]
+    return float(np.exp(np.log(values).mean())) if len(values) else float("nan")
 
 
 def directory_from_env(variable, default):
@@ -116,11 +128,10 @@ class Skipped:
         self.what, self.path, self.command = what, path, command
 
     def _repr_markdown_(self):
-        return (f"**Skipped {self.what}:** `{self.path}` is not there. "
-                f"Make it with `{self.command}`.")
+        return f"**Skipped {self.what}:** `{self.command}` makes `{self.path}`, not there yet."
 
     def __repr__(self):
-        return f"skipped {self.what}: {self.path} is not there; make it with: {self.command}"
+        return f"skipped {self.what}: {self.command} makes {self.path}, not there yet"
 
 
 def skip(what, path, command):
@@ -210,7 +221,7 @@ def load_runs(results, experiment):
 
 def load_frames(results, experiment):
     """`<experiment>_frames.csv` with each row's translation and geodesic rotation error."""
-    frames = pd.read_csv(os.path.join(results, experiment + "_frames.csv"))
+    frames = pd.read_csv(os.path.join(results, experiment + "_frames.csv"), low_memory=False)
     frames["translation_error"] = (
         (frames.x - frames.true_x) ** 2 + (frames.y - frames.true_y) ** 2
         + (frames.z - frames.true_z) ** 2) ** 0.5
@@ -234,7 +245,7 @@ def epsilon_safe(results, experiment):
 
 
 def table_one(results, experiments=("general_op", "sugar_drop")):
-    """Our Table I (mean and std over seeds of the errors of the object of interest) with the
+    """Our Table I (mean and sample std over seeds of the errors of the object of interest) with the
     paper's numbers beside it, for the experiments whose runs CSV is in `results`."""
     rows = []
     for experiment in experiments:
@@ -243,12 +254,12 @@ def table_one(results, experiments=("general_op", "sugar_drop")):
             continue
         runs = load_runs(results, experiment)
         for estimator, group in runs.groupby("estimator", sort=False):
+            translation = mean_std(group.translation_error)
+            rotation = mean_std(group.rotation_error_paper)
             rows.append({
                 "experiment": experiment, "estimator": estimator, "seeds": len(group),
-                "translation_mean": group.translation_error.mean(),
-                "translation_std": group.translation_error.std(ddof=0),
-                "rotation_mean": group.rotation_error_paper.mean(),
-                "rotation_std": group.rotation_error_paper.std(ddof=0),
+                "translation_mean": translation[0], "translation_std": translation[1],
+                "rotation_mean": rotation[0], "rotation_std": rotation[1],
             })
     ours = pd.DataFrame(rows)
     if ours.empty:
@@ -425,23 +436,20 @@ def load_sweep(table):
 
 
 def summarise(rows, by, metric="translation_error"):
-    """Mean, std, seeds and the 95% confidence half-width of the mean of `metric`, per group."""
+    """Mean, sample std (ddof=1) and number of seeds of `metric`, per group."""
     grouped = rows.groupby(list(by), sort=False)[metric]
-    summary = grouped.agg(["mean", "std", "count"]).reset_index()
-    summary["ci95"] = [t95(n - 1) * s / math.sqrt(n) if n > 1 else float("nan")
-                       for s, n in zip(summary["std"], summary["count"])]
-    return summary
+    return grouped.agg(mean="mean", std=lambda v: v.std(ddof=1), count="count").reset_index()
 
 
 def plot_sweep(rows, parameter, metric, ax, series="estimator", log_x=False):
     """`metric` against `parameter` (a column of the sweep table), one line per `series` value,
-    with 95% confidence intervals over seeds (clipped at zero for errors)."""
+    with error bars of one sample std over seeds (the axis clipped at zero for errors)."""
     summary = summarise(rows, [series, parameter], metric)
     names = list(summary[series].unique())
     for name in drawing_order(names):
         group = summary[summary[series] == name]
         x = group[parameter] if log_x else group[parameter].astype(str)  # one step per value
-        ax.errorbar(x, group["mean"], yerr=group["ci95"], capsize=3, elinewidth=1.2,
+        ax.errorbar(x, group["mean"], yerr=group["std"], capsize=3, elinewidth=1.2,
                     label=str(name),
                     **(estimator_style(name, with_marker=True) or dict(marker="o")))
     handles, labels = ax.get_legend_handles_labels()
@@ -473,3 +481,115 @@ def load_benchmark(path, prefix="BM_EstimatorStep/"):
         rows.append({"estimator": estimator, "particles": int(n.split(":")[1]),
                      "step_us": b["real_time"] * scale})
     return pd.DataFrame(rows), report.get("context", {})
+
+
+# ---------------------------------------------------------------------------------------------
+# Recorded motion: the real-motion benchmark, its dynamics ablation and the hand scenes
+# (experiments/real_motion, run by scripts/run_main.sh).
+
+
+def _real_motion_script(name):
+    """experiments/real_motion/<name>.py as a module (its own summaries, not copies of them)."""
+    import importlib.util
+    path = os.path.join(REPO, "experiments", "real_motion", name + ".py")
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def real_motion_seeds(directory):
+    """The seeds per run of the real-motion benchmark, as its summary.md states them (None when
+    it is not there)."""
+    import re
+    try:
+        with open(os.path.join(directory, "summary.md")) as f:
+            found = re.search(r"(\d+) seed\(s\)", f.read())
+    except OSError:
+        return None
+    return int(found.group(1)) if found else None
+
+
+def load_real_motion(directory):
+    """The real-motion benchmark in `directory`: (summary, rows). `summary` holds one dict per
+    estimator and preset, as run_benchmark.py summarises results.csv and profile.csv (ratios over
+    cvkf, calibration pooled over the hidden frames); `rows` the rows of results.csv."""
+    bench = _real_motion_script("run_benchmark")
+    with open(os.path.join(directory, "results.csv"), newline="") as f:
+        rows = [{k: bench.number(v) if k in bench.METRICS else v for k, v in r.items()}
+                for r in csv.DictReader(f)]
+    with open(os.path.join(directory, "profile.csv"), newline="") as f:
+        bins = [dict(r, frames=int(r["frames"])) for r in csv.DictReader(f)]
+    return bench.summarise(rows, bins), rows
+
+
+def hidden_ratios(rows, entry=("opf", "default"), reference=("cvkf", "default")):
+    """Per log of the real-motion benchmark: ((sequence, rate, gap), the hidden translation error
+    of `entry` (estimator, preset) over that of `reference`)."""
+    by_log = {}
+    for r in rows:
+        by_log.setdefault((r["sequence"], r["rate"], r["gap"]), {})[
+            (r["estimator"], r["preset"])] = r["hidden_translation"]
+    return [(log, runs[entry] / runs[reference]) for log, runs in by_log.items()
+            if entry in runs and runs.get(reference, 0) > 0]
+
+
+def dynamics_ablation_summary(rows):
+    """The dynamics ablation (ablation.csv) per variant: the OPF's hidden translation and rotation
+    errors over cvkf's, geometric mean over the logs, overall and per kind of motion."""
+    variants = list(dict.fromkeys(rows.variant))
+    kinds = sorted(rows.kind.unique())
+
+    def ratio(variant, column, kind=None):
+        mine = rows[(rows.variant == variant) & ((rows.kind == kind) if kind else True)]
+        return geometric_mean(mine[column])
+
+    table = pd.DataFrame({
+        "translation / cvkf": [ratio(v, "hidden_translation_over_cvkf") for v in variants],
+        "rotation / cvkf": [ratio(v, "hidden_rotation_over_cvkf") for v in variants],
+        **{kind: [ratio(v, "hidden_translation_over_cvkf", kind) for v in variants]
+           for kind in kinds}}, index=variants)
+    table.attrs["logs"] = rows[rows.variant == variants[0]].shape[0] if variants else 0
+    return table
+
+
+def ablation_seeds(ablation, benchmark_rows, benchmark_seeds):
+    """The seeds of the dynamics ablation, which ablation.csv does not record: the benchmark's,
+    when the ablation's full bank (the OPF's default settings) gives the benchmark's OPF errors
+    log for log; else None."""
+    if benchmark_seeds is None:
+        return None
+    ours = {_log_key(r["sequence"], r["rate"], r["gap"]): r["hidden_translation"]
+            for r in benchmark_rows if (r["estimator"], r["preset"]) == ("opf", "default")}
+    full = ablation[ablation.variant == "full bank"]
+    same = [math.isclose(r.hidden_translation,
+                         ours.get(_log_key(r.sequence, r.rate, r.gap), math.nan), rel_tol=1e-4)
+            for r in full.itertuples()]
+    return benchmark_seeds if same and all(same) else None
+
+
+def _log_key(sequence, rate, gap):
+    """A log of the real-motion benchmark, alike whether its gap was read as text or number."""
+    try:
+        gap = f"{float(gap):g}"
+    except ValueError:
+        gap = str(gap)
+    return str(sequence), str(rate), gap
+
+
+def load_hand_scenes(directory):
+    """hand_scenes.csv with, per scene and estimator, the sample std of the hidden translation
+    error over the seeds and their number (from each scene's runs CSV of `opf run`)."""
+    table = pd.read_csv(os.path.join(directory, "hand_scenes.csv"))
+    spreads = []
+    for r in table.itertuples():
+        scene = f"{r.recording}_{r.scene}"
+        path = os.path.join(directory, scene, scene + "_runs.csv")
+        runs = pd.read_csv(path) if os.path.exists(path) else None
+        values = [] if runs is None else \
+            runs[runs.estimator == r.estimator].translation_error_unobserved
+        _, std, n = mean_std(values)
+        spreads.append((std, n))
+    table["hidden_translation_std"] = [s for s, _ in spreads]
+    table["seeds"] = [n for _, n in spreads]
+    return table

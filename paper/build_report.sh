@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Builds the reproduction report: generates its tables and figures from result files
 # (paper/make_report.py), then the PDF with latexmk (IEEEtran, Debian's TeX Live).
-#   bash paper/build_report.sh [OUT]          # from results/, results/sweeps/ and the benchmark
-#                                             # report; OUT defaults to results/report
-# OPF_RESULTS, OPF_SWEEPS and OPF_BENCH override the inputs (the tests point them at the small
-# result sets of scripts/make_small_results.sh). Writes OUT/report.pdf.
+#   bash paper/build_report.sh [OUT]          # from results/ (with its real_motion/,
+#                                             # dynamics_ablation/, hand_scenes/ and twin_mugs/),
+#                                             # results/sweeps/ and the benchmark report; OUT
+#                                             # defaults to results/report
+# OPF_RESULTS, OPF_SWEEPS, OPF_DYNAMICS_ABLATION and OPF_BENCH override the inputs (the tests point
+# them at the small result sets of scripts/make_small_results.sh). A section whose results are
+# not there is left out, and a last paragraph names the command that makes it. Writes
+# OUT/report.pdf.
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="${1:-$repo/results/report}"

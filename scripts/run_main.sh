@@ -8,9 +8,11 @@
 # module's ablation on it (each motion model removed in turn, about two minutes) into
 # results/dynamics_ablation/; the hand scenes (a hand on recorded human motion carries a cube or
 # passes over it, and two such hands play the cups game, every estimator, 5 seeds, about 75 s)
-# into results/hand_scenes/; last, the
+# into results/hand_scenes/; then the
 # notebooks executed against these results into results/notebooks/ (.ipynb and .html; about
-# 30 s; the sweeps, not run here, are skipped there with the command that runs them).
+# 30 s; the sweeps, not run here, are skipped there with the command that runs them); last, the
+# reproduction report from these results, results/report/report.pdf (paper/build_report.sh;
+# what has not run, such as the sweeps, is left out of it with the command that makes it).
 # Extra arguments go to `opf reproduce` (see `build/bin/opf reproduce --help`).
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -35,3 +37,5 @@ echo
   --opf "$repo/build/bin/opf"
 echo
 bash "$repo/notebooks/run_notebooks.sh" "$repo/results/notebooks"
+echo
+bash "$repo/paper/build_report.sh" "$repo/results/report"
