@@ -221,6 +221,15 @@ def fmt(value):
     return f"{value:.6g}" if isinstance(value, float) else value
 
 
+def percent(share, bounds=(0.85, 0.98)):
+    """A share as a percentage: whole percent, or two decimals where rounding would put a share
+    outside the calibration bounds onto one of them (84.98% is not 85%)."""
+    text = f"{100 * share:.0f}%"
+    if math.isfinite(share) and any(round(100 * share) == round(100 * b) and share != b for b in bounds):
+        text = f"{100 * share:.2f}%"
+    return text
+
+
 def geometric_mean(values):
     values = [v for v in values if v > 0 and math.isfinite(v)]
     return math.exp(sum(map(math.log, values)) / len(values)) if values else math.nan
@@ -299,8 +308,8 @@ def markdown(summary, rows, args):
         lines.append(f"| {s['estimator']} | {s['preset']} | {s['rows']} | "
                      f"{s['hidden_ratio']:.3f} | {worst} | "
                      f"{100 * s['best_share']:.0f}% | {s['rotation_ratio']:.3f} | "
-                     f"{s['nees_translation']:.3g} | {100 * s['inside95_translation']:.0f}% | "
-                     f"{s['nees_rotation']:.3g} | {100 * s['inside95_rotation']:.0f}% |")
+                     f"{s['nees_translation']:.3g} | {percent(s['inside95_translation'])} | "
+                     f"{s['nees_rotation']:.3g} | {percent(s['inside95_rotation'])} |")
     lines += ["", "## Every log", "",
               "Hidden translation error [m] (NEES/3 of the position in brackets).", ""]
     entries = [(s["estimator"], s["preset"]) for s in summary]

@@ -38,3 +38,10 @@ def test_calibration_is_weighed_by_hidden_frames():
     assert summary["opf"]["inside95_translation"] == pytest.approx(0.6)
     # Nothing to score (a pedestrian's rotation): NaN, not zero.
     assert math.isnan(summary["opf"]["nees_rotation"])
+
+
+def test_a_share_just_outside_the_calibration_bounds_is_not_rounded_onto_them():
+    assert bench.percent(0.8498) == "84.98%"
+    assert bench.percent(0.9804) == "98.04%"
+    assert bench.percent(0.85) == "85%" and bench.percent(0.93) == "93%"
+    assert bench.percent(math.nan) == "nan%"
