@@ -57,8 +57,14 @@ void translate_input_error(std::exception_ptr error) {
   try {
     if (error) std::rethrow_exception(error);
   } catch (const opf::InputError& e) {
+    // The message, and where it points as attributes: file, line (0: none), field ("" : none).
     const py::object type = py::module_::import("opf._opf").attr("InputError");
-    PyErr_SetObject(type.ptr(), readable(e.what()).ptr());
+    const py::object instance = type(readable(e.what()));
+    instance.attr("file") = readable(e.file());
+    instance.attr("line") = e.line();
+    instance.attr("field") = readable(e.field());
+    instance.attr("reason") = readable(e.message());
+    PyErr_SetObject(type.ptr(), instance.ptr());
   }
 }
 

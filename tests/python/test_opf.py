@@ -395,6 +395,17 @@ def test_a_binary_file_is_refused_in_opf_tracks_words(tmp_path):
     assert (stderr.decode("ascii"), status) == (f"opf track: error: {message}\n", 1)
 
 
+def test_an_input_error_says_where_as_attributes(tmp_path):
+    log = tmp_path / "log.csv"
+    log.write_text("t,object,x,y,z,qx,qy,qz,qw\n0,cup,0.1,0.2,0.3,0,0,0,1\n0.1,cup,0.1,high,0.3,0,0,0,1\n")
+    with pytest.raises(opf.InputError) as error:
+        opf.track_log(log)
+    e = error.value
+    assert (e.file, e.line, e.field) == (str(log), 3, "y")
+    assert e.reason == 'expected a number, got "high"'
+    assert str(e) == f"{log}:3: column 'y': {e.reason}"
+
+
 def test_track_log_gives_a_dataframe_when_pandas_is_there():
     pandas = pytest.importorskip("pandas")
     frame = opf.track_log(EXAMPLE_LOG, estimator="cvkf", seed=1)
