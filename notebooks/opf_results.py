@@ -41,10 +41,10 @@ PAPER_TABLE_I = pd.DataFrame(
 OBJECT_OF_INTEREST = {"general_op": "ball", "sugar_drop": "mug", "baseball": "baseball",
                       "cups_game": "ball", "twin_mugs": "ball"}
 
-# How each estimator is drawn, the same as the PNG charts of `opf run`/`reproduce`
-# (style_of in experiments/drivers/figures.cpp): the paper's colours (OPF red, PF blue; the other
-# baselines green, purple and orange) and a line style of its own, so that curves on the same values and
-# grey print still tell them apart. Wider lines are drawn first, narrower ones on top of them.
+# How each estimator is drawn, the same as the charts of `opf run`/`reproduce`
+# (experiments/drivers/estimator_style.cpp): the paper's colours (OPF red, PF blue; the other
+# baselines green, purple and orange), a line style and a marker of its own, so that curves on the same
+# values and grey print still tell them apart. Wider lines are drawn first, narrower ones on top of them.
 # This is the one definition for the notebooks (and paper/make_report.py, which draws with
 # plot_sweep and figure_three).
 ESTIMATOR_COLOURS = {"opf": "#dc1e1e", "pf": "#1e3cdc", "cvkf": "#1ea03c", "imm": "#8c3cc8",
@@ -234,8 +234,9 @@ def epsilon_safe(results, experiment):
 
 
 def table_one(results, experiments=("general_op", "sugar_drop")):
-    """Our Table I (mean and std over seeds of the errors of the object of interest) with the
-    paper's numbers beside it, for the experiments whose runs CSV is in `results`."""
+    """Our Table I (mean and sample std, n - 1, over seeds of the errors of the object of interest,
+    as summary.json has them) with the paper's numbers beside it, for the experiments whose runs
+    CSV is in `results`."""
     rows = []
     for experiment in experiments:
         path = os.path.join(results, experiment + "_runs.csv")
@@ -246,9 +247,9 @@ def table_one(results, experiments=("general_op", "sugar_drop")):
             rows.append({
                 "experiment": experiment, "estimator": estimator, "seeds": len(group),
                 "translation_mean": group.translation_error.mean(),
-                "translation_std": group.translation_error.std(ddof=0),
+                "translation_std": group.translation_error.std(ddof=1),
                 "rotation_mean": group.rotation_error_paper.mean(),
-                "rotation_std": group.rotation_error_paper.std(ddof=0),
+                "rotation_std": group.rotation_error_paper.std(ddof=1),
             })
     ours = pd.DataFrame(rows)
     if ours.empty:

@@ -106,8 +106,8 @@ def baselines(out, results):
              r"\midrule"]
     for experiment, estimator, g in rows:
         lines.append(f"{tex_escape(experiment)} & {estimator.upper()} & "
-                     f"{pm(g.translation_error.mean(), g.translation_error.std(ddof=0))} & "
-                     f"{pm(g.rotation_error_geodesic.mean(), g.rotation_error_geodesic.std(ddof=0))} & "
+                     f"{pm(g.translation_error.mean(), g.translation_error.std(ddof=1))} & "
+                     f"{pm(g.rotation_error_geodesic.mean(), g.rotation_error_geodesic.std(ddof=1))} & "
                      f"{number(g.translation_error_unobserved.mean())} \\\\")
     lines += [r"\bottomrule", r"\end{tabular}"]
     write(out, "baselines.tex", "\n".join(lines) + "\n")
