@@ -42,10 +42,11 @@ PAPER_TABLE_I = pd.DataFrame(
 OBJECT_OF_INTEREST = {"general_op": "ball", "sugar_drop": "mug", "baseball": "baseball",
                       "cups_game": "ball", "twin_mugs": "ball"}
 
-# How each estimator is drawn, the same as the PNG charts of `opf run`/`reproduce`
-# (style_of in experiments/drivers/figures.cpp): the paper's colours (OPF red, PF blue; the other
-# baselines green, purple and orange) and a line style of its own, so that curves on the same values and
-# grey print still tell them apart. Wider lines are drawn first, narrower ones on top of them.
+# How each estimator is drawn, the same as the charts of `opf run`/`reproduce`
+# (experiments/drivers/estimator_style.cpp): the paper's colours (OPF red, PF blue; the other
+# baselines green, purple and orange), a line style and a marker of its own, so that curves on the
+# same values and grey print still tell them apart. Wider lines are drawn first, narrower ones on
+# top of them.
 # This is the one definition for the notebooks (and paper/make_report.py, which draws with
 # plot_sweep and figure_three).
 ESTIMATOR_COLOURS = {"opf": "#dc1e1e", "pf": "#1e3cdc", "cvkf": "#1ea03c", "imm": "#8c3cc8",

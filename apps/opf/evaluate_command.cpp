@@ -55,15 +55,15 @@ std::vector<OptionSpec> specs() {
 
 constexpr const char* kSummary =
     "Replays a measurement log through each estimator over N seeds and prints, per estimator,\n"
-    "the mean +- std over seeds of the per-run mean errors against the ground truth: translation\n"
-    "(m), rotation as the paper's Euler-angle difference and as the geodesic angle (rad), and\n"
-    "translation over the frames the object was unobserved. A second table splits the errors\n"
-    "into unobserved (hidden) and measured (visible) frames and reports how honest the position\n"
-    "covariance was while hidden: the share of hidden frames within 2 sqrt(trace) of it\n"
-    "(coverage) and the median error / sqrt(trace). A third table gives the calibration by the\n"
-    "normalised estimation error squared (NEES / 3 and the share inside the 95% ellipsoid, of\n"
-    "position and orientation), reacquisition after gaps and the alert's precision and recall\n"
-    "(definitions: docs/metrics.md).";
+    "the mean +- sample std (n - 1) over seeds of the per-run mean errors against the ground\n"
+    "truth: translation (m), rotation as the paper's Euler-angle difference and as the geodesic\n"
+    "angle (rad), and translation over the frames the object was unobserved. A second table\n"
+    "splits the errors into unobserved (hidden) and measured (visible) frames and reports how\n"
+    "honest the position covariance was while hidden: the share of hidden frames within\n"
+    "2 sqrt(trace) of it (coverage) and the median error / sqrt(trace). A third table gives the\n"
+    "calibration by the normalised estimation error squared (NEES / 3 and the share inside the\n"
+    "95% ellipsoid, of position and orientation), reacquisition after gaps and the alert's\n"
+    "precision and recall (definitions: docs/metrics.md).";
 
 /// The ground truth by object, in time order, matched to a frame by the nearest time within the
 /// log's frame tolerance (a log's frames are at the mean time of their rows).
@@ -349,6 +349,8 @@ int evaluate_command(const std::vector<std::string>& raw) {
   std::printf("opf evaluate: %s, %zu frames, %zu objects, %zu seeds, %zu + %zu particles\n\n",
               in.c_str(), log.frames.size(), log.objects.size(), seeds,
               settings.pf.translation_particles, settings.pf.rotation_particles);
+  std::printf("errors against the truth, each run's mean over frames (mean +- std over %zu %s)\n",
+              seeds, seeds == 1 ? "seed" : "seeds");
   std::printf("%-10s %-22s %-22s %-22s %-22s\n", "estimator", "translation [m]",
               "rotation paper [rad]", "rotation geodesic", "transl. unobserved [m]");
   std::vector<Row> rows;

@@ -109,7 +109,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     experiments::write_runs_csv(out / (results.experiment + "_runs.csv"), results);
   experiments::print_results_table(std::cout, all);
   std::cout << "\nper-frame and per-run results, summary.json and " << figures.size()
-            << " figures written to " << out.string() << "\n";
+            << " figure files (PNG, SVG) written to " << out.string() << "\n";
   return 0;
 }
 

@@ -1,7 +1,10 @@
 #include "drivers/figures.h"
 
+#include "drivers/coinciding_series.h"
+#include "drivers/estimator_style.h"
 #include "drivers/line_chart.h"
 #include "drivers/observe_experiment.h"
+#include "drivers/svg_line_chart.h"
 #include "opf/core/metrics.h"
 #include "opf/core/pose_conversion.h"
 #include "opf/io/csv.h"
@@ -21,39 +24,33 @@
 namespace opf::experiments {
 namespace {
 
-/// How an estimator is drawn in every figure: the paper's colours (OPF red, PF blue; the other
-/// baselines green, purple and orange), and a line style and marker of its own so that curves on
-/// the same values, grey print and colour-blind readers still tell them apart. The notebooks and
-/// the report use the same colours (notebooks/opf_results.py, paper/make_report.py).
-struct EstimatorStyle {
-  std::array<std::uint8_t, 3> rgb;
-  LineStyle line;
-  int width;
-  int marker;  ///< cv::MarkerTypes, in the snapshot
-};
-
-EstimatorStyle style_of(const std::string& estimator) {
-  static const std::map<std::string, EstimatorStyle> styles = {
-      {"opf", {{220, 30, 30}, LineStyle::kSolid, 2, cv::MARKER_DIAMOND}},
-      {"pf", {{30, 60, 220}, LineStyle::kDashed, 4, cv::MARKER_SQUARE}},
-      {"cvkf", {{30, 160, 60}, LineStyle::kDashDot, 2, cv::MARKER_TRIANGLE_UP}},
-      {"imm", {{140, 60, 200}, LineStyle::kDashed, 2, cv::MARKER_TRIANGLE_DOWN}},
-      {"oapf", {{240, 140, 0}, LineStyle::kDotted, 3, cv::MARKER_TILTED_CROSS}}};
-  const auto it = styles.find(estimator);
-  return it == styles.end() ? EstimatorStyle{{90, 90, 90}, LineStyle::kSolid, 1, cv::MARKER_CROSS}
-                            : it->second;
+/// The snapshot's marker of an estimator: OpenCV's marker of the same shape as in the charts.
+int snapshot_marker(Marker marker) {
+  switch (marker) {
+    case Marker::kDiamond:
+      return cv::MARKER_DIAMOND;
+    case Marker::kSquare:
+      return cv::MARKER_SQUARE;
+    case Marker::kTriangleUp:
+      return cv::MARKER_TRIANGLE_UP;
+    case Marker::kTriangleDown:
+      return cv::MARKER_TRIANGLE_DOWN;
+    case Marker::kCross:
+      return cv::MARKER_TILTED_CROSS;
+    case Marker::kCircle:
+    case Marker::kNone:
+      break;
+  }
+  return cv::MARKER_STAR;
 }
 
-ChartSeries series_of(const std::string& label, const std::string& estimator) {
-  const EstimatorStyle style = style_of(estimator);
-  ChartSeries series;
-  series.label = label;
-  series.r = style.rgb[0];
-  series.g = style.rgb[1];
-  series.b = style.rgb[2];
-  series.style = style.line;
-  series.width = style.width;
-  return series;
+/// Writes the chart as `<stem>.png` and `<stem>.svg` into `dir`, both paths appended to `written`.
+void write_chart(const std::filesystem::path& dir, const std::string& stem, const LineChart& chart,
+                 std::vector<std::filesystem::path>& written) {
+  written.push_back(dir / (stem + ".png"));
+  write_line_chart(written.back(), chart);
+  written.push_back(dir / (stem + ".svg"));
+  write_svg_line_chart(written.back(), chart);
 }
 
 // A hypothesis by what it says: "left", or "carried by mug_a".
@@ -120,7 +117,7 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
                                           const std::string& object, const std::string& estimator) {
   ChartSeries truth{"truth", {}, {}, 0, 0, 0};
   truth.width = 4;
-  ChartSeries main = series_of("main", estimator);
+  ChartSeries main = estimator_series("main", estimator);
   std::map<std::string, HypothesisTrack> tracks;  // by name
   std::set<int> hidden_frames;                    // the object's
   bool several = false;
@@ -173,7 +170,127 @@ LineChart time_chart(const std::string& title, const std::string& y_label, bool 
   return chart;
 }
 
+// The intervals the object was hidden in, from the measurements (the same for every estimator):
+// each frame's interval reaches halfway to its neighbours.
+std::vector<ChartBand> hidden_bands(const ExperimentResults& results, const std::string& object) {
+  std::vector<std::pair<double, bool>> frames;  // t, visible
+  for (const FrameRecord& record : results.records)
+    if (record.seed_index == results.first_seed && record.estimate.object == object &&
+        record.estimate.hypothesis == 0 && record.estimator == results.estimators.front())
+      frames.emplace_back(record.estimate.t, record.visible);
+  std::vector<ChartBand> bands;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    if (frames[i].second) continue;
+    const double from = i > 0 ? 0.5 * (frames[i - 1].first + frames[i].first) : frames[i].first;
+    const double to =
+        i + 1 < frames.size() ? 0.5 * (frames[i].first + frames[i + 1].first) : frames[i].first;
+    if (!bands.empty() && bands.back().to >= from)
+      bands.back().to = to;
+    else
+      bands.push_back({from, to});
+  }
+  return bands;
+}
+
+// Per object of interest: translation error, rotation error and trace(Q~) over time, a series per
+// estimator in figure order, each one's markers a step further along their spacing than the
+// previous one's so that lines on the same values show every estimator.
+void write_time_charts(const std::filesystem::path& dir, const sim::ExperimentConfig& config,
+                       const ExperimentResults& results, const std::string& object,
+                       double epsilon_safe, std::vector<std::filesystem::path>& written) {
+  const std::size_t seed = results.first_seed;
+  LineChart translation =
+      time_chart(figure_title(config.name, object, "translation error", seed), "error [m]", false);
+  LineChart rotation = time_chart(
+      figure_title(config.name, object, "rotation error (geodesic)", seed), "error [rad]", false);
+  LineChart trace = time_chart(figure_title(config.name, object, "uncertainty trace(Q~)", seed),
+                               "trace(Q~) [m^2 + rad^2]", true);
+  trace.references.push_back({epsilon_safe, "alert (" + csv::format_double(epsilon_safe) + ")"});
+  translation.bands = hidden_bands(results, object);
+  rotation.bands = trace.bands = translation.bands;
+  const std::vector<std::string> estimators = in_figure_order(results.estimators);
+  for (std::size_t k = 0; k < estimators.size(); ++k) {
+    const std::string& estimator = estimators[k];
+    const double phase = static_cast<double>(k) / static_cast<double>(estimators.size());
+    ChartSeries t = estimator_series(estimator, estimator, phase), q = t, u = t;
+    for (const FrameRecord& record : results.records) {
+      if (record.seed_index != seed || record.estimator != estimator ||
+          record.estimate.object != object || record.estimate.hypothesis != 0)
+        continue;
+      const auto truth = make_pose(record.truth.position, record.truth.orientation);
+      const double time = record.estimate.t;
+      t.x.push_back(time);
+      t.y.push_back(translation_error(record.estimate.pose.mean, truth));
+      q.x.push_back(time);
+      q.y.push_back(rotation_error_geodesic(record.estimate.pose.mean, truth));
+      u.x.push_back(time);
+      u.y.push_back(record.estimate.observation_trace);
+    }
+    translation.series.push_back(std::move(t));
+    rotation.series.push_back(std::move(q));
+    trace.series.push_back(std::move(u));
+  }
+  for (auto [chart, name] : {std::pair{&translation, "translation_error"},
+                             std::pair{&rotation, "rotation_error"}, std::pair{&trace, "trace"}}) {
+    merge_coinciding_series(chart->series);
+    write_chart(dir, config.name + "_" + object + "_" + name, *chart, written);
+  }
+}
+
+// The snapshot: the rendered frame with each estimator's estimate of the objects of interest (its
+// marker, as in the charts) and the truth (black cross).
+void write_snapshot(const std::filesystem::path& dir, const sim::ExperimentConfig& config,
+                    const Observation& observation, const ExperimentResults& results,
+                    std::vector<std::filesystem::path>& written) {
+  cv::Mat image = observation.snapshot_bgr.clone();
+  const sim::CameraModel camera = camera_of(config);
+  const int k = observation.snapshot_frame;
+  int legend_y = 20;
+  // Each estimate as its estimator's marker, ringed in white and black so that it stands out on
+  // a body of its own colour.
+  const auto draw_estimate = [&](cv::Point2d at, const EstimatorStyle& style) {
+    const cv::Scalar colour(style.rgb[2], style.rgb[1], style.rgb[0]);
+    const int marker = snapshot_marker(style.marker);
+    cv::drawMarker(image, at, cv::Scalar(0, 0, 0), marker, 19, 6, cv::LINE_AA);
+    cv::drawMarker(image, at, cv::Scalar(255, 255, 255), marker, 17, 4, cv::LINE_AA);
+    cv::drawMarker(image, at, colour, marker, 15, 2, cv::LINE_AA);
+  };
+  for (const std::string& estimator : in_figure_order(results.estimators)) {
+    const EstimatorStyle style = estimator_style(estimator);
+    for (const FrameRecord& record : results.records) {
+      if (record.frame != k || record.seed_index != results.first_seed ||
+          record.estimator != estimator)
+        continue;
+      if (std::find(config.objects_of_interest.begin(), config.objects_of_interest.end(),
+                    record.estimate.object) == config.objects_of_interest.end())
+        continue;
+      const auto pixel = camera.project(translation_of(record.estimate.pose.mean));
+      if (pixel) draw_estimate(cv::Point2d(pixel->x(), pixel->y()), style);
+      const auto truth = camera.project(record.truth.position);
+      if (truth)
+        cv::drawMarker(image, cv::Point2d(truth->x(), truth->y()), cv::Scalar(0, 0, 0),
+                       cv::MARKER_CROSS, 16, 2);
+    }
+    draw_estimate(cv::Point2d(15, legend_y - 4), style);
+    cv::putText(image, estimator, {30, legend_y}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
+                cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+    legend_y += 20;
+  }
+  cv::putText(image, config.name + ", frame " + std::to_string(k) + " (x: truth)",
+              {10, image.rows - 12}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(255, 255, 255), 1,
+              cv::LINE_AA);
+  written.push_back(dir / (config.name + "_snapshot.png"));
+  if (!cv::imwrite(written.back().string(), image))
+    throw std::runtime_error("cannot write the figure " + written.back().string());
+}
+
 }  // namespace
+
+std::string figure_title(const std::string& experiment, const std::string& object,
+                         const std::string& what, std::size_t seed) {
+  const std::string subject = object == experiment ? experiment : experiment + ": " + object;
+  return subject + ", " + what + " (seed " + std::to_string(seed) + ")";
+}
 
 std::vector<std::filesystem::path> write_figures(const std::filesystem::path& dir,
                                                  const sim::ExperimentConfig& config,
@@ -181,114 +298,18 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
                                                  const ExperimentResults& results,
                                                  double epsilon_safe) {
   std::vector<std::filesystem::path> written;
-  // The seed as the per-frame CSV's seed column names it.
-  const std::string seed = " (seed " + std::to_string(results.first_seed) + ")";
-  for (const std::string& object : config.objects_of_interest) {
-    LineChart translation =
-        time_chart(config.name + ": " + object + ", translation error" + seed, "error [m]", false);
-    LineChart rotation = time_chart(
-        config.name + ": " + object + ", rotation error (geodesic)" + seed, "error [rad]", false);
-    LineChart trace = time_chart(config.name + ": " + object + ", uncertainty trace(Q~)" + seed,
-                                 "trace(Q~) [m^2 + rad^2]", true);
-    trace.references.push_back({epsilon_safe, "alert (" + csv::format_double(epsilon_safe) + ")"});
-    // Hidden frames, from the measurements (the same for every estimator): each frame's interval
-    // reaches halfway to its neighbours.
-    std::vector<std::pair<double, bool>> frames;  // t, visible
-    for (const FrameRecord& record : results.records)
-      if (record.seed_index == results.first_seed && record.estimate.object == object &&
-          record.estimate.hypothesis == 0 && record.estimator == results.estimators.front())
-        frames.emplace_back(record.estimate.t, record.visible);
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-      if (frames[i].second) continue;
-      const double from = i > 0 ? 0.5 * (frames[i - 1].first + frames[i].first) : frames[i].first;
-      const double to =
-          i + 1 < frames.size() ? 0.5 * (frames[i].first + frames[i + 1].first) : frames[i].first;
-      if (!translation.bands.empty() && translation.bands.back().to >= from)
-        translation.bands.back().to = to;
-      else
-        translation.bands.push_back({from, to});
-    }
-    rotation.bands = trace.bands = translation.bands;
-    for (const std::string& estimator : results.estimators) {
-      ChartSeries t = series_of(estimator, estimator), q = t, u = t;
-      for (const FrameRecord& record : results.records) {
-        if (record.seed_index != results.first_seed || record.estimator != estimator ||
-            record.estimate.object != object || record.estimate.hypothesis != 0)
-          continue;
-        const auto truth = make_pose(record.truth.position, record.truth.orientation);
-        const double time = record.estimate.t;
-        t.x.push_back(time);
-        t.y.push_back(translation_error(record.estimate.pose.mean, truth));
-        q.x.push_back(time);
-        q.y.push_back(rotation_error_geodesic(record.estimate.pose.mean, truth));
-        u.x.push_back(time);
-        u.y.push_back(record.estimate.observation_trace);
-      }
-      translation.series.push_back(std::move(t));
-      rotation.series.push_back(std::move(q));
-      trace.series.push_back(std::move(u));
-    }
-    for (auto [chart, name] :
-         {std::pair{&translation, "translation_error"}, std::pair{&rotation, "rotation_error"},
-          std::pair{&trace, "trace"}}) {
-      written.push_back(dir / (config.name + "_" + object + "_" + name + ".png"));
-      write_line_chart(written.back(), *chart);
-    }
-  }
-
+  for (const std::string& object : config.objects_of_interest)
+    write_time_charts(dir, config, results, object, epsilon_safe, written);
   // Where an estimator kept more than one hypothesis: a top view of each one's track.
   for (const std::string& object : config.objects_of_interest)
-    for (const std::string& estimator : results.estimators) {
+    for (const std::string& estimator : in_figure_order(results.estimators)) {
       std::optional<LineChart> top = hypotheses_chart(results, object, estimator);
       if (!top) continue;
-      top->title = config.name + ": " + object + ", " + estimator + " hypotheses, top view" + seed;
-      written.push_back(dir / (config.name + "_" + object + "_" + estimator + "_hypotheses.png"));
-      write_line_chart(written.back(), *top);
+      top->title = figure_title(config.name, object, estimator + " hypotheses, top view",
+                                results.first_seed);
+      write_chart(dir, config.name + "_" + object + "_" + estimator + "_hypotheses", *top, written);
     }
-
-  // The snapshot: the rendered frame with each estimator's estimate of the objects of interest
-  // (filled circles) and the truth (black cross).
-  if (!observation.snapshot_bgr.empty()) {
-    cv::Mat image = observation.snapshot_bgr.clone();
-    const sim::CameraModel camera = camera_of(config);
-    const int k = observation.snapshot_frame;
-    int legend_y = 20;
-    // Each estimate as its estimator's marker, ringed in white and black so that it stands out
-    // on a body of its own colour.
-    const auto draw_estimate = [&](cv::Point2d at, const EstimatorStyle& style) {
-      const cv::Scalar colour(style.rgb[2], style.rgb[1], style.rgb[0]);
-      cv::drawMarker(image, at, cv::Scalar(0, 0, 0), style.marker, 19, 6, cv::LINE_AA);
-      cv::drawMarker(image, at, cv::Scalar(255, 255, 255), style.marker, 17, 4, cv::LINE_AA);
-      cv::drawMarker(image, at, colour, style.marker, 15, 2, cv::LINE_AA);
-    };
-    for (const std::string& estimator : results.estimators) {
-      const EstimatorStyle style = style_of(estimator);
-      for (const FrameRecord& record : results.records) {
-        if (record.frame != k || record.seed_index != results.first_seed ||
-            record.estimator != estimator)
-          continue;
-        if (std::find(config.objects_of_interest.begin(), config.objects_of_interest.end(),
-                      record.estimate.object) == config.objects_of_interest.end())
-          continue;
-        const auto pixel = camera.project(translation_of(record.estimate.pose.mean));
-        if (pixel) draw_estimate(cv::Point2d(pixel->x(), pixel->y()), style);
-        const auto truth = camera.project(record.truth.position);
-        if (truth)
-          cv::drawMarker(image, cv::Point2d(truth->x(), truth->y()), cv::Scalar(0, 0, 0),
-                         cv::MARKER_CROSS, 16, 2);
-      }
-      draw_estimate(cv::Point2d(15, legend_y - 4), style);
-      cv::putText(image, estimator, {30, legend_y}, cv::FONT_HERSHEY_SIMPLEX, 0.5,
-                  cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
-      legend_y += 20;
-    }
-    cv::putText(image, config.name + ", frame " + std::to_string(k) + " (x: truth)",
-                {10, image.rows - 12}, cv::FONT_HERSHEY_SIMPLEX, 0.5, cv::Scalar(255, 255, 255), 1,
-                cv::LINE_AA);
-    written.push_back(dir / (config.name + "_snapshot.png"));
-    if (!cv::imwrite(written.back().string(), image))
-      throw std::runtime_error("cannot write the figure " + written.back().string());
-  }
+  if (!observation.snapshot_bgr.empty()) write_snapshot(dir, config, observation, results, written);
   return written;
 }
 

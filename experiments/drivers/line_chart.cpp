@@ -1,13 +1,15 @@
 #include "drivers/line_chart.h"
 
+#include "drivers/chart_layout.h"
+#include "drivers/png_resolution.h"
+#include "opf/io/atomic_file.h"
+
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdio>
-#include <limits>
-#include <numeric>
 #include <stdexcept>
 
 namespace opf {
@@ -15,10 +17,27 @@ namespace {
 
 constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
 const cv::Scalar kBlack(0, 0, 0);
+const cv::Scalar kWhite(255, 255, 255);
+const cv::Scalar kBandGrey(228, 228, 228);
+const cv::Scalar kGrid(215, 215, 215);
 
-/// Text where "~" after a character draws a tilde above that character.
-void draw_text(cv::Mat& image, const std::string& text, cv::Point origin, double scale,
-               int thickness = 1) {
+/// The image being drawn: positions and sizes come in layout px and are drawn times `scale`.
+struct Canvas {
+  cv::Mat image;
+  double scale = 1.0;
+
+  cv::Point2d at(double x, double y) const { return {x * scale, y * scale}; }
+  int thickness(double layout_px) const {
+    return std::max(1, static_cast<int>(std::lround(layout_px * scale)));
+  }
+};
+
+cv::Scalar colour_of(const ChartSeries& s) {
+  return {double(s.b), double(s.g), double(s.r)};
+}
+
+/// Text at baseline (x, y), where "~" after a character draws a tilde above that character.
+void draw_text(Canvas& canvas, const std::string& text, double x, double y, double font) {
   std::string plain;
   std::vector<std::size_t> marked;  // indices in `plain` of characters with a tilde
   for (const char c : text) {
@@ -27,7 +46,10 @@ void draw_text(cv::Mat& image, const std::string& text, cv::Point origin, double
     else
       plain += c;
   }
-  cv::putText(image, plain, origin, kFont, scale, kBlack, thickness, cv::LINE_AA);
+  const double scale = font * canvas.scale;
+  const int thickness = canvas.thickness(1.0);
+  const cv::Point origin = canvas.at(x, y);
+  cv::putText(canvas.image, plain, origin, kFont, scale, kBlack, thickness, cv::LINE_AA);
   int baseline = 0;
   for (const std::size_t i : marked) {
     const int before =
@@ -41,27 +63,11 @@ void draw_text(cv::Mat& image, const std::string& text, cv::Point origin, double
       wave.emplace_back(int(std::lround(origin.x + before + 1 + u * (glyph.width - 2))),
                         int(std::lround(top - 2.5 * scale * std::sin(2.0 * M_PI * u))));
     }
-    cv::polylines(image, wave, false, kBlack, 1, cv::LINE_AA);
+    cv::polylines(canvas.image, wave, false, kBlack, thickness, cv::LINE_AA);
   }
 }
 
-/// On/off lengths (px) of a style's pattern; empty for solid.
-std::vector<double> dash_pattern(LineStyle style, int width) {
-  const double w = std::max(1, width);
-  switch (style) {
-    case LineStyle::kDashed:
-      return {6.0 * w, 3.5 * w};
-    case LineStyle::kDotted:
-      return {0.8 * w, 2.2 * w};
-    case LineStyle::kDashDot:
-      return {6.0 * w, 2.5 * w, 0.8 * w, 2.5 * w};
-    case LineStyle::kSolid:
-      break;
-  }
-  return {};
-}
-
-/// A polyline drawn in the style's pattern, the pattern running on across its vertices.
+/// A polyline (image px) drawn in the style's pattern, the pattern running on across its vertices.
 void draw_styled(cv::Mat& image, const std::vector<cv::Point2d>& points, const cv::Scalar& colour,
                  int width, LineStyle style) {
   const std::vector<double> pattern = dash_pattern(style, width);
@@ -91,185 +97,169 @@ void draw_styled(cv::Mat& image, const std::vector<cv::Point2d>& points, const c
   }
 }
 
-std::string decimal_text(double v, double step) {
-  // Enough decimals to tell ticks `step` apart, no exponent unless the numbers are tiny or huge.
-  char buffer[32];
-  const double magnitude = std::max(std::abs(v), std::abs(step));
-  if (magnitude != 0.0 && (magnitude < 1e-4 || magnitude >= 1e6)) {
-    std::snprintf(buffer, sizeof buffer, "%.0e", v);
-  } else {
-    const int decimals = std::clamp(int(std::ceil(-std::log10(step) - 1e-9)), 0, 6);
-    std::snprintf(buffer, sizeof buffer, "%.*f", decimals, std::abs(v) < step * 1e-9 ? 0.0 : v);
-  }
-  return buffer;
+/// A polygon in layout px around (x, y), filled and outlined, with subpixel vertices.
+void draw_polygon(Canvas& canvas, const std::vector<std::array<double, 2>>& outline, double x,
+                  double y, const cv::Scalar& fill, const cv::Scalar& edge) {
+  constexpr int kShift = 4;  // vertices in 1/16 px
+  std::vector<cv::Point> points;
+  for (const auto& [dx, dy] : outline)
+    points.emplace_back(int(std::lround((x + dx) * canvas.scale * 16.0)),
+                        int(std::lround((y + dy) * canvas.scale * 16.0)));
+  cv::fillPoly(canvas.image, std::vector<std::vector<cv::Point>>{points}, fill, cv::LINE_AA,
+               kShift);
+  cv::polylines(canvas.image, points, true, edge, canvas.thickness(0.5), cv::LINE_AA, kShift);
 }
 
-}  // namespace
-
-std::vector<double> nice_ticks(double low, double high, int count) {
-  if (!(high > low) || count < 1) return {low};
-  const double raw = (high - low) / count;
-  const double power = std::pow(10.0, std::floor(std::log10(raw)));
-  double step = power;
-  for (const double m : {1.0, 2.0, 5.0, 10.0})
-    if (m * power >= raw) {
-      step = m * power;
-      break;
-    }
-  std::vector<double> ticks;
-  for (double k = std::ceil(low / step - 1e-9); k * step <= high + step * 1e-9; k += 1.0)
-    ticks.push_back(k * step);
-  return ticks;
+/// A marker centred on (x, y) in layout px: filled in the colour with a white edge, so that
+/// markers on top of each other keep their outlines; a cross as two strokes.
+void draw_marker(Canvas& canvas, Marker marker, double x, double y, const cv::Scalar& colour) {
+  const double size = ChartLayout::kMarkerSize, h = 0.5 * size;
+  if (marker == Marker::kCircle) {
+    const cv::Point centre = canvas.at(x, y);
+    const int radius = static_cast<int>(std::lround(0.85 * h * canvas.scale));
+    cv::circle(canvas.image, centre, radius, colour, cv::FILLED, cv::LINE_AA);
+    cv::circle(canvas.image, centre, radius, kWhite, canvas.thickness(0.5), cv::LINE_AA);
+  } else if (marker == Marker::kCross) {
+    for (const double s : {-1.0, 1.0})
+      cv::line(canvas.image, canvas.at(x - h, y - s * h), canvas.at(x + h, y + s * h), colour,
+               canvas.thickness(2.0), cv::LINE_AA);
+  } else if (marker != Marker::kNone) {
+    draw_polygon(canvas, marker_polygon(marker, size), x, y, colour, kWhite);
+  }
 }
 
-void write_line_chart(const std::filesystem::path& path, const LineChart& chart) {
-  // The legend's column: its swatch (40 px) and its longest label, at least 175 px.
-  int legend_width = 0, legend_baseline = 0;
-  for (const ChartSeries& series : chart.series)
-    legend_width = std::max(legend_width,
-                            cv::getTextSize(series.label, kFont, 0.45, 1, &legend_baseline).width);
-  const int left = 80, right = std::max(175, 12 + 40 + legend_width + 10), top = 58, bottom = 55;
-  cv::Mat image(chart.height, chart.width, CV_8UC3, cv::Scalar(255, 255, 255));
-  const cv::Rect plot(left, top, chart.width - left - right, chart.height - top - bottom);
+/// The upward triangle that marks a value above the clip, its tip at the clip's line.
+void draw_clip_mark(Canvas& canvas, double x, double y, const cv::Scalar& colour) {
+  draw_polygon(canvas, {{0.0, 0.5}, {4.5, 9.0}, {-4.5, 9.0}}, x, y, colour, kBlack);
+}
 
-  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
-  const auto value = [&](double y) { return chart.log_y ? std::log10(y) : y; };
-  const auto include_y = [&](double v) {
-    if (!std::isfinite(v)) return;
-    y0 = std::min(y0, v);
-    y1 = std::max(y1, v);
-  };
-  for (const ChartSeries& s : chart.series) {
-    if (s.x.size() != s.y.size())
-      throw std::invalid_argument("line chart '" + chart.title + "': series '" + s.label +
-                                  "' has x and y of different lengths");
-    for (std::size_t i = 0; i < s.x.size(); ++i) {
-      if (!std::isfinite(value(s.y[i])) || !std::isfinite(s.x[i])) continue;
-      x0 = std::min(x0, s.x[i]);
-      x1 = std::max(x1, s.x[i]);
-      include_y(value(s.y[i]));
-    }
-  }
-  for (const ChartReference& r : chart.references) include_y(value(r.y));
-  if (!std::isfinite(x0)) x0 = 0.0, x1 = 1.0;
-  if (!(x1 > x0)) x1 = x0 + 1.0;
-  if (!std::isfinite(y0)) y0 = 0.0, y1 = 1.0;
-  std::vector<double> y_ticks;  // in the plotted value (log10 for a log axis)
-  if (chart.log_y) {
-    // Whole decades, so every tick is a round number; 2 and 5 within them when there are few.
-    y0 = std::floor(y0);
-    y1 = std::max(std::ceil(y1), y0 + 1.0);
-    for (double d = y0; d <= y1 + 1e-9; d += 1.0) {
-      y_ticks.push_back(d);
-      if (y1 - y0 <= 2.0 && d < y1)
-        for (const double m : {2.0, 5.0}) y_ticks.push_back(d + std::log10(m));
-    }
-  } else {
-    y0 = std::min(y0, 0.0);
-    if (!(y1 > y0)) y1 = y0 + 1.0;
-    y_ticks = nice_ticks(y0, y1, 5);
-    const double step = y_ticks.size() > 1 ? y_ticks[1] - y_ticks[0] : 1.0;
-    if (y_ticks.back() < y1) y_ticks.push_back(y_ticks.back() + step);
-    y1 = y_ticks.back();
-  }
-  const std::vector<double> x_ticks = nice_ticks(x0, x1, 6);
-  const auto px = [&](double x) { return plot.x + (x - x0) / (x1 - x0) * plot.width; };
-  const auto py = [&](double v) {
-    return plot.y + plot.height - (v - y0) / (y1 - y0) * plot.height;
-  };
-
-  const cv::Scalar band_grey(228, 228, 228), grid(210, 210, 210);
+/// Shaded bands, grid lines with their ticks' text, and the reference lines.
+void draw_axes(Canvas& canvas, const LineChart& chart, const ChartLayout& l) {
+  const double top = l.plot_top, bottom = l.plot_top + l.plot_height;
+  const double left = l.plot_left, right = l.plot_left + l.plot_width;
   for (const ChartBand& band : chart.bands) {
-    const double a = std::clamp(px(band.from), double(plot.x), double(plot.x + plot.width));
-    const double b = std::clamp(px(band.to), double(plot.x), double(plot.x + plot.width));
-    if (b > a)
-      cv::rectangle(image, cv::Point2d(a, plot.y), cv::Point2d(b, plot.y + plot.height), band_grey,
-                    cv::FILLED);
+    const double a = std::clamp(l.px(band.from), left, right);
+    const double b = std::clamp(l.px(band.to), left, right);
+    if (b > a) cv::rectangle(canvas.image, canvas.at(a, top), canvas.at(b, bottom), kBandGrey, -1);
   }
-  const double y_step = y_ticks.size() > 1 ? y_ticks[1] - y_ticks[0] : 1.0;
-  for (const double v : y_ticks) {
-    const int y = int(std::lround(py(v)));
-    cv::line(image, {plot.x, y}, {plot.x + plot.width, y}, grid, 1);
-    const std::string text =
-        chart.log_y ? decimal_text(std::pow(10.0, v), std::pow(10.0, v)) : decimal_text(v, y_step);
-    int baseline = 0;
-    const int w = cv::getTextSize(text, kFont, 0.4, 1, &baseline).width;
-    cv::putText(image, text, {plot.x - 6 - w, y + 4}, kFont, 0.4, kBlack, 1, cv::LINE_AA);
+  const double y_step = l.y.ticks.size() > 1 ? l.y.ticks[1] - l.y.ticks[0] : 1.0;
+  for (const double v : l.y.ticks) {
+    const double y = l.py(v);
+    cv::line(canvas.image, canvas.at(left, y), canvas.at(right, y), kGrid, canvas.thickness(1.0));
+    const std::string text = tick_text(v, y_step, chart.log_y);
+    draw_text(canvas, text, left - 7.0 - text_width(text, kTickFont), y + 5.0, kTickFont);
   }
-  const double x_step = x_ticks.size() > 1 ? x_ticks[1] - x_ticks[0] : 1.0;
-  for (const double xv : x_ticks) {
-    const int x = int(std::lround(px(xv)));
-    cv::line(image, {x, plot.y}, {x, plot.y + plot.height}, grid, 1);
-    const std::string text = decimal_text(xv, x_step);
-    int baseline = 0;
-    const int w = cv::getTextSize(text, kFont, 0.4, 1, &baseline).width;
-    cv::putText(image, text, {x - w / 2, plot.y + plot.height + 18}, kFont, 0.4, kBlack, 1,
-                cv::LINE_AA);
+  const double x_step = l.x.ticks.size() > 1 ? l.x.ticks[1] - l.x.ticks[0] : 1.0;
+  for (const double v : l.x.ticks) {
+    const double x = l.px(v);
+    cv::line(canvas.image, canvas.at(x, top), canvas.at(x, bottom), kGrid, canvas.thickness(1.0));
+    const std::string text = tick_text(v, x_step, false);
+    draw_text(canvas, text, x - 0.5 * text_width(text, kTickFont), bottom + 20.0, kTickFont);
   }
   for (const ChartReference& r : chart.references) {
-    const double y = py(value(r.y));
-    draw_styled(image, {cv::Point2d(plot.x, y), cv::Point2d(plot.x + plot.width, y)}, kBlack, 1,
-                LineStyle::kDashed);
+    const double y = l.py(plotted_y(chart, r.y));
+    draw_styled(canvas.image, {canvas.at(left, y), canvas.at(right, y)}, kBlack,
+                canvas.thickness(1.2), LineStyle::kDashed);
   }
+}
 
-  // Wider series first, so that narrower ones on the same values stay visible inside them.
-  std::vector<std::size_t> order(chart.series.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return chart.series[a].width > chart.series[b].width;
-  });
-  // Drawn on a copy of which only the plot goes back: the lines are clipped to the plot.
-  cv::Mat canvas = image.clone();
+/// The lines in draw order, then every series' markers and clip marks on top of all lines.
+void draw_series(Canvas& canvas, const LineChart& chart, const ChartLayout& l) {
+  const std::vector<std::size_t> order = draw_order(chart);
   for (const std::size_t k : order) {
     const ChartSeries& s = chart.series[k];
-    const cv::Scalar colour(s.b, s.g, s.r);
     std::vector<cv::Point2d> run;
     const auto flush = [&] {
-      if (run.size() > 1) draw_styled(canvas, run, colour, s.width, s.style);
+      if (run.size() > 1)
+        draw_styled(canvas.image, run, colour_of(s), canvas.thickness(s.width), s.style);
       run.clear();
     };
     for (std::size_t i = 0; i < s.x.size(); ++i) {
-      const double v = value(s.y[i]);
+      const double v = plotted_y(chart, s.y[i]);
       if (!std::isfinite(v) || !std::isfinite(s.x[i])) {
         flush();
         continue;
       }
-      run.emplace_back(px(s.x[i]), py(v));
+      run.push_back(canvas.at(l.px(s.x[i]), l.py(v)));
     }
     flush();
   }
-  canvas(plot).copyTo(image(plot));
-  cv::rectangle(image, plot, kBlack, 1);
+  const double clip_y = chart.clip ? l.py(plotted_y(chart, chart.clip->above)) : 0.0;
+  for (const std::size_t k : order) {
+    const ChartSeries& s = chart.series[k];
+    for (const std::size_t i : marker_points(s)) {
+      const double v = plotted_y(chart, s.y[i]);
+      if (std::isfinite(v) && !(chart.clip && s.y[i] > chart.clip->above))
+        draw_marker(canvas, s.marker, l.px(s.x[i]), l.py(v), colour_of(s));
+    }
+    if (chart.clip)
+      for (const std::size_t i : clipped_points(s, chart.clip->above))
+        draw_clip_mark(canvas, l.px(s.x[i]), clip_y, colour_of(s));
+  }
+}
 
-  draw_text(image, chart.title, {left, 26}, 0.6);
-  draw_text(image, chart.y_label, {8, plot.y - 10}, 0.45);
-  int baseline = 0;
-  const int x_label_width = cv::getTextSize(chart.x_label, kFont, 0.45, 1, &baseline).width;
-  draw_text(image, chart.x_label, {plot.x + (plot.width - x_label_width) / 2, chart.height - 12},
-            0.45);
+void draw_legend(Canvas& canvas, const LineChart& chart, const ChartLayout& l) {
+  using Kind = LegendEntry::Kind;
+  const double x = l.legend_left, w = ChartLayout::kSwatch;
+  double y = l.legend_top;
+  for (const LegendEntry& e : legend_entries(chart)) {
+    const double mid = y - 5.0;
+    if (e.kind == Kind::kSeries) {
+      const ChartSeries& own = chart.series[e.series.front()];
+      draw_styled(canvas.image, {canvas.at(x, mid), canvas.at(x + w, mid)}, colour_of(own),
+                  canvas.thickness(own.width), own.style);
+      for (std::size_t j = 0; j < e.series.size(); ++j) {
+        const ChartSeries& s = chart.series[e.series[j]];
+        const double at = x + w * (static_cast<double>(j) + 0.5) / double(e.series.size());
+        draw_marker(canvas, s.marker, at, mid, colour_of(s));
+      }
+    } else if (e.kind == Kind::kBand) {
+      cv::rectangle(canvas.image, canvas.at(x, y - 11.0), canvas.at(x + w, y + 1.0), kBandGrey, -1);
+    } else if (e.kind == Kind::kReference) {
+      draw_styled(canvas.image, {canvas.at(x, mid), canvas.at(x + w, mid)}, kBlack,
+                  canvas.thickness(1.2), LineStyle::kDashed);
+    } else {
+      draw_clip_mark(canvas, x + 0.5 * w, y - 10.0, cv::Scalar(150, 150, 150));
+    }
+    draw_text(canvas, e.text, x + w + 6.0, y, kLegendFont);
+    y += ChartLayout::kRow;
+  }
+}
 
-  const int lx = plot.x + plot.width + 12;
-  int legend_y = plot.y + 15;
-  for (const ChartSeries& s : chart.series) {
-    const cv::Scalar colour(s.b, s.g, s.r);
-    draw_styled(image, {cv::Point2d(lx, legend_y - 4), cv::Point2d(lx + 34, legend_y - 4)}, colour,
-                s.width, s.style);
-    draw_text(image, s.label, {lx + 40, legend_y}, 0.45);
-    legend_y += 20;
-  }
-  if (!chart.bands.empty() && !chart.band_label.empty()) {
-    cv::rectangle(image, {lx, legend_y - 10}, {lx + 34, legend_y + 1}, band_grey, cv::FILLED);
-    draw_text(image, chart.band_label, {lx + 40, legend_y}, 0.45);
-    legend_y += 20;
-  }
-  for (const ChartReference& r : chart.references) {
-    draw_styled(image, {cv::Point2d(lx, legend_y - 4), cv::Point2d(lx + 34, legend_y - 4)}, kBlack,
-                1, LineStyle::kDashed);
-    draw_text(image, r.label, {lx + 40, legend_y}, 0.45);
-    legend_y += 20;
-  }
-  if (!cv::imwrite(path.string(), image))
-    throw std::runtime_error("cannot write the figure " + path.string());
+void write_png(const std::filesystem::path& path, const cv::Mat& image) {
+  std::vector<std::uint8_t> png;
+  if (!cv::imencode(".png", image, png))
+    throw std::runtime_error("cannot encode the figure " + path.string());
+  png = with_png_resolution(png, kPngDotsPerInch);
+  write_file_atomically(path, [&](std::ostream& out) {
+    out.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
+  });
+}
+
+}  // namespace
+
+void write_line_chart(const std::filesystem::path& path, const LineChart& chart) {
+  const ChartLayout l = layout_chart(chart);
+  const double scale = std::max(1, chart.png_scale);
+  Canvas canvas{cv::Mat(static_cast<int>(std::lround(l.height * scale)),
+                        static_cast<int>(std::lround(l.width * scale)), CV_8UC3, kWhite),
+                scale};
+  draw_axes(canvas, chart, l);
+  // The lines on a copy of which only the plot goes back: they are clipped to the plot.
+  Canvas lines{canvas.image.clone(), scale};
+  draw_series(lines, chart, l);
+  const cv::Rect plot(canvas.at(l.plot_left, l.plot_top),
+                      canvas.at(l.plot_left + l.plot_width, l.plot_top + l.plot_height));
+  lines.image(plot).copyTo(canvas.image(plot));
+  cv::rectangle(canvas.image, plot, kBlack, canvas.thickness(1.0));
+
+  draw_text(canvas, chart.title, l.plot_left, 28.0, kTitleFont);
+  draw_text(canvas, chart.y_label, 8.0, l.plot_top - 12.0, kLabelFont);
+  draw_text(canvas, chart.x_label,
+            l.plot_left + 0.5 * (l.plot_width - text_width(chart.x_label, kLabelFont)),
+            l.height - 12.0, kLabelFont);
+  draw_legend(canvas, chart, l);
+  write_png(path, canvas.image);
 }
 
 }  // namespace opf

@@ -25,7 +25,8 @@ void write_records_csv(const std::filesystem::path& path, const ExperimentResult
 void write_runs_csv(const std::filesystem::path& path, const ExperimentResults& results);
 
 /// experiments.<name>.<estimator>.{translation_error, rotation_error_paper,
-/// rotation_error_geodesic, translation_error_unobserved}.{mean, std}, plus seeds,
+/// rotation_error_geodesic, translation_error_unobserved}.{mean, std} (std: the sample standard
+/// deviation over the seeds, n - 1), plus seeds,
 /// dynamics_models (per motion model, the occlusions the dynamics module carried with it, over
 /// the seeds and tracked bodies), hypotheses (hidden_frames, with_more, main_hidden_translation,
 /// nearest_hidden_translation: see hypothesis_stats), and for closed-loop experiments
@@ -53,8 +54,12 @@ void write_summary_json(const std::filesystem::path& path,
                         const std::vector<ExperimentResults>& experiments,
                         const std::string& provenance = "");
 
-/// Per experiment: each estimator's errors (mean +- std over seeds), the OPF/PF ratios, and the
-/// paper's Table I numbers where the paper has them.
+/// A table's title line: "<experiment>: errors ..., each run's mean over frames (mean +- std over
+/// N seeds)", the std the sample standard deviation (n - 1, opf/core/metrics.h).
+std::string results_table_title(const std::string& experiment, std::size_t seeds);
+
+/// Per experiment: the title line, each estimator's errors (mean +- sample std over the seeds),
+/// the OPF/PF ratios, and the paper's Table I numbers where the paper has them.
 void print_results_table(std::ostream& out, const std::vector<ExperimentResults>& experiments);
 
 }  // namespace opf::experiments

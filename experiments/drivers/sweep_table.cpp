@@ -99,7 +99,9 @@ void print_sweep_summary(std::ostream& out, const std::filesystem::path& csv) {
   }
   std::string header;
   for (std::size_t c = 0; c < seed; ++c) header += (c ? "  " : "") + reader.header()[c];
-  out << header << "  ->  translation [m], rotation geodesic [rad] (mean +- std over seeds)\n";
+  out << header
+      << "  ->  translation [m], rotation geodesic [rad] (mean +- std over the N seeds of each "
+         "row)\n";
   for (const std::string& key : order) {
     const auto& [translation, rotation] = groups[key];
     char line[128] = "no finished run";

@@ -39,6 +39,11 @@ TEST_F(OpfProgram, EvaluateWritesCalibrationAndTheErrorAgainstTimeHidden) {
             0)
       << err();
   EXPECT_NE(out().find("NEES/3 t"), std::string::npos) << out();
+  // The first table says once, in its header, what its +- is.
+  EXPECT_NE(out().find("\nerrors against the truth, each run's mean over frames (mean +- std over "
+                       "2 seeds)\nestimator "),
+            std::string::npos)
+      << out();
   const auto rows = rows_of(read(table));
   ASSERT_EQ(rows.size(), 3u);
   for (std::size_t r = 1; r <= 2; ++r) {

@@ -1,0 +1,53 @@
+#include "drivers/results_files.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace opf::experiments {
+namespace {
+
+TEST(ResultsFiles, TheTableSaysOnceThatItIsTheMeanAndStdOverTheSeeds) {
+  EXPECT_EQ(results_table_title("general_op", 5),
+            "general_op: errors of the objects of interest, each run's mean over frames (mean +- "
+            "std over 5 seeds)");
+  EXPECT_TRUE(results_table_title("baseball", 1).ends_with("(mean +- std over 1 seed)"));
+}
+
+TEST(ResultsFiles, TheTableAndSummaryGiveTheSampleStandardDeviation) {
+  // Four seeds with translation errors 1, 2, 3, 4: mean 2.5, sample std sqrt(5/3).
+  ExperimentResults x;
+  x.experiment = "roll";
+  x.estimators = {"opf"};
+  x.seeds = 4;
+  for (const double e : {1.0, 2.0, 3.0, 4.0}) {
+    RunErrors run;
+    run.translation = e;
+    x.runs["opf"].push_back(run);
+  }
+  std::ostringstream table;
+  print_results_table(table, {x});
+  const std::string text = table.str();
+  EXPECT_NE(text.find("\nroll: errors of the objects of interest, each run's mean over frames "
+                      "(mean +- std over 4 seeds)\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  opf        2.50000 +- 1.29e+00 "), std::string::npos) << text;
+  EXPECT_EQ(text.find("seeds"), text.rfind("seeds"));  // said once
+
+  const auto path = std::filesystem::temp_directory_path() / "opf_results_files_summary.json";
+  write_summary_json(path, {x});
+  std::ifstream in(path);
+  std::stringstream json;
+  json << in.rdbuf();
+  std::filesystem::remove(path);
+  EXPECT_NE(json.str().find("\"translation_error\": {\"mean\": 2.5, \"std\": 1.2909944487358056}"),
+            std::string::npos)
+      << json.str();
+}
+
+}  // namespace
+}  // namespace opf::experiments
