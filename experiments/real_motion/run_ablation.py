@@ -146,7 +146,8 @@ def bar_chart(out, rows, variants):
     fig.suptitle("The OPF's motion-model bank, one model removed at a time", fontsize=11)
     fig.tight_layout()
     path = os.path.join(out, "ablation.png")
-    fig.savefig(path)
+    fig.savefig(path, dpi=200)
+    fig.savefig(os.path.join(out, "ablation.svg"), metadata={"Date": None})  # vector, for print
     plt.close(fig)
     return path
 

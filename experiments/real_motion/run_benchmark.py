@@ -375,7 +375,8 @@ def figures(out, bins):
         ax.legend(fontsize=7, ncol=2)
         fig.tight_layout()
         path = os.path.join(out, f"hidden_error_{kind}.png")
-        fig.savefig(path)
+        fig.savefig(path, dpi=200)
+        fig.savefig(path[:-len(".png")] + ".svg", metadata={"Date": None})  # vector, for print
         plt.close(fig)
         written.append(path)
     return written

@@ -23,5 +23,6 @@ for r in rows:
 table = open(os.path.join(out, "ablation.md")).read()
 assert "| full bank |" in table and "| without position |" in table, table
 assert os.path.getsize(os.path.join(out, "ablation.png")) > 10000
+assert "<svg" in open(os.path.join(out, "ablation.svg")).read(2000)
 print(f"ablation subset: {len(logs)} logs, variants {', '.join(variants)}")
 PY

@@ -26,5 +26,6 @@ for r in rows:
         assert value >= 0 and not math.isnan(value), (r["sequence"], r["estimator"], metric, value)
 for kind in kinds:
     assert os.path.getsize(os.path.join(out, f"hidden_error_{kind}.png")) > 10000, kind
+    assert "<svg" in open(os.path.join(out, f"hidden_error_{kind}.svg")).read(2000), kind
 print(f"benchmark subset: {len(rows)} rows, kinds {' '.join(kinds)}, identical twice")
 PY
