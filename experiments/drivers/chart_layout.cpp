@@ -277,4 +277,19 @@ ChartLayout layout_chart(const LineChart& chart) {
   return layout;
 }
 
+SeriesMarks series_marks(const LineChart& chart, const ChartSeries& series,
+                         const ChartLayout& layout) {
+  SeriesMarks marks;
+  for (const std::size_t i : marker_points(series)) {
+    const double v = plotted_y(chart, series.y[i]);
+    if (std::isfinite(v) && !(chart.clip && series.y[i] > chart.clip->above))
+      marks.markers.push_back({layout.px(series.x[i]), layout.py(v)});
+  }
+  if (!chart.clip) return marks;
+  const double clip_y = layout.py(plotted_y(chart, chart.clip->above));
+  for (const std::size_t i : clipped_points(series, chart.clip->above))
+    marks.clips.push_back({layout.px(series.x[i]), clip_y});
+  return marks;
+}
+
 }  // namespace opf

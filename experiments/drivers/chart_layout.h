@@ -89,4 +89,13 @@ struct ChartLayout {
 /// Throws std::invalid_argument for a series whose x and y differ in length.
 ChartLayout layout_chart(const LineChart& chart);
 
+/// Where a series' marks go, in pixels, for both writers: its markers (marker_points that are
+/// plotted and not clipped) and, when the chart clips, its clip marks on the clip line.
+struct SeriesMarks {
+  std::vector<std::array<double, 2>> markers;
+  std::vector<std::array<double, 2>> clips;
+};
+SeriesMarks series_marks(const LineChart& chart, const ChartSeries& series,
+                         const ChartLayout& layout);
+
 }  // namespace opf

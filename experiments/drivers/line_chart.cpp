@@ -184,17 +184,11 @@ void draw_series(Canvas& canvas, const LineChart& chart, const ChartLayout& l) {
     }
     flush();
   }
-  const double clip_y = chart.clip ? l.py(plotted_y(chart, chart.clip->above)) : 0.0;
   for (const std::size_t k : order) {
     const ChartSeries& s = chart.series[k];
-    for (const std::size_t i : marker_points(s)) {
-      const double v = plotted_y(chart, s.y[i]);
-      if (std::isfinite(v) && !(chart.clip && s.y[i] > chart.clip->above))
-        draw_marker(canvas, s.marker, l.px(s.x[i]), l.py(v), colour_of(s));
-    }
-    if (chart.clip)
-      for (const std::size_t i : clipped_points(s, chart.clip->above))
-        draw_clip_mark(canvas, l.px(s.x[i]), clip_y, colour_of(s));
+    const SeriesMarks marks = series_marks(chart, s, l);
+    for (const auto& [x, y] : marks.markers) draw_marker(canvas, s.marker, x, y, colour_of(s));
+    for (const auto& [x, y] : marks.clips) draw_clip_mark(canvas, x, y, colour_of(s));
   }
 }
 

@@ -146,17 +146,11 @@ void write_plot(std::ostream& out, const LineChart& chart, const ChartLayout& l)
     }
     flush();
   }
-  const double clip_y = chart.clip ? l.py(plotted_y(chart, chart.clip->above)) : 0.0;
   for (const std::size_t k : order) {
     const ChartSeries& s = chart.series[k];
-    for (const std::size_t i : marker_points(s)) {
-      const double v = plotted_y(chart, s.y[i]);
-      if (std::isfinite(v) && !(chart.clip && s.y[i] > chart.clip->above))
-        out << marker(s.marker, l.px(s.x[i]), l.py(v), colour_of(s));
-    }
-    if (chart.clip)
-      for (const std::size_t i : clipped_points(s, chart.clip->above))
-        out << clip_mark(l.px(s.x[i]), clip_y, colour_of(s));
+    const SeriesMarks marks = series_marks(chart, s, l);
+    for (const auto& [x, y] : marks.markers) out << marker(s.marker, x, y, colour_of(s));
+    for (const auto& [x, y] : marks.clips) out << clip_mark(x, y, colour_of(s));
   }
   out << "</g>\n";
 }
