@@ -2,6 +2,7 @@
 // are refused with the unit they look like, gaps are filled at the log's rate, and a stream gives
 // the frames a whole-file read gives, each as soon as the next frame's first row is in.
 
+#include "io/parse_log.h"
 #include "opf/io/input_error.h"
 #include "opf/io/measurement_log.h"
 
@@ -24,21 +25,6 @@ LogReadOptions with(Set set) {
 }
 
 constexpr const char* kHeader = "t,object,x,y,z,qx,qy,qz,qw\n";
-
-MeasurementLog parse(const std::string& text, const LogReadOptions& options = {}) {
-  std::istringstream in(text);
-  return parse_measurement_log(in, "log.csv", options);
-}
-
-InputError parse_error(const std::string& text, const LogReadOptions& options = {}) {
-  try {
-    parse(text, options);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError";
-  return InputError("", 0, "", "");
-}
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;

@@ -1,7 +1,8 @@
-// Logs of one object without an object column: TUM trajectories ('#' comments, fields separated
-// by spaces or tabs) and a CSV given the object's name; and the column mappings that would read
-// one column as two fields.
+// Logs in other shapes: TUM trajectories ('#' comments, fields separated by spaces or tabs) and a
+// CSV given the object's name, both of one object without an object column; MOTChallenge boxes;
+// and the column mappings that would read one column as two fields.
 
+#include "io/parse_log.h"
 #include "opf/io/input_error.h"
 #include "opf/io/measurement_log.h"
 
@@ -19,21 +20,6 @@ LogReadOptions tum(const std::string& object) {
   options.format = LogFormat::kTum;
   options.object = object;
   return options;
-}
-
-MeasurementLog parse(const std::string& text, const LogReadOptions& options) {
-  std::istringstream in(text);
-  return parse_measurement_log(in, "traj.txt", options);
-}
-
-InputError parse_error(const std::string& text, const LogReadOptions& options) {
-  try {
-    parse(text, options);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no InputError";
-  return InputError("", 0, "", "");
 }
 
 TEST(TumLog, ReadsTimesPosesAndCommentsAsOneObject) {
