@@ -1,10 +1,9 @@
 #include "track_log_options.h"
 
-#include "opf/io/log_format_detection.h"
+#include "opf/io/log_read_arguments.h"
 
-#include <cmath>
-#include <filesystem>
 #include <stdexcept>
+#include <string_view>
 
 namespace py = pybind11;
 
@@ -36,58 +35,19 @@ std::string column_text(const py::object& columns) {
 }  // namespace
 
 LogReadOptions log_options_from(const LogArguments& arguments, const std::string& path) {
-  LogReadOptions options;
-  if (const auto& format = arguments.format) {
-    const auto parsed = parse_log_format(*format);
-    if (!parsed)
-      throw std::invalid_argument("option 'format': expected csv, tum or mot, got \"" + *format +
-                                  "\"");
-    options.format = *parsed;
-  } else {
-    options.format = detect_log_format(path);
-  }
-  options.object = arguments.object;
-  if (options.object && options.object->empty())
-    throw std::invalid_argument("option 'object' expects a name, got an empty one");
-  if (options.format == LogFormat::kTum && !options.object)
-    options.object = std::filesystem::path(path).stem().string();
-  if (options.format == LogFormat::kTum && !arguments.columns.is_none())
-    throw std::invalid_argument("option 'columns' renames CSV columns; a TUM log has none");
-  if (const auto& unit = arguments.time_unit) {
-    options.time_unit = parse_time_unit(*unit);
-    if (!options.time_unit)
-      throw std::invalid_argument("option 'time_unit': expected s, ms, us or ns, got \"" + *unit +
-                                  "\"");
-  }
-  if (const auto& unit = arguments.length_unit) {
-    options.length_unit = parse_length_unit(*unit);
-    if (!options.length_unit)
-      throw std::invalid_argument("option 'length_unit': expected m or mm, got \"" + *unit + "\"");
-  }
-  if (!arguments.columns.is_none()) {
-    const std::string text = column_text(arguments.columns);
-    try {
-      options.columns = parse_column_mapping(text);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("option 'columns': " + std::string(e.what()));
-    }
-  }
-  if (const auto tolerance = arguments.frame_tolerance) {
-    if (!(*tolerance >= 0.0) || !std::isfinite(*tolerance))
-      throw std::invalid_argument("option 'frame_tolerance' expects seconds >= 0");
-    options.frame_tolerance = *tolerance;
-  }
-  if (const auto rate = arguments.rate) {
-    if (!(*rate > 0.0) || !std::isfinite(*rate))
-      throw std::invalid_argument("option 'rate' expects a frame rate in Hz > 0");
-    options.rate = *rate;
-  }
-  options.fill_gaps = arguments.fill;
-  if (!options.fill_gaps && options.rate)
-    throw std::invalid_argument(
-        "options 'rate' and 'fill=False' contradict each other: rate sets the rate gaps are "
-        "filled at");
-  return options;
+  opf::LogArguments given;
+  given.format = arguments.format;
+  given.object = arguments.object;
+  given.time_unit = arguments.time_unit;
+  given.length_unit = arguments.length_unit;
+  if (!arguments.columns.is_none()) given.columns = column_text(arguments.columns);
+  given.frame_tolerance = arguments.frame_tolerance;
+  given.rate = arguments.rate;
+  given.fill = arguments.fill;
+  // Python's names are the library's, but for the one flag: fill=False is --no-fill.
+  return log_read_options(given, path, [](std::string_view option) {
+    return option == "fill" ? std::string("fill=False") : std::string(option);
+  });
 }
 
 }  // namespace opf::python

@@ -1,8 +1,7 @@
 #pragma once
 // track_log's log options: opf track's --format, --object, --time-unit, --length-unit, --columns,
-// --frame-tolerance,
-// --rate and --no-fill, with the same meanings, defaults and checks, mapped onto LogReadOptions
-// by the same lib/io functions. (The command line's own mapping lives in the program, apps/opf.)
+// --frame-tolerance, --rate and --no-fill, mapped onto LogReadOptions by the function the program
+// uses (io/log_read_arguments.h): the same meanings, defaults, checks and words.
 
 #include "opf/io/log_read_options.h"
 

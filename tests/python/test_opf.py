@@ -335,7 +335,7 @@ def test_track_log_reads_a_tum_trajectory_as_opf_track_does(tmp_path):
     assert set(columns["object"]) == {"ball_run"}
     named = opf.track_log(log, seed=3, particles=PARTICLES, object="ball", dataframe=False)
     assert set(named["object"]) == {"ball"} and np.array_equal(named["x"], columns["x"])
-    with pytest.raises(ValueError, match="option 'columns' renames CSV columns; a TUM log has none"):
+    with pytest.raises(ValueError, match="option 'columns' renames CSV columns; a TUM or MOTChallenge file has none"):
         opf.track_log(log, columns={"qx": "rx"})
     with pytest.raises(ValueError, match='option \'format\': expected csv, tum or mot, got "kml"'):
         opf.track_log(log, format="kml")
