@@ -93,18 +93,24 @@ void bind_estimate(py::module_& m) {
 
 void bind_tracker(py::module_& m) {
   const auto make = [](const std::string& estimator, std::uint64_t seed,
-                       std::optional<std::size_t> particles, const py::object& config) {
+                       std::optional<std::size_t> particles, const py::object& config,
+                       const std::string& preset, const py::object& camera) {
     return std::make_unique<PyTracker>(
-        estimator, seed, opf::python::SettingsArguments{.config = config, .particles = particles});
+        estimator, seed,
+        opf::python::SettingsArguments{
+            .preset = preset, .config = config, .camera = camera, .particles = particles});
   };
   py::class_<PyTracker>(m, "Tracker",
                         "One estimator per object, stepped frame by frame (opf::Tracker). One "
                         "step at a time: calls from several threads take turns.")
       .def(py::init(make), py::arg("estimator") = "opf", py::arg("seed") = 1,
            py::arg("particles") = py::none(), py::arg("config") = py::none(),
+           py::arg("preset") = "default", py::arg("camera") = py::none(),
            "estimator: opf, pf, cvkf, imm or oapf; particles: per portion (None: the config's, "
            "else 5000; a config setting another count is refused); config: None (the "
-           "defaults), a settings file's path, or a dict in its shape")
+           "defaults), a settings file's path, or a dict in its shape; preset: default or "
+           "paper (the config applies on top); camera: [X, Y, Z] or \"X,Y,Z\" (m), where the "
+           "occluder module's line of sight starts, as opf track --camera")
       .def("step", &PyTracker::step, py::arg("t"), py::arg("detections"),
            "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}. "
            "Returns {object: Estimate} for every object seen so far. A non-finite or malformed "

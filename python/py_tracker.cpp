@@ -68,11 +68,18 @@ Frame frame_from(double t, const std::map<std::string, py::object>& detections) 
   return frame;
 }
 
+// As `opf track` builds them: line_of_sight without a camera position is refused.
+EstimatorSettings checked_settings(const SettingsArguments& arguments) {
+  EstimatorSettings settings = settings_from(arguments);
+  require_camera_for_line_of_sight(settings);
+  return settings;
+}
+
 }  // namespace
 
 PyTracker::PyTracker(const std::string& estimator, std::uint64_t seed,
                      const SettingsArguments& settings)
-    : tracker_(make_estimator_factory(estimator, settings_from(settings)), seed) {}
+    : tracker_(make_estimator_factory(estimator, checked_settings(settings)), seed) {}
 
 std::map<std::string, PyEstimate> PyTracker::step(
     double t, const std::map<std::string, py::object>& detections) {

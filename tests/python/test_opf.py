@@ -446,3 +446,21 @@ def test_errors_carry_the_programs_messages(tmp_path):
 
 def test_the_estimator_names_are_the_registrys():
     assert opf.estimators() == ["opf", "pf", "cvkf", "imm", "oapf"]
+
+
+def test_a_tracker_takes_the_preset_and_the_camera_as_track_log_does():
+    # A ball rolling out from under a resting mug, hidden for 10 frames: the paper's rules and the
+    # defaults extrapolate it differently; the camera is accepted in either form.
+    def run(**settings):
+        tracker = opf.Tracker("opf", seed=2, particles=PARTICLES, **settings)
+        for k in range(40):
+            ball = None if 20 <= k < 30 else [0.3 + 0.01 * k, 0.0, 0.02, 0, 0, 0, 1]
+            last = tracker.step(k / 30.0, {"ball": ball, "mug": [0.2, 0.3, 0.04, 0, 0, 0, 1]})
+        return last["ball"].position
+    default = run()
+    assert not np.allclose(run(preset="paper"), default)
+    assert np.array_equal(run(camera=[0.0, 0.0, 2.0]), run(camera="0,0,2"))
+    with pytest.raises(ValueError, match='option \'preset\': expected default or paper, got "fast"'):
+        opf.Tracker("opf", preset="fast")
+    with pytest.raises(ValueError, match="option 'camera'"):
+        opf.Tracker("opf", camera=[0.0, 1.0])
