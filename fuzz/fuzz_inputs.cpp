@@ -27,25 +27,38 @@ void check_frame(const Frame& frame, std::optional<double>& last_t) {
       if (!std::isfinite(v)) fail("a non-finite pose was accepted");
 }
 
-}  // namespace
-
-void measurement_log(const std::uint8_t* data, std::size_t size) {
-  const std::string text(reinterpret_cast<const char*>(data), size);
+// The bytes as a log in one format, read whole and as a stream (rows must then be in time order).
+void read_both_ways(const std::string& text, const LogReadOptions& options) {
   std::istringstream whole(text);
   try {
-    const MeasurementLog log = parse_measurement_log(whole, "fuzz.csv");
+    const MeasurementLog log = parse_measurement_log(whole, "fuzz.log", options);
     std::optional<double> last_t;
     for (const Frame& frame : log.frames) check_frame(frame, last_t);
   } catch (const InputError&) {
   }
-  // The same bytes as a stream (rows must then be in time order).
   std::istringstream streamed(text);
   try {
-    MeasurementStream stream(streamed, "fuzz.csv");
+    MeasurementStream stream(streamed, "fuzz.log", options);
     std::optional<double> last_t;
     while (const std::optional<Frame> frame = stream.next()) check_frame(*frame, last_t);
   } catch (const InputError&) {
   }
+}
+
+}  // namespace
+
+// Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes.
+void measurement_log(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  read_both_ways(text, {});
+  LogReadOptions tum;
+  tum.format = LogFormat::kTum;
+  tum.object = "fuzz";
+  read_both_ways(text, tum);
+  LogReadOptions boxes;
+  boxes.format = LogFormat::kMot;
+  boxes.rate = 30.0;
+  read_both_ways(text, boxes);
 }
 
 void estimator_settings(const std::uint8_t* data, std::size_t size) {

@@ -106,9 +106,11 @@ std::vector<std::pair<std::string, std::string>> parse_column_mapping(std::strin
   }
   if (mapping.empty()) throw std::invalid_argument("expected NAME=COLUMN entries, e.g. qx=rx");
   // Onto a column another name still reads by default (object=t): two fields from one column.
-  for (const auto& [name, column] : mapping) {
+  for (const auto& entry : mapping) {
+    const std::string& name = entry.first;
+    const std::string& column = entry.second;
     const bool renamed = std::any_of(mapping.begin(), mapping.end(),
-                                     [&](const auto& entry) { return entry.first == column; });
+                                     [&](const auto& other) { return other.first == column; });
     if (column != name && !renamed &&
         std::find(kLogColumns.begin(), kLogColumns.end(), column) != kLogColumns.end())
       throw std::invalid_argument("'" + name + "=" + column + "' reads " + name +
