@@ -235,73 +235,91 @@ std::string results_table_title(const std::string& experiment, std::size_t seeds
          std::to_string(seeds) + (seeds == 1 ? " seed)" : " seeds)");
 }
 
-void print_results_table(std::ostream& out, const std::vector<ExperimentResults>& experiments) {
+namespace {
+
+// One experiment's block of the printed table, section by section.
+void print_error_rows(std::ostream& out, const ExperimentResults& x) {
   char line[256];
+  std::snprintf(line, sizeof line, "  %-10s %-22s %-22s %-22s %-22s\n", "estimator",
+                "translation [m]", "rotation paper [rad]", "rotation geodesic",
+                "transl. hidden [m]");
+  out << line;
+  for (const std::string& name : x.estimators) {
+    const auto& runs = x.runs.at(name);
+    std::snprintf(line, sizeof line, "  %-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
+                  cell(metric_of(runs, Metric::kTranslation)).c_str(),
+                  cell(metric_of(runs, Metric::kRotationPaper)).c_str(),
+                  cell(metric_of(runs, Metric::kRotationGeodesic)).c_str(),
+                  cell(metric_of(runs, Metric::kTranslationUnobserved)).c_str());
+    out << line;
+  }
+}
+
+void print_drops_and_hypotheses(std::ostream& out, const ExperimentResults& x) {
+  char line[256];
+  for (const std::string& name : x.estimators) {
+    const auto drops = x.drops.find(name);
+    if (drops == x.drops.end()) continue;
+    std::size_t released = 0, landed = 0;
+    for (const DropOutcome& d : drops->second) {
+      released += d.released;
+      landed += d.landed;
+    }
+    std::snprintf(line, sizeof line,
+                  "  %-10s cube released in %zu of %zu runs, landed in the mug in %zu\n",
+                  name.c_str(), released, drops->second.size(), landed);
+    out << line;
+  }
+  for (const std::string& name : x.estimators) {
+    const HypothesisStats h = hypothesis_stats(x, name);
+    if (h.with_more == 0) continue;
+    std::snprintf(
+        line, sizeof line,
+        "  %-10s more than one hypothesis in %zu of %zu hidden frames; hidden error of the one "
+        "nearest the truth %.5f m (the main one's %.5f m)\n",
+        name.c_str(), h.with_more, h.hidden_frames, h.nearest_hidden_translation,
+        h.main_hidden_translation);
+    out << line;
+  }
+}
+
+void print_paper_rows_and_ratios(std::ostream& out, const ExperimentResults& x) {
+  char line[256];
+  const auto paper = paper_table().find(x.experiment);
+  if (paper != paper_table().end()) {
+    const PaperRow& p = paper->second;
+    std::snprintf(line, sizeof line, "  %-10s %-22s %-22s (Table I, 5 runs)\n", "paper opf",
+                  cell(p.opf_translation).c_str(), cell(p.opf_rotation).c_str());
+    out << line;
+    std::snprintf(line, sizeof line, "  %-10s %-22s %-22s (Table I, 5 runs)\n", "paper pf",
+                  cell(p.pf_translation).c_str(), cell(p.pf_rotation).c_str());
+    out << line;
+  }
+  if (!x.runs.count("opf") || !x.runs.count("pf")) return;
+  const auto ratio = [&](Metric m) {
+    return metric_of(x.runs.at("opf"), m).mean / metric_of(x.runs.at("pf"), m).mean;
+  };
+  std::snprintf(line, sizeof line, "  OPF/PF ratio: translation %.3f, rotation (paper) %.3f",
+                ratio(Metric::kTranslation), ratio(Metric::kRotationPaper));
+  out << line;
+  if (paper != paper_table().end()) {
+    const PaperRow& p = paper->second;
+    std::snprintf(line, sizeof line, "   [paper: %.3f, %.3f]",
+                  p.opf_translation.mean / p.pf_translation.mean,
+                  p.opf_rotation.mean / p.pf_rotation.mean);
+    out << line;
+  }
+  out << "\n";
+}
+
+}  // namespace
+
+void print_results_table(std::ostream& out, const std::vector<ExperimentResults>& experiments) {
   for (const ExperimentResults& x : experiments) {
     out << "\n" << results_table_title(x.experiment, x.seeds) << "\n";
-    std::snprintf(line, sizeof line, "  %-10s %-22s %-22s %-22s %-22s\n", "estimator",
-                  "translation [m]", "rotation paper [rad]", "rotation geodesic",
-                  "transl. hidden [m]");
-    out << line;
-    for (const std::string& name : x.estimators) {
-      const auto& runs = x.runs.at(name);
-      std::snprintf(line, sizeof line, "  %-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
-                    cell(metric_of(runs, Metric::kTranslation)).c_str(),
-                    cell(metric_of(runs, Metric::kRotationPaper)).c_str(),
-                    cell(metric_of(runs, Metric::kRotationGeodesic)).c_str(),
-                    cell(metric_of(runs, Metric::kTranslationUnobserved)).c_str());
-      out << line;
-    }
-    for (const std::string& name : x.estimators) {
-      const auto drops = x.drops.find(name);
-      if (drops == x.drops.end()) continue;
-      std::size_t released = 0, landed = 0;
-      for (const DropOutcome& d : drops->second) {
-        released += d.released;
-        landed += d.landed;
-      }
-      std::snprintf(line, sizeof line,
-                    "  %-10s cube released in %zu of %zu runs, landed in the mug in %zu\n",
-                    name.c_str(), released, drops->second.size(), landed);
-      out << line;
-    }
-    for (const std::string& name : x.estimators) {
-      const HypothesisStats h = hypothesis_stats(x, name);
-      if (h.with_more == 0) continue;
-      std::snprintf(
-          line, sizeof line,
-          "  %-10s more than one hypothesis in %zu of %zu hidden frames; hidden error of the one "
-          "nearest the truth %.5f m (the main one's %.5f m)\n",
-          name.c_str(), h.with_more, h.hidden_frames, h.nearest_hidden_translation,
-          h.main_hidden_translation);
-      out << line;
-    }
-    const auto paper = paper_table().find(x.experiment);
-    if (paper != paper_table().end()) {
-      const PaperRow& p = paper->second;
-      std::snprintf(line, sizeof line, "  %-10s %-22s %-22s (Table I, 5 runs)\n", "paper opf",
-                    cell(p.opf_translation).c_str(), cell(p.opf_rotation).c_str());
-      out << line;
-      std::snprintf(line, sizeof line, "  %-10s %-22s %-22s (Table I, 5 runs)\n", "paper pf",
-                    cell(p.pf_translation).c_str(), cell(p.pf_rotation).c_str());
-      out << line;
-    }
-    if (x.runs.count("opf") && x.runs.count("pf")) {
-      const auto ratio = [&](Metric m) {
-        return metric_of(x.runs.at("opf"), m).mean / metric_of(x.runs.at("pf"), m).mean;
-      };
-      std::snprintf(line, sizeof line, "  OPF/PF ratio: translation %.3f, rotation (paper) %.3f",
-                    ratio(Metric::kTranslation), ratio(Metric::kRotationPaper));
-      out << line;
-      if (paper != paper_table().end()) {
-        const PaperRow& p = paper->second;
-        std::snprintf(line, sizeof line, "   [paper: %.3f, %.3f]",
-                      p.opf_translation.mean / p.pf_translation.mean,
-                      p.opf_rotation.mean / p.pf_rotation.mean);
-        out << line;
-      }
-      out << "\n";
-    }
+    print_error_rows(out, x);
+    print_drops_and_hypotheses(out, x);
+    print_paper_rows_and_ratios(out, x);
   }
 }
 
