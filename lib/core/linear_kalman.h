@@ -71,6 +71,42 @@ Correction<N, M> update_covariance(Matrix<N>& covariance, const Matrix<M, N>& ob
   return out;
 }
 
+/// Student-t measurement noise in M dimensions with `dof` degrees of freedom, and the constant of
+/// its log-density, log Gamma((dof + M) / 2) - log Gamma(dof / 2) - M / 2 log(dof pi), computed
+/// once.
+struct StudentTNoise {
+  double dof = 1.0;
+  double log_normaliser = 0.0;
+};
+
+template <int M>
+StudentTNoise student_t_noise(double dof) {
+  return {dof, std::lgamma((dof + M) / 2.0) - std::lgamma(dof / 2.0) -
+                   0.5 * M * std::log(dof * std::numbers::pi)};
+}
+
+/// The update under Student-t measurement noise, a Gaussian scale mixture: the noise is
+/// N(0, R / w) with w ~ Gamma(dof / 2, dof / 2). Given the innovation, w's posterior mean is
+/// (dof + M) / (dof + d^2), d^2 = r^T S^-1 r (one variational-Bayes step of Agamennoni, Nieto &
+/// Nebot, "Approximate inference in state-space models with heavy-tailed noise", IEEE Trans.
+/// Signal Processing 60(10), 2012), so the update is update_covariance's with R scaled by its
+/// inverse: a measurement far from the prediction moves the state less. The log-likelihood is
+/// the Student-t density's, log t_dof(r; 0, S).
+template <int N, int M>
+Correction<N, M> update_covariance_student_t(Matrix<N>& covariance, const Matrix<M, N>& observation,
+                                             const Matrix<M>& noise, const Vector<M>& innovation,
+                                             const StudentTNoise& t) {
+  const Matrix<M> s = observation * covariance * observation.transpose() + noise;
+  const Eigen::LDLT<Matrix<M>> ldlt(s);
+  const double d2 = innovation.dot(ldlt.solve(innovation));
+  const double log_det = ldlt.vectorD().array().log().sum();
+  const Matrix<M> scaled = noise * ((t.dof + d2) / (t.dof + M));
+  Correction<N, M> out = update_covariance(covariance, observation, scaled, innovation);
+  out.log_likelihood =
+      t.log_normaliser - 0.5 * log_det - 0.5 * (t.dof + M) * std::log1p(d2 / t.dof);
+  return out;
+}
+
 /// The linear update with measurement z: r = z - H x, x <- x + K r, and P as update_covariance.
 template <int N, int M>
 Correction<N, M> update(Vector<N>& mean, Matrix<N>& covariance, const Matrix<M, N>& observation,

@@ -15,6 +15,9 @@ namespace {
 // The position is measured directly: H = [1 0].
 const kalman::Matrix<1, 2> kObservation(1.0, 0.0);
 
+// A translation member's gate: the chi-square 99.9% quantile with 1 degree of freedom.
+constexpr double kAxisGateChiSquare = 10.828;
+
 void check_axis(int axis) {
   if (axis < 0 || axis > 2)
     throw std::out_of_range("MotionModelBank: axis " + std::to_string(axis) + " is not 0, 1 or 2");
@@ -92,6 +95,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
       weights_[axis].reset();
     }
     t_ = t;
+    last_position_ = position;
     initialised_ = true;
     return;
   }
@@ -109,10 +113,36 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
       const AxisMotionStep step = models_[axis][j].step(dt);
       kalman::predict(f.mean, f.covariance, step.transition, step.process_noise);
       f.mean += step.offset;
-      log_likelihoods_[j] =
-          kalman::update(f.mean, f.covariance, kObservation, noise, z).log_likelihood;
+      const kalman::Vector<1> innovation = z - kObservation * f.mean;
+      const bool surprised =
+          innovation[0] * innovation[0] > kAxisGateChiSquare * (f.covariance(0, 0) + r);
+      f.surprises = surprised ? f.surprises + 1 : 0;
+      const auto correction = kalman::update_covariance_student_t(f.covariance, kObservation, noise,
+                                                                  innovation, noise_model_);
+      f.mean += correction.correction;
+      log_likelihoods_[j] = correction.log_likelihood;
+      if (f.surprises >= kSurprisesToRestart)
+        restart(f, models_[axis][j].model, position[axis], last_position_[axis], dt);
     }
     weights_[axis].update(dt, options_.memory, log_likelihoods_);
+  }
+  last_position_ = position;
+}
+
+void MotionModelBank::restart(Filter& filter, MotionModel model, double position, double previous,
+                              double dt) const {
+  const double r = options_.observation_noise * options_.observation_noise;
+  filter.surprises = 0;
+  if (model == MotionModel::kConstantPosition) {
+    filter.mean << position, 0.0;
+    filter.covariance << r, 0.0, 0.0, 0.0;
+  } else if (dt > 0.0) {  // p = z2, v = (z2 - z1) / dt: var p = r, cov = r / dt, var v = 2 r / dt^2
+    filter.mean << position, (position - previous) / dt;
+    filter.covariance << r, r / dt, r / dt, 2.0 * r / (dt * dt);
+  } else {  // two measurements at one time carry no velocity: the prior's
+    const double v = options_.initial_velocity_std;
+    filter.mean << position, 0.0;
+    filter.covariance << r, 0.0, 0.0, v * v;
   }
 }
 

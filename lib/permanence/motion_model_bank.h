@@ -22,10 +22,14 @@
 // its members (pi_j). At each measurement, after a step dt, every member predicts and updates,
 // and with its innovation r_j and variance S_j
 //
-//   log w_j <- lambda log w_j + (1 - lambda) log pi_j + log N(r_j; 0, S_j),
+//   log w_j <- lambda log w_j + (1 - lambda) log pi_j + log t_1(r_j; 0, S_j),
 //   lambda = exp(-dt / T_memory),
 //
-// then normalised and floored at 1e-12 (renormalised), so that no member dies for good. The
+// then normalised and floored at 1e-12 (renormalised). The detector's noise is taken as Student-t
+// with one degree of freedom (kBankNoiseDof; each member's update is
+// kalman::update_covariance_student_t), so that one wild detection neither drags a member nor
+// hands the weight to the widest ones; a member that two detections in a row find outside its
+// 99.9% gate restarts from them (kSurprisesToRestart), so that no member is lost for good. The
 // forgetting is stated in continuous time: n frames of dt forget as one of n dt. With the prior
 // uniform over members, the prior term is a constant that the normalisation removes.
 
@@ -102,13 +106,21 @@ class MotionModelBank {
   struct Filter {
     kalman::Vector<2> mean;
     kalman::Matrix<2> covariance;
+    int surprises = 0;  ///< consecutive measurements outside the member's gate
   };
+  /// Restarts a member that has lost the object from the last two positions (two-point
+  /// differencing: the velocity is their slope, v pinned at 0 for constant position).
+  void restart(Filter& filter, MotionModel model, double position, double previous,
+               double dt) const;
 
   MotionModelBankOptions options_;
   std::array<std::vector<AxisMotionModel>, 3> models_;
   std::array<std::vector<Filter>, 3> filters_;
   std::vector<ModelWeights> weights_;  ///< one per axis
   std::vector<double> log_likelihoods_;
+  /// The detector's noise on one axis (kBankNoiseDof).
+  kalman::StudentTNoise noise_model_ = kalman::student_t_noise<1>(kBankNoiseDof);
+  Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();
   double t_ = 0.0;
   bool initialised_ = false;
 };

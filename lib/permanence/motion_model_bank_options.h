@@ -11,6 +11,20 @@
 
 namespace opf {
 
+/// The degrees of freedom of the detector's noise as both motion-model banks model it: Student-t
+/// with 1 (Cauchy). Detections have heavy tails (a partly covered object's centroid, a wrong
+/// detection), and one the Gaussian would take at face value, a Cauchy likelihood discounts
+/// (kalman::update_covariance_student_t), in the members' states and in their weights alike.
+inline constexpr double kBankNoiseDof = 1.0;
+/// A member that finds this many measurements in a row outside its 99.9% gate (chi-square on the
+/// squared innovation over its Gaussian variance) has lost the object: its heavy-tailed likelihood
+/// would read every later one as an outlier and never follow. It restarts from the last two
+/// measurements (two-point differencing: position measured, velocity their slope), keeping its
+/// weight; a single outlier does not restart it.
+inline constexpr int kSurprisesToRestart = 2;
+/// The rotation members' gate: the chi-square 99.9% quantile with 3 degrees of freedom.
+inline constexpr double kRotationGateChiSquare = 16.266;
+
 struct MotionModelBankOptions {
   /// The models the bank holds (each at its intensity grid); at least one.
   bool constant_position = true;

@@ -1,5 +1,6 @@
 #include "opf/permanence/rotation_model_bank.h"
 
+#include "opf/core/so3.h"
 #include "opf/permanence/weighted_choice.h"
 
 #include <cmath>
@@ -29,6 +30,7 @@ std::vector<TangentRotationFilter> members_of(const RotationModelBankOptions& op
 RotationModelBank::RotationModelBank(const RotationModelBankOptions& options)
     : options_(options),
       filters_(members_of(options)),
+      surprises_(filters_.size(), 0),
       weights_(std::vector<double>(filters_.size(), 1.0)),  // models x 3 members: equal
       log_likelihoods_(filters_.size(), 0.0) {}
 
@@ -42,6 +44,7 @@ void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) 
       f.initialise(orientation, sigma, options_.initial_angular_velocity_std);
     weights_.reset();
     t_ = t;
+    last_orientation_ = orientation;
     initialised_ = true;
     return;
   }
@@ -51,9 +54,24 @@ void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) 
                                 " s, before the last one at " + std::to_string(t_) + " s");
   t_ = t;
   for (std::size_t j = 0; j < filters_.size(); ++j) {
-    filters_[j].predict(dt);
-    log_likelihoods_[j] = filters_[j].update(orientation, sigma * sigma);
+    TangentRotationFilter& f = filters_[j];
+    f.predict(dt);
+    surprises_[j] = f.squared_distance(orientation, sigma * sigma) > kRotationGateChiSquare
+                        ? surprises_[j] + 1
+                        : 0;
+    log_likelihoods_[j] = f.update(orientation, sigma * sigma, noise_model_);
+    if (surprises_[j] >= kSurprisesToRestart) {
+      // Restarted from the last two orientations: the body rate is their difference's slope.
+      const Eigen::Vector3d rate =
+          dt > 0.0 ? Eigen::Vector3d(so3::difference(last_orientation_, orientation) / dt)
+                   : Eigen::Vector3d::Zero();
+      f.initialise(orientation, sigma,
+                   dt > 0.0 ? std::sqrt(2.0) * sigma / dt : options_.initial_angular_velocity_std,
+                   rate);
+      surprises_[j] = 0;
+    }
   }
+  last_orientation_ = orientation;
   weights_.update(dt, options_.memory, log_likelihoods_);
 }
 

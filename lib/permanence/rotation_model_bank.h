@@ -11,6 +11,7 @@
 // prior 1/2, shared equally by its three members.
 
 #include "opf/permanence/model_weights.h"
+#include "opf/permanence/motion_model_bank_options.h"
 #include "opf/permanence/rotation_model_bank_options.h"
 #include "opf/permanence/tangent_rotation_filter.h"
 
@@ -67,8 +68,12 @@ class RotationModelBank {
  private:
   RotationModelBankOptions options_;
   std::vector<TangentRotationFilter> filters_;
+  std::vector<int> surprises_;  ///< per member: consecutive measurements outside its gate
+  Eigen::Quaterniond last_orientation_ = Eigen::Quaterniond::Identity();
   ModelWeights weights_;
   std::vector<double> log_likelihoods_;
+  /// The detector's noise in the tangent space (kBankNoiseDof).
+  kalman::StudentTNoise noise_model_ = kalman::student_t_noise<3>(kBankNoiseDof);
   double t_ = 0.0;
   bool initialised_ = false;
 };

@@ -10,9 +10,11 @@ std::string_view rotation_model_name(RotationModel model) {
 }
 
 void TangentRotationFilter::initialise(const Eigen::Quaterniond& orientation,
-                                       double orientation_std, double rate_std) {
+                                       double orientation_std, double rate_std,
+                                       const Eigen::Vector3d& rate) {
   orientation_ = orientation.normalized();
   angular_velocity_.setZero();
+  if (model_ == RotationModel::kConstantAngularVelocity) angular_velocity_ = rate;
   covariance_.setZero();
   covariance_.topLeftCorner<3, 3>().diagonal().setConstant(orientation_std * orientation_std);
   if (model_ == RotationModel::kConstantAngularVelocity)
@@ -38,12 +40,24 @@ void TangentRotationFilter::predict(double dt) {
   kalman::predict_covariance(covariance_, m.transition, m.process_noise);
 }
 
-double TangentRotationFilter::update(const Eigen::Quaterniond& measured, double variance) {
+double TangentRotationFilter::squared_distance(const Eigen::Quaterniond& measured,
+                                               double variance) const {
+  const Eigen::Vector3d r = so3::difference(orientation_, measured);
+  const Eigen::Matrix3d s =
+      covariance_.topLeftCorner<3, 3>() + variance * Eigen::Matrix3d::Identity();
+  return r.dot(s.ldlt().solve(r));
+}
+
+double TangentRotationFilter::update(const Eigen::Quaterniond& measured, double variance,
+                                     const std::optional<kalman::StudentTNoise>& heavy_tails) {
   kalman::Matrix<3, 6> h = kalman::Matrix<3, 6>::Zero();
   h.leftCols<3>().setIdentity();
+  const Eigen::Matrix3d noise = variance * Eigen::Matrix3d::Identity();
+  const Eigen::Vector3d residual = so3::difference(orientation_, measured);
   const auto correction =
-      kalman::update_covariance<6, 3>(covariance_, h, variance * Eigen::Matrix3d::Identity(),
-                                      so3::difference(orientation_, measured));
+      heavy_tails
+          ? kalman::update_covariance_student_t<6, 3>(covariance_, h, noise, residual, *heavy_tails)
+          : kalman::update_covariance<6, 3>(covariance_, h, noise, residual);
   // The reset Jacobian I - [dtheta/2]x is left out, as in the Kalman baselines: a relative
   // O(|dtheta|) change of P.
   orientation_ = (orientation_ * so3::exp(correction.correction.head<3>())).normalized();

@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <optional>
 #include <string_view>
 
 namespace opf {
@@ -36,12 +37,19 @@ class TangentRotationFilter {
 
   /// At `orientation` with std `orientation_std` (rad per tangent axis), the rate zero with std
   /// `rate_std` (rad/s; zero for constant orientation, whose rate is pinned).
-  void initialise(const Eigen::Quaterniond& orientation, double orientation_std, double rate_std);
+  void initialise(const Eigen::Quaterniond& orientation, double orientation_std, double rate_std,
+                  const Eigen::Vector3d& rate = Eigen::Vector3d::Zero());
   /// Steps the state over dt >= 0 (s).
   void predict(double dt);
-  /// Updates with a measured orientation of tangent variance `variance` (rad^2 per axis); returns
-  /// the innovation's log-likelihood log N(r; 0, S). The quaternion's sign is irrelevant.
-  double update(const Eigen::Quaterniond& measured, double variance);
+  /// The squared Mahalanobis distance of a measured orientation of tangent variance `variance`
+  /// from the filter's orientation, under S = P_tt + variance I.
+  double squared_distance(const Eigen::Quaterniond& measured, double variance) const;
+  /// Updates with a measured orientation of tangent variance `variance` (rad^2 per axis), its
+  /// noise Gaussian or, given `heavy_tails`, Student-t of that scale
+  /// (kalman::update_covariance_student_t); returns the innovation's log-likelihood under it.
+  /// The quaternion's sign is irrelevant.
+  double update(const Eigen::Quaterniond& measured, double variance,
+                const std::optional<kalman::StudentTNoise>& heavy_tails = std::nullopt);
 
   /// The orientation `horizon` s ahead and its tangent covariance (rad^2) there.
   struct Prediction {

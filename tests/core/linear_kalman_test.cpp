@@ -83,6 +83,54 @@ TEST(LinearKalman, LogLikelihoodIsTheInnovationsGaussianDensity) {
   EXPECT_EQ(c2.log_likelihood, c.log_likelihood);
 }
 
+// The hand-computed case above under Student-t noise: S = 3, r = 1.5, d^2 = 0.75, one degree of
+// freedom, M = 1: R scaled by (1 + 0.75) / 2 = 0.875, so S' = 2.1 + 0.7875, K = 2.1 / 2.8875.
+TEST(LinearKalman, StudentTUpdateScalesTheNoiseByTheInnovationsDistance) {
+  const Matrix<1, 2> h(1.0, 0.0);
+  const Matrix<1> r = Matrix<1>::Constant(0.9);
+  Matrix<2> p;
+  p << 2.1, 2.0, 2.0, 4.2;
+  Matrix<2> expected_p = p;
+  const Correction<2, 1> gaussian =
+      update_covariance<2, 1>(expected_p, h, Matrix<1>::Constant(0.9 * 0.875), Vector<1>(1.5));
+  const Correction<2, 1> c =
+      update_covariance_student_t<2, 1>(p, h, r, Vector<1>(1.5), student_t_noise<1>(1.0));
+  EXPECT_NEAR(c.correction[0], 1.5 * 2.1 / 2.8875, 1e-15);
+  EXPECT_EQ(c.correction, gaussian.correction);
+  EXPECT_EQ(p, expected_p);
+  // The Cauchy density of 1.5 with scale sqrt(3): 1 / (pi sqrt(3) (1 + 0.75)).
+  EXPECT_NEAR(c.log_likelihood, -std::log(std::numbers::pi * std::sqrt(3.0) * 1.75), 1e-14);
+
+  // An innovation 10 sigma out: its noise is taken (10^2 + 1) / 2 times wider, so the state moves
+  // by a sixteenth of the Gaussian update's correction.
+  Matrix<2> p_far = Vector<2>(2.1, 4.2).asDiagonal();
+  Matrix<2> p_gauss = p_far;
+  const double far = 10.0 * std::sqrt(3.0);
+  const auto robust =
+      update_covariance_student_t<2, 1>(p_far, h, r, Vector<1>(far), student_t_noise<1>(1.0));
+  const auto plain = update_covariance<2, 1>(p_gauss, h, r, Vector<1>(far));
+  EXPECT_NEAR(robust.correction[0], far * 2.1 / (2.1 + 0.9 * 101.0 / 2.0), 1e-12);
+  EXPECT_LT(robust.correction[0], 0.1 * plain.correction[0]);
+  EXPECT_GT(p_far(0, 0), p_gauss(0, 0));  // and learns less from it
+}
+
+TEST(LinearKalman, StudentTTendsToTheGaussianAsItsDegreesOfFreedomGrow) {
+  // Three correlated components, as the rotation filters use it.
+  Matrix<3> p;
+  p << 2.0, 0.3, -0.2, 0.3, 1.5, 0.4, -0.2, 0.4, 0.8;
+  const Matrix<3> h = Matrix<3>::Identity();
+  const Matrix<3> r = 0.4 * Matrix<3>::Identity();
+  const Vector<3> innovation(0.5, -0.3, 0.2);
+  Matrix<3> p_gauss = p, p_t = p;
+  const auto gaussian = update_covariance<3, 3>(p_gauss, h, r, innovation);
+  // At 10^6 degrees of freedom R is scaled by 1 + (d^2 - 3) / (10^6 + 3), and the densities
+  // differ by O(d^4 / 10^6): a few parts in a million.
+  const auto t = update_covariance_student_t<3, 3>(p_t, h, r, innovation, student_t_noise<3>(1e6));
+  EXPECT_NEAR(t.log_likelihood, gaussian.log_likelihood, 1e-5);
+  EXPECT_TRUE(t.correction.isApprox(gaussian.correction, 1e-5));
+  EXPECT_TRUE(p_t.isApprox(p_gauss, 1e-5));
+}
+
 TEST(LinearKalman, KinematicBlocksAreTheExactDiscretisation) {
   const double q = 0.7, dt = 0.2;
   const Matrix<6> noise = white_noise_acceleration(q, dt);

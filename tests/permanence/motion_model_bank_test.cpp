@@ -30,8 +30,9 @@ void advance(const AxisMotionModel& model, double dt, kalman::Vector<2>& x, Rand
   x = step.transition * x + step.offset + draw_noise(step.process_noise, random);
 }
 
-// A track drawn from one model per axis at 30 Hz, measured with `sigma` m of noise per axis; the
-// bank has seen every frame; `truth` holds the states after the last frame.
+// A track drawn from one model per axis at 30 Hz, measured with `sigma` m of Gaussian noise per
+// axis (the bank's Student-t likelihood is there for the outliers this lacks); the bank has seen
+// every frame; `truth` holds the states after the last frame.
 struct Drawn {
   MotionModelBank bank;
   std::array<kalman::Vector<2>, 3> truth;
@@ -143,11 +144,12 @@ TEST(MotionModelBank, GravityFollowsUp) {
 
 // Data drawn from each model for 3 s at 30 Hz with 5 mm noise, at an intensity where a 1 s
 // memory can tell it from its neighbours: that model's members hold the most weight at the end.
-// (Constant position at 0.01 m/s/sqrt(Hz), a 1 cm walk in a second under 5 mm of noise, is won
-// by damped velocity at T = 0.3 s, q T ~ 0.01, in about 1 draw in 10; constant velocity at 1 m/s
-// by damped velocity at T = 3 s in 1 in 20: those neighbours predict almost alike within the
-// memory.) Over 10 seeds x 3 axes the drawing model wins at least 29 of the 30 draws (on 40
-// seeds each it won 120, 120 and 119 of 120) and holds the largest mean weight.
+// (Constant position at 0.01 m/s/sqrt(Hz), a 1 cm walk in a second, can be won by damped
+// velocity at T = 0.3 s, q T ~ 0.01; constant velocity at 1 m/s by damped velocity at T = 3 s:
+// those neighbours predict almost alike within the memory, and the heavy-tailed likelihood tells
+// them apart less sharply than a Gaussian one would.) On 40 seeds x 3 axes the drawing model won
+// 118, 115 and 118 of 120 draws; here, over 10 seeds x 3 axes, at least 27 of the 30, and it
+// holds the largest mean weight.
 TEST(MotionModelBank, TheModelThatDrewTheDataWins) {
   struct Case {
     AxisMotionModel model;
@@ -169,7 +171,7 @@ TEST(MotionModelBank, TheModelThatDrewTheDataWins) {
           mean_weight[m] += d.bank.model_weight(axis, static_cast<MotionModel>(m)) / 30.0;
       }
     }
-    EXPECT_GE(wins, 29) << model_name(c.model.model);
+    EXPECT_GE(wins, 27) << model_name(c.model.model);
     const auto best = std::max_element(mean_weight.begin(), mean_weight.end());
     EXPECT_EQ(best - mean_weight.begin(), static_cast<int>(c.model.model))
         << model_name(c.model.model) << " " << *best;
@@ -203,9 +205,11 @@ TEST(MotionModelBank, ConstantPositionWinsAStillObject) {
 
 // Calibration: 600 tracks drawn from constant velocity at 0.3 m/s^2/sqrt(Hz) (a member), the
 // initial velocity from the bank's prior N(0, 1 m/s), 2 s at 30 Hz with 1 cm noise; then the true
-// position h s later against the mixture's mean and variance. Each normalised squared error is
-// about chi-square with 1 degree of freedom (variance 2), so the mean of 3 x 600 has a standard
-// deviation of sqrt(2 / 1800) = 0.033: 15% is 4.5 of them.
+// position h s later against the mixture's mean and variance. The mean NEES lies in the
+// calibration band [0.5, 2] (docs/metrics.md), at 1.23 for both horizons, not 1: on Gaussian
+// noise the Student-t update takes an innovation under one sigma as more precise than R, and so
+// is somewhat over-confident. (With Cauchy noise, which its restarts read as a lost object, it
+// reads 3-5.)
 TEST(MotionModelBank, PredictiveNeesIsCalibrated) {
   const AxisMotionModel model{MotionModel::kConstantVelocity, 0.3, 1.0, 0.0};
   constexpr int kDraws = 600;
@@ -226,7 +230,8 @@ TEST(MotionModelBank, PredictiveNeesIsCalibrated) {
       }
     }
     const double mean_nees = sum / count;
-    EXPECT_NEAR(mean_nees, 1.0, 0.15) << "horizon " << horizon;
+    EXPECT_GE(mean_nees, 0.5) << "horizon " << horizon;
+    EXPECT_LE(mean_nees, 2.0) << "horizon " << horizon;
   }
 }
 
@@ -265,8 +270,10 @@ TEST(MotionModelBank, GapsAndOutliersLeaveEverythingFinite) {
   check("after the outlier's next frame");
 }
 
-// Every member keeps at least the floor: after an outlier that only the widest member could
-// explain, the others are floored at 1e-12, not zero, and recover within the memory.
+// Every member keeps at least the floor: after a 2 m jump that only the widest member could
+// explain, the others are floored at 1e-12, not zero. Their Student-t likelihood would read every
+// later position as an outlier and never follow; the second position beyond a member's gate
+// restarts it there, and constant position wins the still object again.
 TEST(MotionModelBank, NoMemberDiesForGood) {
   MotionModelBank bank;
   for (int k = 0; k < 60; ++k) bank.update(k / kRate, Eigen::Vector3d::Zero());
@@ -276,6 +283,26 @@ TEST(MotionModelBank, NoMemberDiesForGood) {
   for (int k = 61; k < 200; ++k) bank.update(k / kRate, Eigen::Vector3d(2.0, 0.0, 0.0));
   EXPECT_GT(still_before, 0.5);
   EXPECT_GT(bank.model_weight(0, MotionModel::kConstantPosition), 0.5);
+}
+
+// One detection 10 cm off a track at 1 m/s (5 mm noise, 2 s at 30 Hz), the next back on it: the
+// Student-t update takes the outlier with its noise widened by (1 + d^2) / 2, and no member
+// restarts on one surprise, so the mean velocity moves by under 0.01 m/s (0.6 mm/s) and the
+// prediction 0.1 s on stays within 1 cm of the track (2.5 mm). A Gaussian bank, whose weights
+// jump to its widest members, moves its mean velocity by 2.9 m/s and predicts 0.38 m off.
+TEST(MotionModelBank, AnIsolatedOutlierBarelyMovesTheBank) {
+  const AxisMotionModel model{MotionModel::kConstantVelocity, 0.03, 1.0, 0.0};
+  Drawn d =
+      draw(on_every_axis(model),
+           {kalman::Vector<2>(0.0, 1.0), kalman::Vector<2>::Zero(), kalman::Vector<2>::Zero()},
+           0.005, 60, 21);
+  const double before = d.bank.velocity()[0];
+  const double t = 60 / kRate;
+  const Eigen::Vector3d on_track(d.truth[0][0] + d.truth[0][1] / kRate, 0.0, 0.0);
+  d.bank.update(t, on_track + Eigen::Vector3d(0.1, 0.0, 0.0));
+  const double moved = std::abs(d.bank.velocity()[0] - before);
+  EXPECT_LT(moved, 0.01);
+  EXPECT_LT(std::abs(d.bank.predict(0.1).mean()[0] - (on_track[0] + 0.1 * d.truth[0][1])), 0.01);
 }
 
 // sample_member maps uniform draws to members in proportion to their weights: a stratified grid
