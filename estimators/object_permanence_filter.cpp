@@ -99,7 +99,7 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
 void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
                                       const Estimate& estimate) {
-  detector_jitter_.add(t, position, orientation);
+  detector_jitter_.add(t, orientation);
   update_banks(t, position, orientation);
   history_.push_back({t, translation_of(estimate.pose.mean), orientation_of(estimate.pose.mean)});
   while (history_.size() > options_.history_length) history_.pop_front();

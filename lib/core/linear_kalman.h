@@ -37,37 +37,80 @@ void predict(Vector<N>& mean, Matrix<N>& covariance, const Matrix<N>& transition
 }
 
 /// What an update did: the state correction K r it applied (an error-state filter injects it into
-/// its own mean), the innovation r and its log-likelihood under N(0, S).
+/// its own mean), the innovation r, its squared Mahalanobis distance d^2 = r^T S^-1 r under the
+/// S of the noise it was given (what a gate tests) and its log-likelihood.
 template <int N, int M>
 struct Correction {
   Vector<N> correction;
   Vector<M> innovation;
+  double squared_distance = 0.0;
   double log_likelihood = 0.0;
 };
 
-/// The update for a given innovation r (z - H x for a linear filter, a tangent-space difference
-/// for an error-state one): P <- (I - K H) P (I - K H)^T + K R K^T, symmetrised. The Joseph form
-/// keeps P symmetric positive definite under rounding, which the short form (I - K H) P does not
-/// once the gain is large. Returns K r without applying it. S must be positive definite (R is).
+namespace detail {
+
+/// Solves with a symmetric positive-definite S and gives log det S: a division when S is 1 x 1
+/// (a bank's per-axis update), an LDLT factorisation above.
+template <int M>
+class SymmetricSolver {
+ public:
+  explicit SymmetricSolver(const Matrix<M>& s) {
+    if constexpr (M == 1) {
+      inverse_ = 1.0 / s(0, 0);
+      log_det_ = std::log(s(0, 0));
+    } else {
+      ldlt_.compute(s);
+      log_det_ = ldlt_.vectorD().array().log().sum();  // det S = prod D of S = L D L^T
+    }
+  }
+  template <int Cols>
+  Matrix<M, Cols> solve(const Matrix<M, Cols>& b) const {
+    if constexpr (M == 1)
+      return inverse_ * b;
+    else
+      return ldlt_.solve(b);
+  }
+  double log_det() const { return log_det_; }
+
+ private:
+  Eigen::LDLT<Matrix<M>> ldlt_;
+  double inverse_ = 0.0;
+  double log_det_ = 0.0;
+};
+
+/// P <- (I - K H) P (I - K H)^T + K R K^T, symmetrised, with K = P H^T S^-1 solved as
+/// S K^T = H P (P and S symmetric); returns K r.
 template <int N, int M>
-Correction<N, M> update_covariance(Matrix<N>& covariance, const Matrix<M, N>& observation,
-                                   const Matrix<M>& noise, const Vector<M>& innovation) {
-  const Matrix<M> s = observation * covariance * observation.transpose() + noise;
-  const Eigen::LDLT<Matrix<M>> ldlt(s);
-  // K = P H^T S^-1, solved as S K^T = H P since both P and S are symmetric.
-  const Matrix<N, M> gain = ldlt.solve(observation * covariance).transpose();
+Vector<N> joseph_update(Matrix<N>& covariance, const Matrix<M, N>& observation,
+                        const Matrix<M>& noise, const Matrix<M, N>& hp, const SymmetricSolver<M>& s,
+                        const Vector<M>& innovation) {
+  const Matrix<N, M> gain = s.solve(hp).transpose();
   Matrix<N> a = Matrix<N>::Identity();
   a -= gain * observation;
   covariance = a * covariance * a.transpose() + gain * noise * gain.transpose();
   covariance = 0.5 * (covariance + covariance.transpose()).eval();
+  return gain * innovation;
+}
 
+}  // namespace detail
+
+/// The update for a given innovation r (z - H x for a linear filter, a tangent-space difference
+/// for an error-state one): P <- (I - K H) P (I - K H)^T + K R K^T, symmetrised. The Joseph form
+/// keeps P symmetric positive definite under rounding, which the short form (I - K H) P does not
+/// once the gain is large. Returns K r without applying it, and log N(r; 0, S). S must be positive
+/// definite (R is).
+template <int N, int M>
+Correction<N, M> update_covariance(Matrix<N>& covariance, const Matrix<M, N>& observation,
+                                   const Matrix<M>& noise, const Vector<M>& innovation) {
+  const Matrix<M, N> hp = observation * covariance;
+  const detail::SymmetricSolver<M> s(hp * observation.transpose() + noise);
   Correction<N, M> out;
-  out.correction = gain * innovation;
   out.innovation = innovation;
-  // log N(r; 0, S) = -(r^T S^-1 r + log det S + M log 2 pi) / 2; det S = prod D of S = L D L^T.
-  const double mahalanobis = innovation.dot(ldlt.solve(innovation));
-  const double log_det = ldlt.vectorD().array().log().sum();
-  out.log_likelihood = -0.5 * (mahalanobis + log_det + M * std::log(2.0 * std::numbers::pi));
+  out.squared_distance = innovation.dot(s.solve(innovation));
+  // log N(r; 0, S) = -(r^T S^-1 r + log det S + M log 2 pi) / 2.
+  out.log_likelihood =
+      -0.5 * (out.squared_distance + s.log_det() + M * std::log(2.0 * std::numbers::pi));
+  out.correction = detail::joseph_update(covariance, observation, noise, hp, s, innovation);
   return out;
 }
 
@@ -91,19 +134,22 @@ StudentTNoise student_t_noise(double dof) {
 /// Nebot, "Approximate inference in state-space models with heavy-tailed noise", IEEE Trans.
 /// Signal Processing 60(10), 2012), so the update is update_covariance's with R scaled by its
 /// inverse: a measurement far from the prediction moves the state less. The log-likelihood is
-/// the Student-t density's, log t_dof(r; 0, S).
+/// the Student-t density's, log t_dof(r; 0, S), and d^2 is under the unscaled S.
 template <int N, int M>
 Correction<N, M> update_covariance_student_t(Matrix<N>& covariance, const Matrix<M, N>& observation,
                                              const Matrix<M>& noise, const Vector<M>& innovation,
                                              const StudentTNoise& t) {
-  const Matrix<M> s = observation * covariance * observation.transpose() + noise;
-  const Eigen::LDLT<Matrix<M>> ldlt(s);
-  const double d2 = innovation.dot(ldlt.solve(innovation));
-  const double log_det = ldlt.vectorD().array().log().sum();
-  const Matrix<M> scaled = noise * ((t.dof + d2) / (t.dof + M));
-  Correction<N, M> out = update_covariance(covariance, observation, scaled, innovation);
-  out.log_likelihood =
-      t.log_normaliser - 0.5 * log_det - 0.5 * (t.dof + M) * std::log1p(d2 / t.dof);
+  const Matrix<M, N> hp = observation * covariance;
+  const Matrix<M> hpht = hp * observation.transpose();
+  const detail::SymmetricSolver<M> s(hpht + noise);
+  Correction<N, M> out;
+  out.innovation = innovation;
+  out.squared_distance = innovation.dot(s.solve(innovation));
+  out.log_likelihood = t.log_normaliser - 0.5 * s.log_det() -
+                       0.5 * (t.dof + M) * std::log1p(out.squared_distance / t.dof);
+  const Matrix<M> scaled = noise * ((t.dof + out.squared_distance) / (t.dof + M));
+  const detail::SymmetricSolver<M> s_scaled(hpht + scaled);
+  out.correction = detail::joseph_update(covariance, observation, scaled, hp, s_scaled, innovation);
   return out;
 }
 

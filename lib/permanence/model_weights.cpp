@@ -35,16 +35,28 @@ void ModelWeights::update(double dt, double memory, std::span<const double> log_
 
 void ModelWeights::normalise() {
   // exp relative to the largest, so a very negative log-likelihood (an outlier) cannot underflow
-  // every member at once.
+  // every member at once; the logs are shifted rather than recomputed, except where floored.
   const double top = *std::max_element(log_weights_.begin(), log_weights_.end());
   double sum = 0.0;
   for (std::size_t j = 0; j < weights_.size(); ++j)
     sum += weights_[j] = std::exp(log_weights_[j] - top);
+  const double log_sum = top + std::log(sum);
+  const double log_floor = std::log(kModelWeightFloor);
   double floored = 0.0;
-  for (double& w : weights_) floored += w = std::max(w / sum, kModelWeightFloor);
+  for (std::size_t j = 0; j < weights_.size(); ++j) {
+    weights_[j] /= sum;
+    if (weights_[j] < kModelWeightFloor) {
+      weights_[j] = kModelWeightFloor;
+      log_weights_[j] = log_floor;
+    } else {
+      log_weights_[j] -= log_sum;
+    }
+    floored += weights_[j];
+  }
+  const double log_floored = std::log(floored);
   for (std::size_t j = 0; j < weights_.size(); ++j) {
     weights_[j] /= floored;
-    log_weights_[j] = std::log(weights_[j]);
+    log_weights_[j] -= log_floored;
   }
 }
 

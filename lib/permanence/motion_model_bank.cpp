@@ -15,6 +15,9 @@ namespace {
 // The position is measured directly: H = [1 0].
 const kalman::Matrix<1, 2> kObservation(1.0, 0.0);
 
+// Intervals closer than a nanosecond are one frame rate: a member's step is reused across them.
+constexpr double kSameInterval = 1e-9;  // s
+
 // A translation member's gate: the chi-square 99.9% quantile with 1 degree of freedom.
 constexpr double kAxisGateChiSquare = 10.828;
 
@@ -110,17 +113,18 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
     log_likelihoods_.resize(filters_[axis].size());
     for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
       Filter& f = filters_[axis][j];
-      const AxisMotionStep step = models_[axis][j].step(dt);
-      kalman::predict(f.mean, f.covariance, step.transition, step.process_noise);
-      f.mean += step.offset;
-      const kalman::Vector<1> innovation = z - kObservation * f.mean;
-      const bool surprised =
-          innovation[0] * innovation[0] > kAxisGateChiSquare * (f.covariance(0, 0) + r);
-      f.surprises = surprised ? f.surprises + 1 : 0;
-      const auto correction = kalman::update_covariance_student_t(f.covariance, kObservation, noise,
-                                                                  innovation, noise_model_);
+      if (std::abs(dt - f.step_dt) > kSameInterval) {
+        f.step = models_[axis][j].step(dt);
+        f.step_dt = dt;
+      }
+      kalman::predict(f.mean, f.covariance, f.step.transition, f.step.process_noise);
+      f.mean += f.step.offset;
+      const auto correction = kalman::update_covariance_student_t(
+          f.covariance, kObservation, noise, kalman::Vector<1>(z - kObservation * f.mean),
+          noise_model_);
       f.mean += correction.correction;
       log_likelihoods_[j] = correction.log_likelihood;
+      f.surprises = correction.squared_distance > kAxisGateChiSquare ? f.surprises + 1 : 0;
       if (f.surprises >= kSurprisesToRestart)
         restart(f, models_[axis][j].model, position[axis], last_position_[axis], dt);
     }

@@ -107,6 +107,9 @@ class MotionModelBank {
     kalman::Vector<2> mean;
     kalman::Matrix<2> covariance;
     int surprises = 0;  ///< consecutive measurements outside the member's gate
+    /// The model's step over step_dt, reused while frames keep one rate.
+    double step_dt = -1.0;
+    AxisMotionStep step;
   };
   /// Restarts a member that has lost the object from the last two positions (two-point
   /// differencing: the velocity is their slope, v pinned at 0 for constant position).

@@ -56,10 +56,9 @@ void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) 
   for (std::size_t j = 0; j < filters_.size(); ++j) {
     TangentRotationFilter& f = filters_[j];
     f.predict(dt);
-    surprises_[j] = f.squared_distance(orientation, sigma * sigma) > kRotationGateChiSquare
-                        ? surprises_[j] + 1
-                        : 0;
-    log_likelihoods_[j] = f.update(orientation, sigma * sigma, noise_model_);
+    const auto correction = f.update(orientation, sigma * sigma, noise_model_);
+    log_likelihoods_[j] = correction.log_likelihood;
+    surprises_[j] = correction.squared_distance > kRotationGateChiSquare ? surprises_[j] + 1 : 0;
     if (surprises_[j] >= kSurprisesToRestart) {
       // Restarted from the last two orientations: the body rate is their difference's slope.
       const Eigen::Vector3d rate =

@@ -40,16 +40,9 @@ void TangentRotationFilter::predict(double dt) {
   kalman::predict_covariance(covariance_, m.transition, m.process_noise);
 }
 
-double TangentRotationFilter::squared_distance(const Eigen::Quaterniond& measured,
-                                               double variance) const {
-  const Eigen::Vector3d r = so3::difference(orientation_, measured);
-  const Eigen::Matrix3d s =
-      covariance_.topLeftCorner<3, 3>() + variance * Eigen::Matrix3d::Identity();
-  return r.dot(s.ldlt().solve(r));
-}
-
-double TangentRotationFilter::update(const Eigen::Quaterniond& measured, double variance,
-                                     const std::optional<kalman::StudentTNoise>& heavy_tails) {
+kalman::Correction<6, 3> TangentRotationFilter::update(
+    const Eigen::Quaterniond& measured, double variance,
+    const std::optional<kalman::StudentTNoise>& heavy_tails) {
   kalman::Matrix<3, 6> h = kalman::Matrix<3, 6>::Zero();
   h.leftCols<3>().setIdentity();
   const Eigen::Matrix3d noise = variance * Eigen::Matrix3d::Identity();
@@ -63,7 +56,7 @@ double TangentRotationFilter::update(const Eigen::Quaterniond& measured, double 
   orientation_ = (orientation_ * so3::exp(correction.correction.head<3>())).normalized();
   if (model_ == RotationModel::kConstantAngularVelocity)
     angular_velocity_ += correction.correction.tail<3>();
-  return correction.log_likelihood;
+  return correction;
 }
 
 TangentRotationFilter::Prediction TangentRotationFilter::predicted(double horizon) const {

@@ -41,15 +41,14 @@ class TangentRotationFilter {
                   const Eigen::Vector3d& rate = Eigen::Vector3d::Zero());
   /// Steps the state over dt >= 0 (s).
   void predict(double dt);
-  /// The squared Mahalanobis distance of a measured orientation of tangent variance `variance`
-  /// from the filter's orientation, under S = P_tt + variance I.
-  double squared_distance(const Eigen::Quaterniond& measured, double variance) const;
   /// Updates with a measured orientation of tangent variance `variance` (rad^2 per axis), its
   /// noise Gaussian or, given `heavy_tails`, Student-t of that scale
-  /// (kalman::update_covariance_student_t); returns the innovation's log-likelihood under it.
-  /// The quaternion's sign is irrelevant.
-  double update(const Eigen::Quaterniond& measured, double variance,
-                const std::optional<kalman::StudentTNoise>& heavy_tails = std::nullopt);
+  /// (kalman::update_covariance_student_t); returns the update's correction, with the
+  /// innovation's squared distance and log-likelihood under that noise. The quaternion's sign is
+  /// irrelevant.
+  kalman::Correction<6, 3> update(
+      const Eigen::Quaterniond& measured, double variance,
+      const std::optional<kalman::StudentTNoise>& heavy_tails = std::nullopt);
 
   /// The orientation `horizon` s ahead and its tangent covariance (rad^2) there.
   struct Prediction {

@@ -98,6 +98,8 @@ TEST(LinearKalman, StudentTUpdateScalesTheNoiseByTheInnovationsDistance) {
   EXPECT_NEAR(c.correction[0], 1.5 * 2.1 / 2.8875, 1e-15);
   EXPECT_EQ(c.correction, gaussian.correction);
   EXPECT_EQ(p, expected_p);
+  // d^2 under the unscaled S = 2.1 + 0.9: what a gate tests.
+  EXPECT_NEAR(c.squared_distance, 1.5 * 1.5 / 3.0, 1e-15);
   // The Cauchy density of 1.5 with scale sqrt(3): 1 / (pi sqrt(3) (1 + 0.75)).
   EXPECT_NEAR(c.log_likelihood, -std::log(std::numbers::pi * std::sqrt(3.0) * 1.75), 1e-14);
 
@@ -127,6 +129,9 @@ TEST(LinearKalman, StudentTTendsToTheGaussianAsItsDegreesOfFreedomGrow) {
   // differ by O(d^4 / 10^6): a few parts in a million.
   const auto t = update_covariance_student_t<3, 3>(p_t, h, r, innovation, student_t_noise<3>(1e6));
   EXPECT_NEAR(t.log_likelihood, gaussian.log_likelihood, 1e-5);
+  const double d2 = innovation.dot((p + r).inverse() * innovation);
+  EXPECT_NEAR(gaussian.squared_distance, d2, 1e-12);
+  EXPECT_NEAR(t.squared_distance, d2, 1e-12);
   EXPECT_TRUE(t.correction.isApprox(gaussian.correction, 1e-5));
   EXPECT_TRUE(p_t.isApprox(p_gauss, 1e-5));
 }

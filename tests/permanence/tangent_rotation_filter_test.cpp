@@ -63,14 +63,15 @@ TEST(TangentRotationFilter, OneStepMatchesTheHandComputedGain) {
 }
 
 // The first update's log-likelihood is log N(r; 0, S), S = (sigma_0^2 + var) I, r the tangent
-// difference: here r = (0.03, 0, 0), S = 0.02 I.
-TEST(TangentRotationFilter, UpdateReturnsTheInnovationsLogLikelihood) {
+// difference, and its squared distance r^T S^-1 r: here r = (0.03, 0, 0), S = 0.02 I.
+TEST(TangentRotationFilter, UpdateReturnsTheInnovationsDistanceAndLogLikelihood) {
   TangentRotationFilter filter(RotationModel::kConstantAngularVelocity, 1.0);
   filter.initialise(Eigen::Quaterniond::Identity(), 0.1, 1.0);
-  const double l = filter.update(so3::exp(Eigen::Vector3d(0.03, 0.0, 0.0)), 0.01);
+  const auto update = filter.update(so3::exp(Eigen::Vector3d(0.03, 0.0, 0.0)), 0.01);
   const double expected =
       -0.5 * (0.03 * 0.03 / 0.02 + 3.0 * std::log(0.02) + 3.0 * std::log(2.0 * std::numbers::pi));
-  EXPECT_NEAR(l, expected, 1e-12);
+  EXPECT_NEAR(update.log_likelihood, expected, 1e-12);
+  EXPECT_NEAR(update.squared_distance, 0.03 * 0.03 / 0.02, 1e-12);
   EXPECT_EQ(rotation_model_name(RotationModel::kConstantOrientation), "constant_orientation");
   EXPECT_EQ(rotation_model_name(RotationModel::kConstantAngularVelocity),
             "constant_angular_velocity");
