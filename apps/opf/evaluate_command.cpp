@@ -144,9 +144,13 @@ MeanStd mean_std_defined(const std::vector<double>& values) {
   return mean_std(defined);
 }
 
+// Over one seed there is no spread to print: the mean alone.
 std::string cell(const MeanStd& value) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.5f +- %.5f", value.mean, value.std);
+  if (value.has_spread())
+    std::snprintf(buffer, sizeof buffer, "%.5f +- %.5f", value.mean, value.std);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.5f", value.mean);
   return buffer;
 }
 
@@ -346,11 +350,16 @@ int evaluate_command(const std::vector<std::string>& raw) {
   const TruthTable truth(read_measurement_log(truth_path, truth_options),
                          std::max(log.report.frame_tolerance, kExactTimeTolerance));
 
-  std::printf("opf evaluate: %s, %zu frames, %zu objects, %zu seeds, %zu + %zu particles\n\n",
+  std::printf("opf evaluate: %s, %zu frames, %zu objects, %zu %s, %zu + %zu particles\n\n",
               in.c_str(), log.frames.size(), log.objects.size(), seeds,
-              settings.pf.translation_particles, settings.pf.rotation_particles);
-  std::printf("errors against the truth, each run's mean over frames (mean +- std over %zu %s)\n",
-              seeds, seeds == 1 ? "seed" : "seeds");
+              seeds == 1 ? "seed" : "seeds", settings.pf.translation_particles,
+              settings.pf.rotation_particles);
+  if (seeds == 1)
+    std::printf("errors against the truth, each run's mean over frames (1 seed: no spread)\n");
+  else
+    std::printf(
+        "errors against the truth, each run's mean over frames (mean +- std over %zu seeds)\n",
+        seeds);
   std::printf("%-10s %-22s %-22s %-22s %-22s\n", "estimator", "translation [m]",
               "rotation paper [rad]", "rotation geodesic", "transl. unobserved [m]");
   std::vector<Row> rows;

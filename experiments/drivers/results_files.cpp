@@ -52,9 +52,13 @@ MeanStd metric_of(const std::vector<RunErrors>& runs, Metric metric) {
   return mean_std(values);
 }
 
+// Over one run there is no spread to print: the mean alone.
 std::string cell(const MeanStd& m) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.5f +- %.2e", m.mean, m.std);
+  if (m.has_spread())
+    std::snprintf(buffer, sizeof buffer, "%.5f +- %.2e", m.mean, m.std);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.5f", m.mean);
   return buffer;
 }
 
@@ -230,9 +234,10 @@ void write_summary_json(const std::filesystem::path& path,
 }
 
 std::string results_table_title(const std::string& experiment, std::size_t seeds) {
-  return experiment +
-         ": errors of the objects of interest, each run's mean over frames (mean +- std over " +
-         std::to_string(seeds) + (seeds == 1 ? " seed)" : " seeds)");
+  const std::string prefix =
+      experiment + ": errors of the objects of interest, each run's mean over frames ";
+  if (seeds == 1) return prefix + "(1 seed: no spread)";
+  return prefix + "(mean +- std over " + std::to_string(seeds) + " seeds)";
 }
 
 namespace {

@@ -107,8 +107,11 @@ void print_sweep_summary(std::ostream& out, const std::filesystem::path& csv) {
     char line[128] = "no finished run";
     if (!translation.empty()) {
       const MeanStd t = mean_std(translation), r = mean_std(rotation);
-      std::snprintf(line, sizeof line, "%.5f +- %.2e   %.5f +- %.2e  (%zu seeds)", t.mean, t.std,
-                    r.mean, r.std, translation.size());
+      if (t.has_spread())
+        std::snprintf(line, sizeof line, "%.5f +- %.2e   %.5f +- %.2e  (%zu seeds)", t.mean, t.std,
+                      r.mean, r.std, translation.size());
+      else
+        std::snprintf(line, sizeof line, "%.5f   %.5f  (1 seed: no spread)", t.mean, r.mean);
     }
     out << "  " << key << "  ->  " << line;
     if (missing.count(key)) out << "  [" << missing[key] << " missing]";

@@ -32,10 +32,10 @@ MeanStd mean_std(std::span<const double> values) {
   double sum = 0.0;
   for (double v : values) sum += v;
   const double mean = sum / static_cast<double>(values.size());
-  if (values.size() < 2) return {mean, 0.0};
+  if (values.size() < 2) return {mean, 0.0, values.size()};
   double squares = 0.0;
   for (double v : values) squares += (v - mean) * (v - mean);
-  return {mean, std::sqrt(squares / static_cast<double>(values.size() - 1))};
+  return {mean, std::sqrt(squares / static_cast<double>(values.size() - 1)), values.size()};
 }
 
 }  // namespace opf

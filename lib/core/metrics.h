@@ -4,6 +4,7 @@
 
 #include <mrpt/poses/CPose3D.h>
 
+#include <cstddef>
 #include <span>
 
 namespace opf {
@@ -23,7 +24,11 @@ double rotation_error_geodesic(const mrpt::poses::CPose3D& estimate,
 
 struct MeanStd {
   double mean = 0.0;
-  double std = 0.0;  ///< sample standard deviation (n - 1); 0 for fewer than two values
+  double std = 0.0;       ///< sample standard deviation (n - 1); 0 for fewer than two values
+  std::size_t count = 0;  ///< the values it is over (0: not recorded)
+
+  /// Whether `std` describes a spread: over two values or more, or given without a count.
+  bool has_spread() const { return count != 1; }
 };
 
 /// Mean and sample standard deviation; throws std::invalid_argument on an empty input.

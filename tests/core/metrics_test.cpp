@@ -56,7 +56,11 @@ TEST(Metrics, MeanStdUsesTheSampleStandardDeviation) {
   const MeanStd m = mean_std(v);
   EXPECT_DOUBLE_EQ(m.mean, 2.5);
   EXPECT_NEAR(m.std, 1.2909944487358056, 1e-15);  // sqrt(5 / 3); over n, 1.118
-  EXPECT_DOUBLE_EQ(mean_std(std::vector<double>{7.0}).std, 0.0);
+  EXPECT_EQ(m.count, 4u);
+  EXPECT_TRUE(m.has_spread());
+  const MeanStd one = mean_std(std::vector<double>{7.0});
+  EXPECT_DOUBLE_EQ(one.std, 0.0);
+  EXPECT_FALSE(one.has_spread());
   EXPECT_THROW(mean_std(std::vector<double>{}), std::invalid_argument);
 }
 

@@ -14,7 +14,24 @@ TEST(ResultsFiles, TheTableSaysOnceThatItIsTheMeanAndStdOverTheSeeds) {
   EXPECT_EQ(results_table_title("general_op", 5),
             "general_op: errors of the objects of interest, each run's mean over frames (mean +- "
             "std over 5 seeds)");
-  EXPECT_TRUE(results_table_title("baseball", 1).ends_with("(mean +- std over 1 seed)"));
+  EXPECT_TRUE(results_table_title("baseball", 1).ends_with("(1 seed: no spread)"));
+}
+
+// One seed has no spread: its table prints the means alone, never "+- 0.00e+00".
+TEST(ResultsFiles, OneSeedPrintsTheMeansWithoutASpread) {
+  ExperimentResults x;
+  x.experiment = "throw";
+  x.estimators = {"opf"};
+  x.seeds = 1;
+  RunErrors run;
+  run.translation = 0.25;
+  x.runs["opf"].push_back(run);
+  std::ostringstream table;
+  print_results_table(table, {x});
+  const std::string text = table.str();
+  EXPECT_NE(text.find("(1 seed: no spread)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  opf        0.25000   "), std::string::npos) << text;
+  EXPECT_EQ(text.find("+-"), std::string::npos) << text;
 }
 
 TEST(ResultsFiles, TheTableAndSummaryGiveTheSampleStandardDeviation) {
