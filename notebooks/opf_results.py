@@ -112,7 +112,7 @@ def directory_from_env(variable, default):
     return os.environ.get(variable, os.path.join(REPO, default))
 
 
-def benchmark_from_env(default="bench/results/intel-xeon-2cpu-2026-11-26.json"):
+def benchmark_from_env(default="bench/results/amd-epyc-2cpu-2026-11-28.json"):
     """The benchmark report: OPF_BENCH, else the one under bench/results/."""
     return os.environ.get("OPF_BENCH", os.path.join(REPO, default))
 
