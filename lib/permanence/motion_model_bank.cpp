@@ -87,14 +87,9 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
     throw std::invalid_argument("MotionModelBank: update() with a non-finite time or position");
   const double r = options_.observation_noise * options_.observation_noise;
   if (!initialised_) {
-    const double sigma_v = options_.initial_velocity_std;
     for (int axis = 0; axis < 3; ++axis) {
-      for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
-        Filter& f = filters_[axis][j];
-        const bool pinned = models_[axis][j].model == MotionModel::kConstantPosition;
-        f.mean << position[axis], 0.0;
-        f.covariance << r, 0.0, 0.0, pinned ? 0.0 : sigma_v * sigma_v;
-      }
+      for (std::size_t j = 0; j < filters_[axis].size(); ++j)
+        start(filters_[axis][j], models_[axis][j].model, position[axis], position[axis], 0.0);
       weights_[axis].reset();
     }
     t_ = t;
@@ -126,15 +121,15 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
       log_likelihoods_[j] = correction.log_likelihood;
       f.surprises = correction.squared_distance > kAxisGateChiSquare ? f.surprises + 1 : 0;
       if (f.surprises >= kSurprisesToRestart)
-        restart(f, models_[axis][j].model, position[axis], last_position_[axis], dt);
+        start(f, models_[axis][j].model, position[axis], last_position_[axis], dt);
     }
     weights_[axis].update(dt, options_.memory, log_likelihoods_);
   }
   last_position_ = position;
 }
 
-void MotionModelBank::restart(Filter& filter, MotionModel model, double position, double previous,
-                              double dt) const {
+void MotionModelBank::start(Filter& filter, MotionModel model, double position, double previous,
+                            double dt) const {
   const double r = options_.observation_noise * options_.observation_noise;
   filter.surprises = 0;
   if (model == MotionModel::kConstantPosition) {
@@ -143,7 +138,7 @@ void MotionModelBank::restart(Filter& filter, MotionModel model, double position
   } else if (dt > 0.0) {  // p = z2, v = (z2 - z1) / dt: var p = r, cov = r / dt, var v = 2 r / dt^2
     filter.mean << position, (position - previous) / dt;
     filter.covariance << r, r / dt, r / dt, 2.0 * r / (dt * dt);
-  } else {  // two measurements at one time carry no velocity: the prior's
+  } else {  // the first measurement, or two at one time, carry no velocity: the prior's
     const double v = options_.initial_velocity_std;
     filter.mean << position, 0.0;
     filter.covariance << r, 0.0, 0.0, v * v;

@@ -111,10 +111,10 @@ class MotionModelBank {
     double step_dt = -1.0;
     AxisMotionStep step;
   };
-  /// Restarts a member that has lost the object from the last two positions (two-point
-  /// differencing: the velocity is their slope, v pinned at 0 for constant position).
-  void restart(Filter& filter, MotionModel model, double position, double previous,
-               double dt) const;
+  /// Starts a member from its first position (dt = 0: velocity 0 with initial_velocity_std), or
+  /// restarts one that has lost the object from the last two positions (two-point differencing:
+  /// the velocity is their slope); v pinned at 0 for constant position.
+  void start(Filter& filter, MotionModel model, double position, double previous, double dt) const;
 
   MotionModelBankOptions options_;
   std::array<std::vector<AxisMotionModel>, 3> models_;
