@@ -39,13 +39,13 @@ Estimate ConstantVelocityKalman::initialise(double t,
 }
 
 Estimate ConstantVelocityKalman::step(double t, const mrpt::poses::CPose3D* measurement,
-                                      const EnsembleView& /*ensemble*/) {
+                                      const EnsembleView& ensemble) {
   if (!initialised_) throw std::logic_error("ConstantVelocityKalman: step() before initialise()");
   const double dt = time_step("ConstantVelocityKalman", t_, t);
   t_ = t;
   predict(dt);
   if (measurement == nullptr) return make_estimate(EstimateMode::kPredicted);
-  update(*measurement);
+  update(*measurement, stated_extra_noise(ensemble, measurement));
   return make_estimate(EstimateMode::kMeasured);
 }
 
@@ -56,8 +56,8 @@ void ConstantVelocityKalman::predict(double dt) {
   rotation_.predict(dt);
 }
 
-void ConstantVelocityKalman::update(const mrpt::poses::CPose3D& measurement) {
-  const double sigma_t = options_.observation_noise_translation;
+void ConstantVelocityKalman::update(const mrpt::poses::CPose3D& measurement, double extra_noise) {
+  const double sigma_t = observation_sigma(options_.observation_noise_translation, extra_noise);
   kalman::update<6, 3>(translation_, translation_covariance_, position_observation(),
                        sigma_t * sigma_t * Eigen::Matrix3d::Identity(),
                        translation_of(measurement));

@@ -27,7 +27,8 @@ class ConstantVelocityKalman final : public Estimator {
 
  private:
   void predict(double dt);
-  void update(const mrpt::poses::CPose3D& measurement);
+  /// `extra_noise` (m): the detector's stated extra noise of the measurement (observation_sigma).
+  void update(const mrpt::poses::CPose3D& measurement, double extra_noise);
   Estimate make_estimate(EstimateMode mode) const;
 
   CvKalmanOptions options_;

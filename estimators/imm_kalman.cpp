@@ -41,23 +41,23 @@ Estimate ImmKalman::initialise(double t, const mrpt::poses::CPose3D& first_measu
 }
 
 Estimate ImmKalman::step(double t, const mrpt::poses::CPose3D* measurement,
-                         const EnsembleView& /*ensemble*/) {
+                         const EnsembleView& ensemble) {
   if (!initialised_) throw std::logic_error("ImmKalman: step() before initialise()");
   const double dt = time_step("ImmKalman", t_, t);
   t_ = t;
   const double sigma_r = options_.observation_noise_rotation;
   rotation_.predict(dt);
   if (measurement == nullptr) {
-    predict_and_update(dt, nullptr);
+    predict_and_update(dt, nullptr, 0.0);
     return make_estimate(EstimateMode::kPredicted);
   }
   const Eigen::Vector3d position = translation_of(*measurement);
-  predict_and_update(dt, &position);
+  predict_and_update(dt, &position, stated_extra_noise(ensemble, measurement));
   rotation_.update(orientation_of(*measurement), sigma_r * sigma_r);
   return make_estimate(EstimateMode::kMeasured);
 }
 
-void ImmKalman::predict_and_update(double dt, const Eigen::Vector3d* position) {
+void ImmKalman::predict_and_update(double dt, const Eigen::Vector3d* position, double extra_noise) {
   // Markov switching in continuous time: a model is left at the rate 1/tau, to each other one
   // equally (generator G = (J - M I) / ((M - 1) tau), M models, J all ones). Over dt the chain
   // moves by exp(G dt): P(i -> j) = (1 - exp(-M dt / ((M - 1) tau))) / M for j != i, the rest
@@ -71,7 +71,7 @@ void ImmKalman::predict_and_update(double dt, const Eigen::Vector3d* position) {
       kalman::constant_position_model(options_.position_noise, dt),
       kalman::constant_velocity_model(options_.acceleration_noise, dt),
       kalman::constant_acceleration_model(options_.jerk_noise, dt)};
-  const double sigma_t = options_.observation_noise_translation;
+  const double sigma_t = observation_sigma(options_.observation_noise_translation, extra_noise);
   const kalman::Matrix<1> noise = kalman::Matrix<1>::Constant(sigma_t * sigma_t);
 
   for (int axis = 0; axis < 3; ++axis) {

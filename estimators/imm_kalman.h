@@ -56,7 +56,8 @@ class ImmKalman final : public Estimator {
   };
   using Bank = std::array<Gaussian, kModels>;  ///< one axis's model-matched filters
 
-  void predict_and_update(double dt, const Eigen::Vector3d* position);
+  /// `extra_noise` (m): the detector's stated extra noise of the position (observation_sigma).
+  void predict_and_update(double dt, const Eigen::Vector3d* position, double extra_noise);
   void combine();
   Estimate make_estimate(EstimateMode mode) const;
 

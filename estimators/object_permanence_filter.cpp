@@ -92,15 +92,15 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
   hidden_ = false;
   initialised_ = true;
   const Estimate estimate = make_estimate(hypotheses_[0], 0);
-  remember(t, translation_of(first), orientation_of(first), estimate);
+  remember(t, translation_of(first), orientation_of(first), estimate, 0.0);
   return estimate;
 }
 
 void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
-                                      const Estimate& estimate) {
+                                      const Estimate& estimate, double extra_noise) {
   detector_jitter_.add(t, orientation);
-  update_banks(t, position, orientation);
+  update_banks(t, position, orientation, extra_noise);
   history_.push_back({t, translation_of(estimate.pose.mean), orientation_of(estimate.pose.mean)});
   while (history_.size() > options_.history_length) history_.pop_front();
 }
@@ -111,35 +111,37 @@ void ObjectPermanenceFilter::restart_banks() {
   held_.reset();
 }
 
-bool ObjectPermanenceFilter::bank_expects(double t, const Eigen::Vector3d& position) const {
+bool ObjectPermanenceFilter::bank_expects(double t, const Eigen::Vector3d& position,
+                                          double extra_noise) const {
   if (!translation_bank_.initialised()) return true;
   const BankPrediction p = translation_bank_.predict(t - translation_bank_.last_time());
-  const double r = translation_bank_.options().observation_noise;
+  const double r = observation_sigma(translation_bank_.options().observation_noise, extra_noise);
   const Eigen::Vector3d innovation = position - p.mean();
   const Eigen::Vector3d variance = p.variance().array() + r * r;
   return innovation.cwiseAbs2().cwiseQuotient(variance).sum() <= kBankGateChiSquare;
 }
 
 void ObjectPermanenceFilter::update_banks(double t, const Eigen::Vector3d& position,
-                                          const Eigen::Quaterniond& orientation) {
+                                          const Eigen::Quaterniond& orientation,
+                                          double extra_noise) {
   // A validation gate with two-in-a-row confirmation: one measurement the models cannot explain
   // is held back (a wrong detection must not set the velocity the particles drift by); when the
   // next one is outside too, both are taken (the object moved as no model predicted).
-  if (!bank_expects(t, position)) {
+  if (!bank_expects(t, position, extra_noise)) {
     if (!held_) {
-      held_ = HeldMeasurement{t, position, orientation};
+      held_ = HeldMeasurement{t, position, orientation, extra_noise};
       return;
     }
     take_held_measurement();
   }
   held_.reset();
-  translation_bank_.update(t, position);
+  translation_bank_.update(t, position, extra_noise);
   rotation_bank_.update(t, orientation);
 }
 
 void ObjectPermanenceFilter::take_held_measurement() {
   if (!held_) return;
-  translation_bank_.update(held_->t, held_->position);
+  translation_bank_.update(held_->t, held_->position, held_->extra_noise);
   rotation_bank_.update(held_->t, held_->orientation);
   held_.reset();
 }
@@ -179,7 +181,10 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
   const double last_seen = t_;
   t_ = t;
 
-  if (measurement) return update(t, dt, *measurement);
+  if (measurement) {
+    return update(t, dt, *measurement,
+                  options_.stated_noise ? stated_extra_noise(ensemble, measurement) : 0.0);
+  }
   if (!hidden_) {
     hidden_ = true;
     hidden_since_ = last_seen;
@@ -192,7 +197,8 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
 }
 
 Estimate ObjectPermanenceFilter::update(double t, double dt,
-                                        const mrpt::poses::CPose3D& measurement) {
+                                        const mrpt::poses::CPose3D& measurement,
+                                        double extra_noise) {
   // The object was seen in the previous frame too: the banks' velocity carries the particles.
   const bool drifts = options_.velocity_drift && !hidden_ && !history_.empty();
   for (std::size_t i = 0; i < hypotheses_.size(); ++i) {
@@ -203,12 +209,19 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   }
   const Eigen::Vector3d position = translation_of(measurement);
   const Eigen::Quaterniond orientation = orientation_of(measurement);
+  // This detection's noise in every likelihood it enters, the hypotheses' evidence included; the
+  // configured noise again afterwards, for the virtual measurements of a gap (paper Eq. 14).
+  const double configured = options_.particles.observation_noise_translation;
+  for (Hypothesis& each : hypotheses_)
+    each.filter.set_translation_likelihood_noise(
+        Eigen::Vector3d::Constant(observation_sigma(configured, extra_noise)));
   keep_hypothesis_explaining(position);
   Hypothesis& h = hypotheses_[0];
   const EstimateMode hidden_by = h.motion ? h.motion->mode() : EstimateMode::kMeasured;
   if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
   const bool lost = h.filter.update_with_measurement(
       position, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
+  h.filter.set_translation_likelihood_noise(Eigen::Vector3d::Constant(configured));
   const ResampleReport report = h.filter.normalise_and_resample();
   h.motion.reset();
   h.last = {h.filter.observation_trace(1.0),
@@ -227,7 +240,7 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   hidden_ = false;
   // The history sample holds the estimate itself: its moments are computed once per step.
   const Estimate estimate = make_estimate(h, 0);
-  remember(t, position, orientation, estimate);
+  remember(t, position, orientation, estimate, extra_noise);
   return estimate;
 }
 

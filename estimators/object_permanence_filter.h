@@ -54,11 +54,13 @@ class ObjectPermanenceFilter final : public Estimator {
 
   void restart_banks();
   /// Whether a measured position lies within the translation bank's validation gate.
-  bool bank_expects(double t, const Eigen::Vector3d& position) const;
+  bool bank_expects(double t, const Eigen::Vector3d& position, double extra_noise) const;
+  /// `extra_noise` (m): the detector's stated extra noise of the detection
+  /// (Detection::extra_noise).
   void update_banks(double t, const Eigen::Vector3d& position,
-                    const Eigen::Quaterniond& orientation);
+                    const Eigen::Quaterniond& orientation, double extra_noise);
   void take_held_measurement();
-  Estimate update(double t, double dt, const mrpt::poses::CPose3D& measurement);
+  Estimate update(double t, double dt, const mrpt::poses::CPose3D& measurement, double extra_noise);
   void start_occlusion(double last_seen, const EnsembleView& ensemble);
   /// The motion test (paper Eq. 10-11, or the fitted displacement) over the history.
   bool history_moves() const;
@@ -73,7 +75,7 @@ class ObjectPermanenceFilter final : public Estimator {
   /// The rotation likelihood's spread from the detector's own jitter (adaptive_rotation_noise).
   void adapt_rotation_noise(Hypothesis& hypothesis);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
-                const Estimate& estimate);
+                const Estimate& estimate, double extra_noise);
   void keep_hypothesis_explaining(const Eigen::Vector3d& position);
   /// The negative information: each hypothesis whose place the camera would see, while no
   /// detection arrives, loses probability by the detector's miss probability.
@@ -105,6 +107,7 @@ class ObjectPermanenceFilter final : public Estimator {
     double t;
     Eigen::Vector3d position;
     Eigen::Quaterniond orientation;
+    double extra_noise;
   };
   std::optional<HeldMeasurement> held_;
   double t_ = 0.0;

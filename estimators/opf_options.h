@@ -99,6 +99,10 @@ struct OpfOptions {
   /// configured observation_noise.rotation and that value: a likelihood wider than the detector's
   /// noise trails every turn by a share of it. false: the configured value, always (the paper's).
   bool adaptive_rotation_noise = true;
+  /// A detection's stated extra noise (Detection::extra_noise: a partial view's, the log's
+  /// `extra_noise` column) adds in variance to the translation's observation noise, in the
+  /// likelihood and the banks (observation_sigma). false: the configured Q alone (paper Eq. 5).
+  bool stated_noise = true;
   /// At the first measurement after a gap, where the translation likelihood would leave fewer
   /// than this share of the particles effective (the object turns up in the far tail of the
   /// cloud the gap left), the translation takes the Gaussian posterior of the cloud's moments and
@@ -127,6 +131,7 @@ void describe_options(Visitor& v, OpfOptions& o) {
   v.flag("carry_particles", o.carry_particles);
   v.flag("velocity_drift", o.velocity_drift);
   v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
+  v.flag("stated_noise", o.stated_noise);
   v.number("reacquisition_gaussian_share", o.reacquisition_gaussian_share,
            between(0.0, 1.0, "a share from 0 to 1"));
   v.section("dynamics", [&] {

@@ -20,7 +20,7 @@ Estimate StandardParticleFilter::initialise(double t, const mrpt::poses::CPose3D
 }
 
 Estimate StandardParticleFilter::step(double t, const mrpt::poses::CPose3D* measurement,
-                                      const EnsembleView& /*ensemble*/) {
+                                      const EnsembleView& ensemble) {
   if (!initialised_) throw std::logic_error("StandardParticleFilter::step before initialise");
   if (!(t > last_t_)) {
     std::ostringstream msg;
@@ -30,9 +30,13 @@ Estimate StandardParticleFilter::step(double t, const mrpt::poses::CPose3D* meas
   filter_.predict(t - last_t_);
   last_t_ = t;
   RecoveryEvents recovery;
-  if (measurement)
+  if (measurement) {
+    filter_.set_translation_likelihood_noise(
+        Eigen::Vector3d::Constant(observation_sigma(filter_.options().observation_noise_translation,
+                                                    stated_extra_noise(ensemble, measurement))));
     recovery.sensor_reset =
         filter_.update_with_measurement(translation_of(*measurement), orientation_of(*measurement));
+  }
   last_report_ = filter_.normalise_and_resample();
   recovery.weights_underflow = last_report_.weights_underflow();
   return make_estimate(t, measurement ? EstimateMode::kMeasured : EstimateMode::kPredicted,

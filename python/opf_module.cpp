@@ -112,8 +112,9 @@ void bind_tracker(py::module_& m) {
            "paper (the config applies on top); camera: [X, Y, Z] or \"X,Y,Z\" (m), where the "
            "occluder module's line of sight starts, as opf track --camera")
       .def("step", &PyTracker::step, py::arg("t"), py::arg("detections"),
-           "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}. "
-           "Returns {object: Estimate} for every object seen so far. A non-finite or malformed "
+           "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}, "
+           "an eighth number the detection's stated extra noise (m). Returns {object: Estimate} "
+           "for every object seen so far. A non-finite or malformed "
            "input raises ValueError naming the object and the field, and leaves the tracker as "
            "it was.")
       .def_property_readonly("hypotheses", &PyTracker::hypotheses,

@@ -38,11 +38,17 @@ std::vector<double> pose_fields(const std::string& object, const py::object& pos
                                 ": expected a pose [x, y, z, qx, qy, qz, qw] or None, got " +
                                 py::cast<std::string>(py::repr(pose)));
   }
-  if (p.size() != kPoseFields.size())
-    throw std::invalid_argument(where + ": expected 7 pose fields [x, y, z, qx, qy, qz, qw], got " +
+  if (p.size() != kPoseFields.size() && p.size() != kPoseFields.size() + 1)
+    throw std::invalid_argument(where +
+                                ": expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with "
+                                "extra_noise), got " +
                                 std::to_string(p.size()));
-  for (std::size_t i = 0; i < p.size(); ++i)
+  for (std::size_t i = 0; i < kPoseFields.size(); ++i)
     require_finite(p[i], where + ", field '" + kPoseFields[i] + "'");
+  // An eighth number: the detector's stated extra noise (m), as the log's extra_noise column.
+  if (p.size() > kPoseFields.size() && !(std::isfinite(p.back()) && p.back() >= 0.0))
+    throw std::invalid_argument(where + ", field 'extra_noise': expected a standard deviation >= " +
+                                "0, got " + csv::format_double(p.back()));
   return p;
 }
 
@@ -62,8 +68,9 @@ Frame frame_from(double t, const std::map<std::string, py::object>& detections) 
                                   "', fields 'qx,qy,qz,qw': expected a unit quaternion (norm "
                                   "within 0.01 of 1), got norm " +
                                   csv::format_double(q.norm()));
-    frame.detections.push_back(
-        {object, make_pose(Eigen::Vector3d(p[0], p[1], p[2]), q.normalized())});
+    frame.detections.push_back({object,
+                                make_pose(Eigen::Vector3d(p[0], p[1], p[2]), q.normalized()),
+                                p.size() > kPoseFields.size() ? p.back() : 0.0});
   }
   return frame;
 }

@@ -1,5 +1,6 @@
 #include "opf/core/estimator.h"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -14,6 +15,16 @@ double time_step(std::string_view estimator, double previous, double t) {
     throw std::invalid_argument(msg.str());
   }
   return dt;
+}
+
+double stated_extra_noise(const EnsembleView& view, const mrpt::poses::CPose3D* measurement) {
+  for (const Detection& detection : view.frame.detections)
+    if (&detection.pose == measurement) return detection.extra_noise;
+  return 0.0;
+}
+
+double observation_sigma(double configured, double extra_noise) {
+  return std::hypot(configured, extra_noise);
 }
 
 }  // namespace opf

@@ -25,6 +25,15 @@ struct EnsembleView {
 /// `t` does not follow `previous`, so a filter is never stepped backwards or by zero.
 double time_step(std::string_view estimator, double previous, double t);
 
+/// m: the extra noise the detector states for `measurement` (Detection::extra_noise of the view's
+/// detection whose pose it points at, as the Tracker passes them); 0 for nullptr or a pose from
+/// anywhere else.
+double stated_extra_noise(const EnsembleView& view, const mrpt::poses::CPose3D* measurement);
+
+/// The observation noise of one detection (m or rad): the configured sigma and the detection's
+/// stated extra noise, independent errors, added in variance: sqrt(configured^2 + extra^2).
+double observation_sigma(double configured, double extra_noise);
+
 class Estimator {
  public:
   virtual ~Estimator() = default;

@@ -13,6 +13,10 @@ namespace opf {
 struct Detection {
   std::string object;
   mrpt::poses::CPose3D pose;
+  /// m: the noise the detector states for this detection beyond its usual (a partial view's), a
+  /// standard deviation per axis of the position; 0: none. Estimators add it in variance to their
+  /// configured observation noise (observation_sigma in estimator.h).
+  double extra_noise = 0.0;
 };
 
 /// The detections that share one timestamp (seconds). An object with no detection is unobserved.

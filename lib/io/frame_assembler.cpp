@@ -192,7 +192,7 @@ void FrameAssembler::add(LogRow row) {
   }
   members_[row.object] = {row.t, row.line};
   offset_sum_ += row.t - start_;  // offsets, so that equal times give exactly that time
-  if (row.pose) frame_.detections.push_back({std::move(row.object), *row.pose});
+  if (row.pose) frame_.detections.push_back({std::move(row.object), *row.pose, row.extra_noise});
 }
 
 double FrameAssembler::gap_period() const {

@@ -15,6 +15,9 @@ namespace opf {
 /// The columns of the log format, in this order: t, object, the position, the quaternion.
 inline constexpr std::array<std::string_view, 9> kLogColumns = {"t",  "object", "x",  "y", "z",
                                                                 "qx", "qy",     "qz", "qw"};
+/// A CSV log's optional column: the extra noise the detector states for each detection (m, a
+/// standard deviation >= 0; empty: none), Detection::extra_noise.
+inline constexpr std::string_view kExtraNoiseColumn = "extra_noise";
 
 /// kCsv: the toolkit's CSV (a header naming kLogColumns). kTum: the TUM RGB-D trajectory format
 /// (evo, most SLAM systems): "timestamp tx ty tz qx qy qz qw" per line, separated by spaces or

@@ -74,6 +74,19 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
                      "object's name (--object) or the column");
   for (std::size_t i = 0; i < names_.size(); ++i)
     if (!names_[i].empty()) column_[i] = reader_.column(names_[i]);
+  const auto& header = reader_.header();
+  if (options.format == LogFormat::kCsv &&
+      std::find(header.begin(), header.end(), kExtraNoiseColumn) != header.end())
+    extra_noise_column_ = reader_.column(kExtraNoiseColumn);
+}
+
+double LogRowReader::extra_noise() const {
+  if (!extra_noise_column_ || reader_.field(*extra_noise_column_).empty()) return 0.0;
+  const double value = reader_.number(*extra_noise_column_);
+  if (!(value >= 0.0))
+    reader_.fail(*extra_noise_column_,
+                 "expected a standard deviation >= 0, got " + reader_.field(*extra_noise_column_));
+  return value * metres_per_unit_;
 }
 
 // gt.txt has nine fields, its seventh a flag (0: a box the benchmark ignores); a detector's or a
@@ -116,6 +129,7 @@ bool LogRowReader::next(LogRow& row) {
     if (row.object.empty()) reader_.fail(column_[1], "expected an object name, got an empty field");
   }
   row.pose.reset();
+  row.extra_noise = extra_noise();
 
   std::size_t empty_fields = 0;
   for (std::size_t i = 0; i < kPoseFields; ++i)

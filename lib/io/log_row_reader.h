@@ -21,6 +21,9 @@ struct LogRow {
   std::string object;
   /// Empty when all seven pose fields are: the object is unobserved at t.
   std::optional<mrpt::poses::CPose3D> pose;
+  /// m: the extra noise the detector states for the detection (column kExtraNoiseColumn, scaled
+  /// by the length unit; empty: 0), Detection::extra_noise.
+  double extra_noise = 0.0;
   std::size_t line = 0;  ///< 1-based line in the file, for error messages
 };
 
@@ -39,12 +42,15 @@ class LogRowReader {
 
  private:
   bool next_box(LogRow& row);
+  /// The current row's kExtraNoiseColumn (0 without the column or where empty), checked >= 0.
+  double extra_noise() const;
 
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
   csv::Reader reader_;
   std::string object_;             // every row's object when the file has no object column
   double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge file (> 0)
   std::array<std::size_t, 9> column_{};
+  std::optional<std::size_t> extra_noise_column_;  // a CSV log's optional kExtraNoiseColumn
   double seconds_per_unit_ = 1.0;
   double metres_per_unit_ = 1.0;
 };

@@ -82,14 +82,17 @@ MotionModelBank::MotionModelBank(const MotionModelBankOptions& options) : option
   }
 }
 
-void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
-  if (!std::isfinite(t) || !position.allFinite())
-    throw std::invalid_argument("MotionModelBank: update() with a non-finite time or position");
-  const double r = options_.observation_noise * options_.observation_noise;
+void MotionModelBank::update(double t, const Eigen::Vector3d& position, double extra_noise) {
+  if (!std::isfinite(t) || !position.allFinite() || !(extra_noise >= 0.0) ||
+      !std::isfinite(extra_noise))
+    throw std::invalid_argument(
+        "MotionModelBank: update() with a non-finite time, position or noise");
+  const double sigma = std::hypot(options_.observation_noise, extra_noise);
+  const double r = sigma * sigma;
   if (!initialised_) {
     for (int axis = 0; axis < 3; ++axis) {
       for (std::size_t j = 0; j < filters_[axis].size(); ++j)
-        start(filters_[axis][j], models_[axis][j].model, position[axis], position[axis], 0.0);
+        start(filters_[axis][j], models_[axis][j].model, position[axis], position[axis], 0.0, r);
       weights_[axis].reset();
     }
     t_ = t;
@@ -121,7 +124,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
       log_likelihoods_[j] = correction.log_likelihood;
       f.surprises = correction.squared_distance > kAxisGateChiSquare ? f.surprises + 1 : 0;
       if (f.surprises >= kSurprisesToRestart)
-        start(f, models_[axis][j].model, position[axis], last_position_[axis], dt);
+        start(f, models_[axis][j].model, position[axis], last_position_[axis], dt, r);
     }
     weights_[axis].update(dt, options_.memory, log_likelihoods_);
   }
@@ -129,8 +132,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position) {
 }
 
 void MotionModelBank::start(Filter& filter, MotionModel model, double position, double previous,
-                            double dt) const {
-  const double r = options_.observation_noise * options_.observation_noise;
+                            double dt, double r) const {
   filter.surprises = 0;
   if (model == MotionModel::kConstantPosition) {
     filter.mean << position, 0.0;

@@ -75,7 +75,9 @@ class MotionModelBank {
   /// member's filter (position measured, velocity 0 with options.initial_velocity_std, constant
   /// position's pinned at 0) with the prior weights; a later one steps every member across the
   /// interval (a gap just predicts across) and updates it and the weights.
-  void update(double t, const Eigen::Vector3d& position);
+  /// `extra_noise` (m): the detection's own stated noise, where larger than
+  /// options.observation_noise (a partial view's; 0: none stated).
+  void update(double t, const Eigen::Vector3d& position, double extra_noise = 0.0);
 
   bool initialised() const { return initialised_; }
   /// The time of the last update (s).
@@ -114,7 +116,8 @@ class MotionModelBank {
   /// Starts a member from its first position (dt = 0: velocity 0 with initial_velocity_std), or
   /// restarts one that has lost the object from the last two positions (two-point differencing:
   /// the velocity is their slope); v pinned at 0 for constant position.
-  void start(Filter& filter, MotionModel model, double position, double previous, double dt) const;
+  void start(Filter& filter, MotionModel model, double position, double previous, double dt,
+             double r) const;
 
   MotionModelBankOptions options_;
   std::array<std::vector<AxisMotionModel>, 3> models_;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace opf::sim {
 
@@ -26,13 +27,22 @@ CameraFrame CameraSensor::observe(const SceneSnapshot& scene) {
       sighting.detected = true;
       sighting.visible_fraction =
           expected > 0.0 ? std::min(1.0, blobs[i]->area_px / expected) : 0.0;
-      sighting.position = camera_.back_project(
-          blobs[i]->centroid_px,
-          blobs[i]->depth_m + centre_depth_offset(body, scene.poses[i], camera_));
+      const double depth = blobs[i]->depth_m + centre_depth_offset(body, scene.poses[i], camera_);
+      sighting.position = camera_.back_project(blobs[i]->centroid_px, depth);
+      sighting.partial_view_offset =
+          partial_view_offset(sighting.visible_fraction, expected, depth, camera_);
     }
     frame.sightings.push_back(sighting);
   }
   return frame;
+}
+
+double partial_view_offset(double visible_fraction, double expected_area_px, double depth,
+                           const CameraModel& camera) {
+  if (!(expected_area_px > 0.0) || !(visible_fraction < 1.0)) return 0.0;
+  const double radius_px = std::sqrt(expected_area_px / std::numbers::pi);
+  const double focal_px = std::sqrt(camera.fx * camera.fy);
+  return (1.0 - std::max(visible_fraction, 0.0)) * radius_px * depth / focal_px;
 }
 
 double centre_depth_offset(const Body& body, const BodyPose& pose, const CameraModel& camera) {

@@ -37,4 +37,12 @@ class CameraSensor {
 /// Tracking known objects, a detector adds this to the blob's depth to measure the centre.
 double centre_depth_offset(const Body& body, const BodyPose& pose, const CameraModel& camera);
 
+/// m: how far from a body's centre the centroid of its visible part can lie, for a visible share
+/// `visible_fraction` of a silhouette of `expected_area_px` pixels at z-depth `depth` (m): the
+/// silhouette taken as the disc of its area, radius rho, a straight edge covering all but a share
+/// f of a disc leaves the visible part's centroid within (1 - f) rho of the disc's centre (a half
+/// disc's lies 4 rho / (3 pi) = 0.42 rho off, a tenth's 0.82 rho). 0 for a body seen whole.
+double partial_view_offset(double visible_fraction, double expected_area_px, double depth,
+                           const CameraModel& camera);
+
 }  // namespace opf::sim

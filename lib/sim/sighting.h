@@ -19,6 +19,10 @@ struct Sighting {
   /// visible surface, pushed back along the viewing ray by the body's known half-depth. A partly
   /// covered body's centroid is biased towards its visible part, as with a real detector.
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  /// m: how far a partial view can have moved `position` from the centre, (1 - f) rho for the
+  /// visible fraction f and the silhouette's equivalent-disc radius rho at the body's depth
+  /// (camera_sensor.h); 0 for a body seen whole.
+  double partial_view_offset = 0.0;
 };
 
 /// One frame's sightings of every tracked body.

@@ -3,8 +3,9 @@
 # runs each, 5000 + 5000 particles), as the main job runs them with --seed 1 and with three more
 # seeds. Each seed's mean translation error of the OPF is bounded: baseball within the paper's
 # 0.01 m; general_op (paper 0.0114 m) and sugar_drop (paper 0.0213 m, the cube landing in the
-# moving mug) are the defaults' misses (docs/paper.md: partly covered detections bias the banks'
-# velocity), held within 1.5x and 2x of the paper's so that a regression past them fails.
+# moving mug) are the defaults' misses (docs/paper.md), held within 1.25x and 1.4x of the paper's
+# (measured 1.04-1.12x and 1.20-1.23x over these seeds; the detections' stated noise ignored gives
+# 1.14-1.29x and 1.62-1.83x), with the cube in the mug in at least 4 of 5 runs (measured 5).
 #   bash table_one_defaults.sh OPF_BINARY WORK_DIR
 set -euo pipefail
 opf="$1"
@@ -16,7 +17,7 @@ done
 /usr/bin/python3 - "$out" <<'PY'
 import csv, pathlib, sys
 out = pathlib.Path(sys.argv[1])
-bounds = {"general_op": 1.5 * 0.0114, "sugar_drop": 2 * 0.0213, "baseball": 0.01}
+bounds = {"general_op": 1.25 * 0.0114, "sugar_drop": 1.4 * 0.0213, "baseball": 0.01}
 failed = []
 for seed in (1, 2, 3, 4):
     for experiment, bound in bounds.items():
@@ -32,9 +33,11 @@ for seed in (1, 2, 3, 4):
         if experiment == "sugar_drop":
             landed = sum(int(r["payload_landed"]) for r in runs)
             line += f", cube in the mug in {landed} of 5"
+            if landed < 4:
+                failed.append(f"seed {seed}, sugar_drop: the cube in the mug in {landed} of 5")
         print(line)
 if failed:
     sys.exit("table I with defaults: " + "; ".join(failed))
-print("table I with defaults: baseball within the paper's error, general_op within 1.5x, "
-      "sugar_drop within 2x")
+print("table I with defaults: baseball within the paper's error, general_op within 1.25x, "
+      "sugar_drop within 1.4x with the cube in the mug")
 PY

@@ -98,6 +98,39 @@ TEST(MeasurementLog, ToleratesBomCrlfBlankLinesPaddingAndQuotes) {
   EXPECT_EQ(log.objects, (std::vector<std::string>{"red, cup", "ball"}));
 }
 
+TEST(MeasurementLog, ReadsEachDetectionsStatedExtraNoise) {
+  // The optional column, in any place; empty (or absent) states none.
+  const MeasurementLog log = parse(
+      "t,object,extra_noise,x,y,z,qx,qy,qz,qw\n"
+      "0,ball,0.0125,0.1,0.2,0.3,0,0,0,1\n"
+      "0,mug,,0.5,0,0,0,0,0,1\n");
+  ASSERT_EQ(log.frames.size(), 1u);
+  EXPECT_EQ(log.frames[0].find("ball")->extra_noise, 0.0125);
+  EXPECT_EQ(log.frames[0].find("mug")->extra_noise, 0.0);
+  EXPECT_EQ(
+      parse(std::string(kHeader) + "0,ball,0,0,0,0,0,0,1\n").frames[0].detections[0].extra_noise,
+      0.0);
+}
+
+TEST(MeasurementLog, TheExtraNoiseIsInTheLogsLengthUnit) {
+  LogReadOptions millimetres;
+  millimetres.length_unit = LengthUnit::kMillimetres;
+  std::istringstream in("t,object,x,y,z,qx,qy,qz,qw,extra_noise\n0,ball,100,0,0,0,0,0,1,20\n");
+  const MeasurementLog log = parse_measurement_log(in, "log.csv", millimetres);
+  EXPECT_DOUBLE_EQ(log.frames[0].detections[0].extra_noise, 0.02);
+}
+
+TEST(MeasurementLogErrors, ANegativeOrNonNumericExtraNoise) {
+  InputError e = parse_error(
+      "t,object,x,y,z,qx,qy,qz,qw,extra_noise\n0,ball,0,0,0,0,0,0,1,0\n"
+      "1,ball,0,0,0,0,0,0,1,-0.01\n");
+  EXPECT_STREQ(e.what(),
+               "log.csv:3: column 'extra_noise': expected a standard deviation >= 0, got -0.01");
+  e = parse_error("t,object,x,y,z,qx,qy,qz,qw,extra_noise\n0,ball,0,0,0,0,0,0,1,wide\n");
+  EXPECT_EQ(e.field(), "extra_noise");
+  EXPECT_EQ(e.line(), 2u);
+}
+
 TEST(MeasurementLog, EmptyPoseRowMarksObjectUnobservedButKeepsTheFrame) {
   const MeasurementLog log = parse(std::string(kHeader) +
                                    "0,ball,1,2,3,0,0,0,1\n"

@@ -305,6 +305,39 @@ TEST(MotionModelBank, AnIsolatedOutlierBarelyMovesTheBank) {
   EXPECT_LT(std::abs(d.bank.predict(0.1).mean()[0] - (on_track[0] + 0.1 * d.truth[0][1])), 0.01);
 }
 
+// A detection 2 sigma off the track moves each member by its gain K = P / (P + R); stated with an
+// extra 5 cm, R is 101 times larger. The Student-t update then scales R by (1 + d^2) / 2, which
+// the far detection raises and the stated one lowers, so the moves differ less than R does
+// (measured 6-18 times less); a quarter is the bound. Checked on the constant-velocity members
+// one by one (the mixture's weights move too).
+TEST(MotionModelBank, AStatedExtraNoiseWeighsADetectionLess) {
+  const AxisMotionModel model{MotionModel::kConstantVelocity, 0.3, 1.0, 0.0};
+  MotionModelBankOptions velocity_only;
+  velocity_only.constant_position = velocity_only.damped_velocity = velocity_only.ballistic = false;
+  const Drawn d =
+      draw(on_every_axis(model),
+           {kalman::Vector<2>(0.0, 1.0), kalman::Vector<2>::Zero(), kalman::Vector<2>::Zero()},
+           0.005, 60, 21, velocity_only);
+  const double t = 60 / kRate;
+  const Eigen::Vector3d on_track(d.truth[0][0] + d.truth[0][1] / kRate, 0.0, 0.0);
+  const Eigen::Vector3d off_track = on_track + Eigen::Vector3d(0.01, 0.0, 0.0);
+  MotionModelBank plain = d.bank, stated = d.bank;
+  plain.update(t, off_track);
+  stated.update(t, off_track, 0.05);
+  ASSERT_EQ(plain.members(0).size(), 3u);  // q = 0.03, 0.3, 3
+  for (std::size_t j = 0; j < 3; ++j) {
+    const double prior = d.bank.member_prediction(0, j, 1.0 / kRate).mean;
+    const double plain_move = plain.member_prediction(0, j, 0.0).mean - prior;
+    const double stated_move = stated.member_prediction(0, j, 0.0).mean - prior;
+    EXPECT_GT(plain_move * stated_move, 0.0) << j;  // towards the detection, both
+    EXPECT_LT(std::abs(stated_move), 0.25 * std::abs(plain_move)) << j;
+  }
+  // The widest member follows most of the detection's 1 cm off the track.
+  EXPECT_GT(plain.member_prediction(0, 2, 0.0).mean - on_track[0], 0.005);
+  EXPECT_THROW(stated.update(t + 0.1, on_track, -0.01), std::invalid_argument);
+  EXPECT_THROW(stated.update(t + 0.1, on_track, std::nan("")), std::invalid_argument);
+}
+
 // sample_member maps uniform draws to members in proportion to their weights: a stratified grid
 // of N draws falls on member j round(N w_j) times, give or take one.
 TEST(MotionModelBank, SampleMemberFollowsTheWeights) {

@@ -66,6 +66,22 @@ def cup_at(t):
     return [0.2 * t, 0.1, 0.5, 0.0, 0.0, math.sin(half), math.cos(half)]
 
 
+def test_a_detection_stating_extra_noise_moves_the_estimate_less():
+    # A still cup, then one detection 3 cm off: stated 10 cm noise (an eighth number), the
+    # Kalman filter's gain P / (P + R) falls about a hundredfold.
+    def x_after_jump(extra):
+        tracker = opf.Tracker("cvkf", seed=1)
+        for k in range(30):
+            tracker.step(k / 30.0, {"cup": [0.0, 0.0, 0.0, 0, 0, 0, 1]})
+        jump = [0.03, 0.0, 0.0, 0, 0, 0, 1] + ([extra] if extra is not None else [])
+        return tracker.step(1.0, {"cup": jump})["cup"].position[0]
+
+    unstated = x_after_jump(None)
+    assert x_after_jump(0.0) == unstated  # 0 states nothing
+    assert unstated > 0.003
+    assert abs(x_after_jump(0.1)) < 0.1 * unstated
+
+
 def test_a_tracker_follows_what_it_is_shown_and_extrapolates_through_a_gap():
     tracker = opf.Tracker("opf", seed=3, particles=PARTICLES)
     dt = 1.0 / 30.0
@@ -173,9 +189,13 @@ CUP = [0.1, 0.2, 0.3, 0.0, 0.0, 0.0, 1.0]
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 0], "object 'cup', fields 'qx,qy,qz,qw': expected a unit "
                                         "quaternion (norm within 0.01 of 1), got norm 0"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 1],
-     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw], got 6"),
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise), got 6"),
     (NEXT, "0.1,0.2,0.3,0,0,0,1", "object 'cup': expected a pose [x, y, z, qx, qy, qz, qw] or "
                                   "None, got '0.1,0.2,0.3,0,0,0,1'"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, -0.01],
+     "object 'cup', field 'extra_noise': expected a standard deviation >= 0, got -0.01"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, math.nan],
+     "object 'cup', field 'extra_noise': expected a standard deviation >= 0, got nan"),
 ])
 def test_a_bad_input_is_refused_by_name_and_the_tracker_goes_on(t, pose, message):
     times = [k / 30.0 for k in range(4)]

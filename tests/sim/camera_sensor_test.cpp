@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace opf::sim {
 namespace {
 
@@ -73,6 +75,41 @@ TEST(CameraSensor, AHalfCoveredBallIsSeenInPartWithABiasedCentre) {
   EXPECT_GT(ball.visible_fraction, 0.2);
   EXPECT_LT(ball.visible_fraction, 0.8);
   EXPECT_LT(ball.position.y(), 0.05 - 0.005);
+  // The partial view's stated bound holds the bias the renderer and detector produced.
+  const double bias = (ball.position - Eigen::Vector3d(0.45, 0.05, 0.0)).head<2>().norm();
+  EXPECT_GT(ball.partial_view_offset, bias);
+  EXPECT_LT(ball.partial_view_offset, 0.025);  // at most the radius
+}
+
+TEST(CameraSensor, AWholeViewStatesNoPartialViewOffset) {
+  CameraSensor sensor(kCamera);
+  const Sighting ball = sensor.observe(ball_and_box({0.7, -0.2, 0.05}, 0.01)).sightings[0];
+  ASSERT_TRUE(ball.detected);
+  // 1 - f is the tessellation's 0.3% and the pixels' rounding: below a tenth of a millimetre.
+  EXPECT_LT(ball.partial_view_offset, 1e-4);
+}
+
+TEST(PartialViewOffset, IsTheCoveredShareOfTheEquivalentDiscsRadius) {
+  // A silhouette of pi 50^2 pixels at 0.5 m has rho = 50 px = 50 * 0.5 / f metres.
+  const double area = M_PI * 50.0 * 50.0;
+  const double rho = 50.0 * 0.5 / std::sqrt(kCamera.fx * kCamera.fy);
+  EXPECT_NEAR(partial_view_offset(0.5, area, 0.5, kCamera), 0.5 * rho, 1e-15);
+  EXPECT_NEAR(partial_view_offset(0.2, area, 0.5, kCamera), 0.8 * rho, 1e-15);
+  EXPECT_EQ(partial_view_offset(1.0, area, 0.5, kCamera), 0.0);
+  EXPECT_EQ(partial_view_offset(0.5, 0.0, 0.5, kCamera), 0.0);  // nothing expected: nothing stated
+}
+
+TEST(PartialViewOffset, BoundsTheCentroidOfADiscCutByAStraightEdge) {
+  // The unit disc's part x <= c: area A = c sqrt(1 - c^2) + asin c + pi / 2, first moment
+  // -(2/3) (1 - c^2)^(3/2); its centroid lies (2/3) (1 - c^2)^(3/2) / A off the centre, within
+  // (1 - f) of it for the visible share f = A / pi, from a sliver to almost all of it.
+  for (double c = -0.999; c < 1.0; c += 0.001) {
+    const double area = c * std::sqrt(1.0 - c * c) + std::asin(c) + M_PI / 2.0;
+    const double offset = (2.0 / 3.0) * std::pow(1.0 - c * c, 1.5) / area;
+    EXPECT_LE(offset, 1.0 - area / M_PI) << "edge at " << c;
+  }
+  // The half disc: 4 / (3 pi) = 0.42 against the bound's 0.5.
+  EXPECT_NEAR((2.0 / 3.0) / (M_PI / 2.0), 4.0 / (3.0 * M_PI), 1e-15);
 }
 
 }  // namespace

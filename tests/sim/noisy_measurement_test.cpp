@@ -33,6 +33,17 @@ TEST(NoisyMeasurement, OnlyBodiesSeenWellEnoughAreMeasured) {
   EXPECT_TRUE(noisy_measurement(camera, two_bodies(), settings, noise).detections.empty());
 }
 
+TEST(NoisyMeasurement, APartialViewStatesItsOffsetAsExtraNoise) {
+  CameraFrame camera{
+      1.0,
+      {{"ball", 0.5, true, {0.4, 0.0, 0.0}, 0.0125}, {"mug", 1.0, true, {0.4, 0.15, 0.03}, 0.0}}};
+  Random noise(1);
+  const Frame f = noisy_measurement(camera, two_bodies(), MeasurementSettings{}, noise);
+  ASSERT_EQ(f.detections.size(), 2u);
+  EXPECT_EQ(f.detections[0].extra_noise, 0.0125);
+  EXPECT_EQ(f.detections[1].extra_noise, 0.0);
+}
+
 TEST(NoisyMeasurement, NoiseHasTheConfiguredSpread) {
   // Over many frames the position noise has std 2 mm per axis and the orientation noise 0.01 rad
   // per tangent axis around the truth: 5 standard errors of the variance estimate (sqrt(2/N)).
