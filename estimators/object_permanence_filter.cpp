@@ -211,17 +211,14 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   const Eigen::Quaterniond orientation = orientation_of(measurement);
   // This detection's noise in every likelihood it enters, the hypotheses' evidence included; the
   // configured noise again afterwards, for the virtual measurements of a gap (paper Eq. 14).
-  const double configured = options_.particles.observation_noise_translation;
-  for (Hypothesis& each : hypotheses_)
-    each.filter.set_translation_likelihood_noise(
-        Eigen::Vector3d::Constant(observation_sigma(configured, extra_noise)));
+  for (Hypothesis& each : hypotheses_) each.filter.set_translation_extra_noise(extra_noise);
   keep_hypothesis_explaining(position);
   Hypothesis& h = hypotheses_[0];
   const EstimateMode hidden_by = h.motion ? h.motion->mode() : EstimateMode::kMeasured;
   if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
   const bool lost = h.filter.update_with_measurement(
       position, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
-  h.filter.set_translation_likelihood_noise(Eigen::Vector3d::Constant(configured));
+  h.filter.set_translation_extra_noise(0.0);
   const ResampleReport report = h.filter.normalise_and_resample();
   h.motion.reset();
   h.last = {h.filter.observation_trace(1.0),

@@ -125,8 +125,7 @@ Estimate OcclusionAwareParticleFilter::step(double t, const mrpt::poses::CPose3D
   if (measurement) {
     const Eigen::Vector3d position = translation_of(*measurement);
     const Eigen::Quaterniond orientation = orientation_of(*measurement);
-    filter_.set_translation_likelihood_noise(Eigen::Vector3d::Constant(observation_sigma(
-        p.observation_noise_translation, stated_extra_noise(ensemble, measurement))));
+    filter_.set_translation_extra_noise(stated_extra_noise(ensemble, measurement));
     // Visible particles score Eq. 5 exactly as the standard PF's do.
     translation_visible = filter_.translation_exponents(position);
     rotation_visible = filter_.rotation_exponents(orientation);

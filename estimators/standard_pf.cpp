@@ -31,9 +31,7 @@ Estimate StandardParticleFilter::step(double t, const mrpt::poses::CPose3D* meas
   last_t_ = t;
   RecoveryEvents recovery;
   if (measurement) {
-    filter_.set_translation_likelihood_noise(
-        Eigen::Vector3d::Constant(observation_sigma(filter_.options().observation_noise_translation,
-                                                    stated_extra_noise(ensemble, measurement))));
+    filter_.set_translation_extra_noise(stated_extra_noise(ensemble, measurement));
     recovery.sensor_reset =
         filter_.update_with_measurement(translation_of(*measurement), orientation_of(*measurement));
   }

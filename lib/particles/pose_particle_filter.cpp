@@ -1,5 +1,6 @@
 #include "opf/particles/pose_particle_filter.h"
 
+#include "opf/core/estimator.h"
 #include "opf/core/pose_conversion.h"
 #include "opf/particles/gaussian_likelihood.h"
 #include "opf/particles/random_walk_model.h"
@@ -113,6 +114,11 @@ void PoseParticleFilter::set_translation_likelihood_noise(const Eigen::Vector3d&
   for (int axis = 0; axis < 3; ++axis)
     check.number("observation_noise.translation", sigma(axis), positive());
   translation_likelihood_noise_ = sigma;
+}
+
+void PoseParticleFilter::set_translation_extra_noise(double extra_noise) {
+  set_translation_likelihood_noise(Eigen::Vector3d::Constant(
+      observation_sigma(options_.observation_noise_translation, extra_noise)));
 }
 
 void PoseParticleFilter::predict_per_particle(const Eigen::VectorXd& translation_sigmas,

@@ -79,6 +79,10 @@ class PoseParticleFilter {
   /// scatters with the configured value. Throws std::invalid_argument unless each is positive and
   /// finite.
   void set_translation_likelihood_noise(const Eigen::Vector3d& sigma);
+  /// The same on every axis for one detection: the configured observation noise with the
+  /// detection's stated extra noise (m, Detection::extra_noise) added in variance
+  /// (observation_sigma); 0 puts the configured value back.
+  void set_translation_extra_noise(double extra_noise);
 
   /// A random walk with a spread of its own per particle (m, rad): an estimator whose particles
   /// move differently by their own state (the occlusion-aware PF's widening search).

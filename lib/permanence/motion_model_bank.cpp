@@ -1,5 +1,6 @@
 #include "opf/permanence/motion_model_bank.h"
 
+#include "opf/core/estimator.h"
 #include "opf/permanence/ballistic_motion.h"
 #include "opf/permanence/weighted_choice.h"
 
@@ -87,7 +88,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
       !std::isfinite(extra_noise))
     throw std::invalid_argument(
         "MotionModelBank: update() with a non-finite time, position or noise");
-  const double sigma = std::hypot(options_.observation_noise, extra_noise);
+  const double sigma = observation_sigma(options_.observation_noise, extra_noise);
   const double r = sigma * sigma;
   if (!initialised_) {
     for (int axis = 0; axis < 3; ++axis) {

@@ -75,8 +75,8 @@ class MotionModelBank {
   /// member's filter (position measured, velocity 0 with options.initial_velocity_std, constant
   /// position's pinned at 0) with the prior weights; a later one steps every member across the
   /// interval (a gap just predicts across) and updates it and the weights.
-  /// `extra_noise` (m): the detection's own stated noise, where larger than
-  /// options.observation_noise (a partial view's; 0: none stated).
+  /// `extra_noise` (m): the noise the detector states for this detection beyond its usual (a
+  /// partial view's), added in variance to options.observation_noise (observation_sigma).
   void update(double t, const Eigen::Vector3d& position, double extra_noise = 0.0);
 
   bool initialised() const { return initialised_; }
