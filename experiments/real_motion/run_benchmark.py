@@ -16,6 +16,7 @@ Same inputs and seeds give the same bytes. Metrics: docs/metrics.md; the protoco
 experiments/real_motion/README.md.
 
 Usage: run_benchmark.py OUT_DIR [--subset] [--seeds N] [--estimators A,B] [--jobs N]
+                        [--config FILE.yaml]
 """
 
 import argparse
@@ -65,6 +66,9 @@ def parse_arguments():
                         help="the opf program (default build/bin/opf, or $OPF)")
     parser.add_argument("--no-video", action="store_true",
                         help="leave out the video clips (no opencv-doc)")
+    parser.add_argument("--config", default=None,
+                        help="estimator settings (FILE.yaml) for every `opf evaluate`, on top "
+                             "of each preset: a sensitivity study; the summary names the file")
     args = parser.parse_args()
     if args.seeds is None:
         args.seeds = 1 if args.subset else 3
@@ -72,6 +76,8 @@ def parse_arguments():
         parser.error("--seeds and --jobs must be at least 1")
     if not os.access(args.opf, os.X_OK):
         parser.error(f"no opf program at {args.opf} (build it, or pass --opf)")
+    if args.config is not None and not os.path.isfile(args.config):
+        parser.error(f"--config {args.config}: no such settings file")
     return args
 
 
@@ -154,14 +160,23 @@ def video_logs(out, opf, subset):
     return rows
 
 
-def evaluate(job, opf, estimators, seeds, runs_dir):
-    """One `opf evaluate` of one log under one preset: its table and time-hidden profile."""
-    base = os.path.join(runs_dir, f"{job['name']}_{job['rate']}_{job['gap']}_{job['preset']}")
+def evaluate_command(job, opf, estimators, seeds, base, config=None):
+    """The `opf evaluate` of one log under one preset (and the settings file, if any), writing
+    base.csv and base_profile.csv."""
     if job["preset"] == "paper":
         estimators = ",".join(e for e in estimators.split(",") if e in PAPER_ESTIMATORS)
-    run([opf, "evaluate", "--in", job["log"], "--truth", job["truth"], "--estimators",
-         estimators, "--seeds", str(seeds), "--preset", job["preset"], "--threads", "1",
-         "--out", base + ".csv", "--hidden-profile", base + "_profile.csv"])
+    command = [opf, "evaluate", "--in", job["log"], "--truth", job["truth"], "--estimators",
+               estimators, "--seeds", str(seeds), "--preset", job["preset"]]
+    if config is not None:
+        command += ["--config", config]
+    return command + ["--threads", "1", "--out", base + ".csv",
+                      "--hidden-profile", base + "_profile.csv"]
+
+
+def evaluate(job, opf, estimators, seeds, runs_dir, config=None):
+    """One `opf evaluate` of one log under one preset: its table and time-hidden profile."""
+    base = os.path.join(runs_dir, f"{job['name']}_{job['rate']}_{job['gap']}_{job['preset']}")
+    run(evaluate_command(job, opf, estimators, seeds, base, config))
     with open(base + ".csv", newline="") as f:
         table = list(csv.DictReader(f))
     with open(base + "_profile.csv", newline="") as f:
@@ -174,7 +189,8 @@ def run_all(jobs, args, runs_dir):
     results = [None] * len(jobs)
     show = sys.stderr.isatty()
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = {pool.submit(evaluate, job, args.opf, args.estimators, args.seeds, runs_dir): k
+        futures = {pool.submit(evaluate, job, args.opf, args.estimators, args.seeds, runs_dir,
+                               args.config): k
                    for k, job in enumerate(jobs)}
         for done, future in enumerate(concurrent.futures.as_completed(futures), 1):
             results[futures[future]] = future.result()
@@ -298,7 +314,8 @@ def markdown(summary, rows, args):
              "filter's (`cvkf`, default preset) on the same log; calibration by the NEES / 3 "
              "and the share of hidden frames inside the 95% ellipsoid, pooled over the hidden "
              "frames of every log "
-             "(docs/metrics.md).", "",
+             "(docs/metrics.md)." + (f" Estimator settings `{args.config}` on top of each preset."
+                                     if getattr(args, "config", None) else ""), "",
              "| estimator | preset | logs | hidden error / cvkf (geo. mean) | worst | best on | "
              "rotation / cvkf | NEES/3 position | inside 95% | NEES/3 rotation | inside 95% |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]

@@ -1,0 +1,43 @@
+"""The benchmark's --config: the settings file reaches every `opf evaluate`, a missing one is
+refused before anything runs."""
+
+import importlib.util
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+SCRIPT = ROOT / "experiments" / "real_motion" / "run_benchmark.py"
+_spec = importlib.util.spec_from_file_location("run_benchmark", SCRIPT)
+bench = importlib.util.module_from_spec(_spec)
+_spec.loader.exec_module(bench)
+
+JOB = {"log": "a.csv", "truth": "a_truth.csv", "preset": "default"}
+
+
+def test_the_settings_file_follows_the_preset_in_every_evaluate():
+    command = bench.evaluate_command(JOB, "opf", "opf,cvkf", 3, "runs/a", "noise.yaml")
+    assert command[command.index("--preset") + 1] == "default"
+    assert command[command.index("--config") + 1] == "noise.yaml"
+    # After the preset: opf applies --config on top of it.
+    assert command.index("--config") > command.index("--preset")
+    paper = bench.evaluate_command(dict(JOB, preset="paper"), "opf", "opf,cvkf,pf", 3, "runs/a",
+                                   "noise.yaml")
+    assert paper[paper.index("--estimators") + 1] == "opf,pf"
+    assert paper[paper.index("--config") + 1] == "noise.yaml"
+
+
+def test_without_a_settings_file_the_command_has_none():
+    command = bench.evaluate_command(JOB, "opf", "opf,cvkf", 3, "runs/a")
+    assert "--config" not in command
+    assert command[-4:] == ["--out", "runs/a.csv", "--hidden-profile", "runs/a_profile.csv"]
+
+
+def test_a_missing_settings_file_is_refused_by_name(tmp_path):
+    missing = tmp_path / "nowhere.yaml"
+    done = subprocess.run([sys.executable, str(SCRIPT), str(tmp_path / "out"), "--opf",
+                           sys.executable, "--config", str(missing)],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 2
+    assert f"--config {missing}: no such settings file" in done.stderr
+    assert not (tmp_path / "out").exists()
