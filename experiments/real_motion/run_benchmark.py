@@ -315,7 +315,7 @@ def markdown(summary, rows, args):
              "and the share of hidden frames inside the 95% ellipsoid, pooled over the hidden "
              "frames of every log "
              "(docs/metrics.md)." + (f" Estimator settings `{args.config}` on top of each preset."
-                                     if getattr(args, "config", None) else ""), "",
+                                     if args.config else ""), "",
              "| estimator | preset | logs | hidden error / cvkf (geo. mean) | worst | best on | "
              "rotation / cvkf | NEES/3 position | inside 95% | NEES/3 rotation | inside 95% |",
              "|---|---|---|---|---|---|---|---|---|---|---|"]

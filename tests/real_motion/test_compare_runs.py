@@ -38,9 +38,14 @@ def compare(base, change):
                           capture_output=True, text=True, check=False)
 
 
+def compare_errors(tmp_path, base_errors, change_errors, **change_calibration):
+    """compare() of a base and a change written by write_run under tmp_path."""
+    return compare(write_run(tmp_path / "base", base_errors),
+                   write_run(tmp_path / "change", change_errors, **change_calibration))
+
+
 def test_a_better_mean_everywhere_is_taken(tmp_path):
-    done = compare(write_run(tmp_path / "base", [0.9, 0.9, 0.9]),
-                   write_run(tmp_path / "change", [0.8, 0.85, 0.9]))
+    done = compare_errors(tmp_path, [0.9, 0.9, 0.9], [0.8, 0.85, 0.9])
     assert done.returncode == 0, done.stdout + done.stderr
     assert done.stdout.strip().endswith("verdict: taken")
     # (0.8 * 0.85 * 0.9)^(1/3) = 0.849; two of the three rows moved by more than 5%.
@@ -51,29 +56,25 @@ def test_a_better_mean_everywhere_is_taken(tmp_path):
 
 def test_a_better_mean_with_a_row_pushed_past_the_worst_allowed_is_not_taken(tmp_path):
     # The mean falls from 1.0 to (0.6 * 0.6 * 1.2)^(1/3) = 0.756, but log c goes to 1.2x cvkf.
-    done = compare(write_run(tmp_path / "base", [1.0, 1.0, 1.0]),
-                   write_run(tmp_path / "change", [0.6, 0.6, 1.2]))
+    done = compare_errors(tmp_path, [1.0, 1.0, 1.0], [0.6, 0.6, 1.2])
     assert done.returncode == 1
     assert "verdict: not taken: 1 row(s) newly above 1.10x cvkf: c/native/1 1.200" in done.stdout
 
 
 def test_a_row_already_above_the_worst_allowed_does_not_block_a_better_change(tmp_path):
-    done = compare(write_run(tmp_path / "base", [1.3, 1.0, 1.0]),
-                   write_run(tmp_path / "change", [1.2, 0.9, 0.9]))
+    done = compare_errors(tmp_path, [1.3, 1.0, 1.0], [1.2, 0.9, 0.9])
     assert done.returncode == 0, done.stdout
 
 
 def test_a_calibration_that_leaves_its_bounds_is_not_taken(tmp_path):
-    done = compare(write_run(tmp_path / "base", [1.0, 1.0, 1.0]),
-                   write_run(tmp_path / "change", [0.8, 0.8, 0.8], nees=2.5, inside=0.80))
+    done = compare_errors(tmp_path, [1.0, 1.0, 1.0], [0.8, 0.8, 0.8], nees=2.5, inside=0.80)
     assert done.returncode == 1
     assert "the calibration leaves its bounds" in done.stdout
     assert "NEES/3 2.5 with 80% inside 95%" in done.stdout
 
 
 def test_a_worse_mean_is_not_taken(tmp_path):
-    done = compare(write_run(tmp_path / "base", [0.8, 0.8, 0.8]),
-                   write_run(tmp_path / "change", [0.7, 0.9, 0.95]))
+    done = compare_errors(tmp_path, [0.8, 0.8, 0.8], [0.7, 0.9, 0.95])
     assert done.returncode == 1
     assert "verdict: not taken: the mean is not better" in done.stdout
 
