@@ -47,25 +47,38 @@ OPF_ALWAYS_INLINE std::vector<std::int32_t> end_marks(const T* __restrict w, std
   const double slots = static_cast<double>(count);
   const double per_weight = total > 0.0 ? slots / total : 0.0;
   // The cumulative sums in blocks of eight: each block's own prefix sums in three shift-and-add
-  // steps (GCC vector extensions: valignq and vaddpd with AVX-512, the same additions in the same
-  // order on any CPU), plus the sum of the blocks before it. Only that last addition carries
-  // from block to block. Scratch is left uninitialised: it is written in full before it is read.
+  // steps (the same additions in the same order on any CPU), plus the sum of the blocks before
+  // it. Only that last addition carries from block to block. The block is two halves of four
+  // (GCC vector extensions), which AVX2 holds in registers as AVX-512 does: an eight-wide vector
+  // on AVX2 went through the stack at every step. Scratch is left uninitialised: it is written in
+  // full before it is read.
   const auto scratch = std::make_unique_for_overwrite<double[]>(m);
   double* __restrict c = scratch.get();
-  using Double8 = double __attribute__((vector_size(64)));
-  using Index8 = std::int64_t __attribute__((vector_size(64)));
-  const Double8 zero = {};
-  Double8 carry = {};
+  using Double4 = double __attribute__((vector_size(32)));
+  using Index4 = std::int64_t __attribute__((vector_size(32)));
+  const Double4 zero = {};
+  Double4 carry = {};
   std::size_t i = 0;
   for (; i + 8 <= m; i += 8) {
-    Double8 x;
-    for (int l = 0; l < 8; ++l) x[l] = static_cast<double>(w[i + l]);
-    x += __builtin_shuffle(zero, x, Index8{0, 8, 9, 10, 11, 12, 13, 14});  // + x[l - 1]
-    x += __builtin_shuffle(zero, x, Index8{0, 1, 8, 9, 10, 11, 12, 13});   // + x[l - 2]
-    x += __builtin_shuffle(zero, x, Index8{0, 1, 2, 3, 8, 9, 10, 11});     // + x[l - 4]
-    const Double8 cumulative = x + carry;
-    std::memcpy(c + i, &cumulative, sizeof cumulative);
-    carry += __builtin_shuffle(x, Index8{7, 7, 7, 7, 7, 7, 7, 7});
+    Double4 lo, hi;
+    for (int l = 0; l < 4; ++l) {
+      lo[l] = static_cast<double>(w[i + l]);
+      hi[l] = static_cast<double>(w[i + 4 + l]);
+    }
+    Double4 lo_shifted = __builtin_shuffle(zero, lo, Index4{0, 4, 5, 6});  // + x[l - 1]
+    Double4 hi_shifted = __builtin_shuffle(lo, hi, Index4{3, 4, 5, 6});
+    lo += lo_shifted;
+    hi += hi_shifted;
+    lo_shifted = __builtin_shuffle(zero, lo, Index4{0, 1, 4, 5});  // + x[l - 2]
+    hi_shifted = __builtin_shuffle(lo, hi, Index4{2, 3, 4, 5});
+    lo += lo_shifted;
+    hi += hi_shifted;
+    hi += lo;  // + x[l - 4]
+    const Double4 cumulative_lo = lo + carry;
+    const Double4 cumulative_hi = hi + carry;
+    std::memcpy(c + i, &cumulative_lo, sizeof cumulative_lo);
+    std::memcpy(c + i + 4, &cumulative_hi, sizeof cumulative_hi);
+    carry += __builtin_shuffle(hi, Index4{3, 3, 3, 3});
   }
   for (double cumulative = carry[0]; i < m; ++i) {
     cumulative += static_cast<double>(w[i]);

@@ -4,7 +4,9 @@
 // slot per particle on average. Sixteen slots then almost always draw from a window of 32
 // consecutive particles, and on a CPU with AVX-512 each row of such a block is two loads, one
 // two-source permute and one store instead of sixteen scalar copies (the scalar copy was a
-// quarter of a filter step). Blocks whose window is wider fall back to the scalar copy.
+// quarter of a filter step). With AVX2 alone, float rows go in blocks of eight slots from windows
+// of sixteen, each row two one-source permutes and a blend. Blocks whose window is wider fall back
+// to the scalar copy.
 
 #include <cstddef>
 #include <cstdint>
@@ -23,7 +25,11 @@ void gather_by_running_maximum(const std::int32_t* marks, std::size_t count, con
 /// without OPF_NO_DISPATCH).
 bool gather_uses_permutes();
 
-/// The two paths on their own, for the tests; the permute path requires gather_uses_permutes().
+/// Whether float rows take the AVX2 path instead (a CPU with AVX2 but not AVX-512F).
+bool gather_uses_avx2();
+
+/// The paths on their own, for the tests; the permute path requires gather_uses_permutes(), the
+/// AVX2 path a CPU with AVX2.
 void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t count, const float* in,
                                       std::size_t n, std::size_t rows, float* out);
 void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t count,
@@ -35,5 +41,7 @@ void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t co
 void gather_by_running_maximum_permute(const std::int32_t* marks, std::size_t count,
                                        const double* in, std::size_t n, std::size_t rows,
                                        double* out);
+void gather_by_running_maximum_avx2(const std::int32_t* marks, std::size_t count, const float* in,
+                                    std::size_t n, std::size_t rows, float* out);
 
 }  // namespace opf::kernels

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 namespace opf {
@@ -24,6 +25,14 @@ std::vector<std::int32_t> random_marks(std::size_t count, std::size_t n, int max
     particle = next;
   }
   return marks;
+}
+
+bool cpu_has_avx2() {
+#if defined(__x86_64__) && defined(__GNUC__)
+  return __builtin_cpu_supports("avx2") != 0;
+#else
+  return false;
+#endif
 }
 
 template <class T>
@@ -51,6 +60,15 @@ void expect_both_paths_match(std::size_t count, std::size_t n, std::size_t rows,
   kernels::gather_by_running_maximum(marks.data(), count, in.data(), n, rows, chosen.data());
   EXPECT_EQ(scalar, expected) << "scalar, count " << count << ", n " << n << ", step " << max_step;
   EXPECT_EQ(chosen, expected);
+  // The AVX2 path (float rows) runs wherever the CPU has AVX2 (the machines the tests run on
+  // do), whichever path the dispatch chooses.
+  if constexpr (std::is_same_v<T, float>) {
+    if (cpu_has_avx2()) {
+      std::vector<float> avx2(rows * count);
+      kernels::gather_by_running_maximum_avx2(marks.data(), count, in.data(), n, rows, avx2.data());
+      EXPECT_EQ(avx2, expected) << "avx2, count " << count << ", n " << n << ", step " << max_step;
+    }
+  }
   // The permute path's AVX-512 instructions exist only on CPUs that have them.
   if (!kernels::gather_uses_permutes()) return;
   kernels::gather_by_running_maximum_permute(marks.data(), count, in.data(), n, rows,
@@ -59,8 +77,9 @@ void expect_both_paths_match(std::size_t count, std::size_t n, std::size_t rows,
                                 << max_step;
 }
 
-// Steps of up to 1 keep every block of sixteen slots in a 32-particle window (the permute);
-// steps of up to 5 leave many blocks wider (the scalar fallback); counts off the block size
+// Steps of up to 1 keep every block of sixteen slots in a 32-particle window (the permute), and
+// of eight in a 16-particle one (AVX2); steps of up to 5 leave many blocks wider (the scalar
+// fallback); counts off the block size
 // leave a scalar tail; n close to count puts windows against the end of a row (masked loads).
 TEST(SortedGather, BothPathsCopyTheRunningMaximumsParticles) {
   Random random(11);
@@ -94,6 +113,17 @@ TEST(SortedGather, PermutesWhereverTheCpuHasAvx512) {
 #else
   EXPECT_FALSE(kernels::gather_uses_permutes());
 #endif
+}
+
+// Without AVX-512, a CPU with AVX2 takes the AVX2 path; never both.
+TEST(SortedGather, TakesTheAvx2PathWhereTheCpuHasAvx2ButNotAvx512) {
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(OPF_NO_DISPATCH)
+  EXPECT_EQ(kernels::gather_uses_avx2(),
+            __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("avx512f") == 0);
+#else
+  EXPECT_FALSE(kernels::gather_uses_avx2());
+#endif
+  EXPECT_FALSE(kernels::gather_uses_avx2() && kernels::gather_uses_permutes());
 }
 
 }  // namespace
