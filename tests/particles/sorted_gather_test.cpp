@@ -79,8 +79,8 @@ void expect_both_paths_match(std::size_t count, std::size_t n, std::size_t rows,
 
 // Steps of up to 1 keep every block of sixteen slots in a 32-particle window (the permute), and
 // of eight in a 16-particle one (AVX2); steps of up to 5 leave many blocks wider (the scalar
-// fallback); counts off the block size
-// leave a scalar tail; n close to count puts windows against the end of a row (masked loads).
+// fallback); counts off the block size leave a scalar tail; n close to count puts windows against
+// the end of a row (masked loads).
 TEST(SortedGather, BothPathsCopyTheRunningMaximumsParticles) {
   Random random(11);
   for (const std::size_t count : {1u, 15u, 16u, 17u, 33u, 1000u, 5003u})
