@@ -83,9 +83,9 @@ bool gather_uses_avx2() {
 #ifdef OPF_GATHER_PERMUTES
   static const bool available = [] {
     __builtin_cpu_init();
-    return __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("avx512f") == 0;
+    return __builtin_cpu_supports("avx2") != 0;
   }();
-  return available;
+  return available && !gather_uses_permutes();
 #else
   return false;
 #endif
@@ -238,10 +238,10 @@ namespace {
       m, _mm256_permutevar8x32_epi32(m, _mm256_setr_epi32(0, 1, 2, 3, 0, 1, 2, 3)));
 }
 
-template <class T, class CopyBlock>
+template <class CopyBlock>
 [[gnu::target("avx2")]] void for_each_block_avx2(const std::int32_t* marks, std::size_t count,
-                                                 const T* in, std::size_t n, std::size_t rows,
-                                                 T* out, const CopyBlock& copy) {
+                                                 const float* in, std::size_t n, std::size_t rows,
+                                                 float* out, const CopyBlock& copy) {
   const __m256i last_lane = _mm256_set1_epi32(7);
   __m256i carry = _mm256_setzero_si256();
   alignas(32) std::int32_t p[8];
@@ -256,7 +256,8 @@ template <class T, class CopyBlock>
   scalar_tail(marks, k, count, k > 0 ? p[7] : 0, in, n, rows, out);
 }
 
-// Lane i of a window is read when i + first < available (the values left in the row).
+// Lane i of a window is read when i + first < available (the values left in the row; capped,
+// since only the first sixteen matter).
 [[gnu::target("avx2")]] inline __m256i lanes_below(std::size_t available, int first) {
   const auto left = static_cast<std::int32_t>(std::min<std::size_t>(available, 64));
   return _mm256_cmpgt_epi32(_mm256_set1_epi32(left - first),
