@@ -27,9 +27,9 @@ namespace {
 
 constexpr int kObjects = 8;
 #if defined(__SANITIZE_ADDRESS__)
-// A quarter of the run under the sanitizers (each step there costs about 30 times as much): the
-// same mix of occlusions, cap and wrong measurements, in under two minutes.
-constexpr int kFrames = 31'250;
+// A tenth of the run under the sanitizers (each step there costs about 30 times as much): the
+// same mix of occlusions, cap and wrong measurements, in about a minute.
+constexpr int kFrames = 12'500;
 #else
 constexpr int kFrames = 125'000;
 #endif
