@@ -28,7 +28,7 @@ namespace {
 constexpr int kObjects = 8;
 #if defined(__SANITIZE_ADDRESS__)
 // A tenth of the run under the sanitizers (each step there costs about 30 times as much): the
-// same mix of occlusions, cap and wrong measurements, in about a minute.
+// same mix of occlusions, cap and wrong measurements, in about half a minute.
 constexpr int kFrames = 12'500;
 #else
 constexpr int kFrames = 125'000;
