@@ -216,8 +216,17 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   Hypothesis& h = hypotheses_[0];
   const EstimateMode hidden_by = h.motion ? h.motion->mode() : EstimateMode::kMeasured;
   if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
+  // A partial view is off by its stated extra noise times the bias s the banks estimate over the
+  // stretch of partial views so far: the particles take the detection less that, with the rest
+  // of s's spread as its extra noise (docs/dynamics.md, "Partial views").
+  Eigen::Vector3d seen = position;
+  if (extra_noise > 0.0 && !hidden_ && translation_bank_.initialised()) {
+    const PartialViewBias bias = translation_bank_.partial_view_bias();
+    seen -= extra_noise * bias.mean;
+    h.filter.set_translation_extra_noise(extra_noise * std::sqrt(bias.variance));
+  }
   const bool lost = h.filter.update_with_measurement(
-      position, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
+      seen, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
   h.filter.set_translation_extra_noise(0.0);
   const ResampleReport report = h.filter.normalise_and_resample();
   h.motion.reset();
@@ -242,6 +251,8 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
 }
 
 void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleView& ensemble) {
+  // Seen again, the object shows another side: its partial views' bias starts afresh.
+  translation_bank_.end_partial_views();
   // A hypothesis per occluder exists only while hidden; at onset there is one.
   hypotheses_.erase(hypotheses_.begin() + 1, hypotheses_.end());
   const bool bank = options_.dynamics.predictor == DynamicsPredictor::kBank;

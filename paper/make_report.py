@@ -407,7 +407,8 @@ def hand_scenes(out, directory):
                f"it, or moves a cup over a ball in the cups game; default preset): the hidden "
                f"object's translation error while hidden [mm], mean $\\pm$ "
                f"{std_over(table.seeds)}; the OPF's hypothesis nearest the truth, over the "
-               f"seeds' hidden frames; the reveals at which its main hypothesis was right. "
+               f"seeds' hidden frames; the reveals at which its main hypothesis, then its most "
+               f"probable one, was right (the target judges the most probable). "
                f"Targets (the project's): carried {bounds_text(TARGETS['carry_hidden_mm'], 'mm')}, "
                f"passed over at most the PF's + {TARGETS['pass_over_pf_mm'][1]:g} mm, cups' "
                f"nearest {bounds_text(TARGETS['cups_nearest_mm'], 'mm')}; right at reveal "
@@ -443,11 +444,17 @@ def hand_error_verdict(scene, by):
 
 
 def hand_reveal_verdict(scene, by):
+    """The reveals at which the main hypothesis was right, then those at which the most probable
+    one was, which the target judges."""
     right, reveals = by.right_at_reveal["opf"], by.reveals["opf"]
+    likeliest = by.get("most_probable_right_at_reveal", {}).get("opf", math.nan)
     bounds = TARGETS.get(f"{scene}_right_at_reveal")
     if absent(reveals) or not reveals or bounds is None:
         return "--"
-    return f"{right:.0f}/{reveals:.0f} {mark(right / reveals, bounds)}"
+    if absent(likeliest):
+        return f"{right:.0f}/{reveals:.0f} {mark(right / reveals, bounds)}"
+    return (f"{right:.0f}/{reveals:.0f}, {likeliest:.0f}/{reveals:.0f} "
+            f"{mark(likeliest / reveals, bounds)}")
 
 
 # ---------------------------------------------------------------------------------------------

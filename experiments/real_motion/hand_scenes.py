@@ -17,8 +17,8 @@ next recording, and cup C rests 12 cm beside the ball.
 Occlusion comes from the rendered geometry; the truth is the scene's. Each scene is written as an
 experiment file and run by `opf run` with every estimator; the table gives, per scene and
 estimator, the hidden object's error while hidden (the main estimate's, and for the OPF the
-hypothesis nearest the truth), and how often the OPF's main hypothesis was the right one when it
-was seen again.
+hypothesis nearest the truth), and how often the OPF's main hypothesis, and its most probable
+one, was the right one when it was seen again.
 
 Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and hand_scenes.md.
 
@@ -188,16 +188,19 @@ def hidden_errors(summary_json, experiment):
 
 def reveals(frames_csv, target="cube", carriers=None):
     """The OPF's reveals of the target: for each hidden span of every seed that ends in a
-    detection, whether the main hypothesis in its last hidden frame was the right one: `carried`
-    (by one of `carriers`, when given) if the target moved more than 1 cm over the span (the
-    truth), `left` otherwise. Returns (right, reveals)."""
+    detection, whether the main hypothesis in its last hidden frame was the right one, and
+    whether the most probable one was: `carried` (by one of `carriers`, when given) if the target
+    moved more than 1 cm over the span (the truth), `left` otherwise. Returns (main right, most
+    probable right, reveals)."""
     spans = {}  # seed -> list of [first row, last row] of the hidden spans, in frame order
+    frames = {}  # (seed, frame) -> every hypothesis's row
     with open(frames_csv) as f:
-        rows = [r for r in csv.DictReader(f)
-                if r["object"] == target and r["estimator"] == "opf" and r["hypothesis"] == "0"]
-    right = total = 0
-    previous = {}
+        rows = [r for r in csv.DictReader(f) if r["object"] == target and r["estimator"] == "opf"]
     for r in rows:
+        frames.setdefault((r["seed"], r["frame"]), []).append(r)
+    right = likeliest_right = total = 0
+    previous = {}
+    for r in (r for r in rows if r["hypothesis"] == "0"):
         seed = r["seed"]
         hidden = r["visible"] == "0"
         span = spans.setdefault(seed, [])
@@ -209,14 +212,21 @@ def reveals(frames_csv, target="cube", carriers=None):
             first, last = span[-1]
             moved = np.hypot(float(last["true_x"]) - float(first["true_x"]),
                              float(last["true_y"]) - float(first["true_y"])) > 0.01
-            mode = last["mode"].split("+")[0]
-            if moved:
-                right += mode == "carried" and (carriers is None or last["model"] in carriers)
-            else:
-                right += mode == "left"
+            likeliest = max(frames[(seed, last["frame"])],
+                            key=lambda h: float(h.get("probability") or 1.0))
+            right += is_right(last, moved, carriers)
+            likeliest_right += is_right(likeliest, moved, carriers)
             total += 1
         previous[seed] = r
-    return right, total
+    return right, likeliest_right, total
+
+
+def is_right(row, moved, carriers):
+    """Whether a hypothesis's row says what happened: carried (by one of `carriers`) if moved."""
+    mode = row["mode"].split("+")[0]
+    if moved:
+        return mode == "carried" and (carriers is None or row.get("model") in carriers)
+    return mode == "left"
 
 
 def main():
@@ -261,25 +271,27 @@ def write_results(out, table):
     with open(os.path.join(out, "hand_scenes.csv"), "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
         writer.writerow(["recording", "scene", "estimator", "hidden_frames", "hidden_translation",
-                         "nearest_hidden_translation", "right_at_reveal", "reveals"])
-        for name, kind, errors, (right, total) in table:
+                         "nearest_hidden_translation", "right_at_reveal",
+                         "most_probable_right_at_reveal", "reveals"])
+        for name, kind, errors, (right, likeliest, total) in table:
             for e in estimators:
                 main_error, nearest, frames = errors[e]
-                revealed = [right, total] if e == "opf" else ["", ""]
+                revealed = [right, likeliest, total] if e == "opf" else ["", "", ""]
                 writer.writerow([name, kind, e, frames, f"{main_error:.6g}", f"{nearest:.6g}"] +
                                 revealed)
     lines = ["| recording | scene | hidden frames | " + " | ".join(estimators) +
-             " | opf: nearest hypothesis | opf: right at reveal |",
-             "|---|---|---|" + "---|" * (len(estimators) + 2)]
-    for name, kind, errors, (right, total) in table:
+             " | opf: nearest hypothesis | opf: right at reveal, main | most probable |",
+             "|---|---|---|" + "---|" * (len(estimators) + 3)]
+    for name, kind, errors, (right, likeliest, total) in table:
         cells = [f"{errors[e][0] * 1000:.1f}" for e in estimators]
         lines.append(f"| {name} | {kind} | {errors['opf'][2]} | " + " | ".join(cells) +
-                     f" | {errors['opf'][1] * 1000:.1f} | {right}/{total} |")
+                     f" | {errors['opf'][1] * 1000:.1f} | {right}/{total} | "
+                     f"{likeliest}/{total} |")
     text = ("The hidden object's mean translation error while hidden [mm] (the cube; in the "
             "cups game the ball), over the seeds; hidden frames summed over the seeds. Right at "
-            "reveal: the reveals at which the OPF's main hypothesis was the right one (carried, "
-            "in the cups game by cup B or its hand, if the object moved while hidden; left "
-            "otherwise).\n\n" +
+            "reveal: the reveals at which the OPF's main hypothesis, and its most probable one, "
+            "in the last hidden frame was the right one (carried, in the cups game by cup B or "
+            "its hand, if the object moved while hidden; left otherwise).\n\n" +
             "\n".join(lines) + "\n")
     with open(os.path.join(out, "hand_scenes.md"), "w") as f:
         f.write(text)

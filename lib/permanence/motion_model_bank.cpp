@@ -88,12 +88,13 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
       !std::isfinite(extra_noise))
     throw std::invalid_argument(
         "MotionModelBank: update() with a non-finite time, position or noise");
-  const double sigma = observation_sigma(options_.observation_noise, extra_noise);
-  const double r = sigma * sigma;
+  const double r = options_.observation_noise * options_.observation_noise;
   if (!initialised_) {
+    const double first_r = r + extra_noise * extra_noise;
     for (int axis = 0; axis < 3; ++axis) {
       for (std::size_t j = 0; j < filters_[axis].size(); ++j)
-        start(filters_[axis][j], models_[axis][j].model, position[axis], position[axis], 0.0, r);
+        start(filters_[axis][j], models_[axis][j].model, position[axis], position[axis], 0.0,
+              first_r);
       weights_[axis].reset();
     }
     t_ = t;
@@ -106,9 +107,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
     throw std::invalid_argument("MotionModelBank: update() at t = " + std::to_string(t) +
                                 " s, before the last one at " + std::to_string(t_) + " s");
   t_ = t;
-  const kalman::Matrix<1> noise = kalman::Matrix<1>::Constant(r);
   for (int axis = 0; axis < 3; ++axis) {
-    const kalman::Vector<1> z = kalman::Vector<1>::Constant(position[axis]);
     log_likelihoods_.resize(filters_[axis].size());
     for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
       Filter& f = filters_[axis][j];
@@ -118,23 +117,70 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
       }
       kalman::predict(f.mean, f.covariance, f.step.transition, f.step.process_noise);
       f.mean += f.step.offset;
-      const auto correction = kalman::update_covariance_student_t(
-          f.covariance, kObservation, noise, kalman::Vector<1>(z - kObservation * f.mean),
-          noise_model_);
-      f.mean += correction.correction;
+      f.bias_covariance = f.step.transition * f.bias_covariance;
+      const auto correction = update_member(f, position[axis], extra_noise, r);
       log_likelihoods_[j] = correction.log_likelihood;
       f.surprises = correction.squared_distance > kAxisGateChiSquare ? f.surprises + 1 : 0;
       if (f.surprises >= kSurprisesToRestart)
-        start(f, models_[axis][j].model, position[axis], last_position_[axis], dt, r);
+        start(f, models_[axis][j].model, position[axis], last_position_[axis], dt,
+              r + extra_noise * extra_noise);
     }
     weights_[axis].update(dt, options_.memory, log_likelihoods_);
   }
   last_position_ = position;
 }
 
+kalman::Correction<3, 1> MotionModelBank::update_member(Filter& f, double z, double extra_noise,
+                                                        double r) const {
+  const kalman::Matrix<1> noise = kalman::Matrix<1>::Constant(r);
+  if (extra_noise == 0.0) {
+    f.forget_bias();  // a clean view ends a stretch of partial views
+    const auto c = kalman::update_covariance_student_t(f.covariance, kObservation, noise,
+                                                       kalman::Vector<1>(z - kObservation * f.mean),
+                                                       noise_model_);
+    f.mean += c.correction;
+    return {kalman::Vector<3>(c.correction[0], c.correction[1], 0.0), c.innovation,
+            c.squared_distance, c.log_likelihood};
+  }
+  // The state (p, v, s) measured through H = [1 0 extra_noise], with the usual noise alone white.
+  kalman::Vector<3> x;
+  x << f.mean, f.bias;
+  kalman::Matrix<3> p;
+  p << f.covariance, f.bias_covariance, f.bias_covariance.transpose(), f.bias_variance;
+  const kalman::Matrix<1, 3> h(1.0, 0.0, extra_noise);
+  const auto correction =
+      kalman::update_covariance_student_t(p, h, noise, kalman::Vector<1>(z - h * x), noise_model_);
+  x += correction.correction;
+  f.mean = x.head<2>();
+  f.bias = x[2];
+  f.covariance = p.topLeftCorner<2, 2>();
+  f.bias_covariance = p.topRightCorner<2, 1>();
+  f.bias_variance = p(2, 2);
+  return correction;
+}
+
+PartialViewBias MotionModelBank::partial_view_bias() const {
+  PartialViewBias out{Eigen::Vector3d::Zero(), 0.0};
+  for (int axis = 0; axis < 3; ++axis) {
+    const std::span<const double> w = weights(axis);
+    for (std::size_t j = 0; j < w.size(); ++j) out.mean[axis] += w[j] * filters_[axis][j].bias;
+    for (std::size_t j = 0; j < w.size(); ++j) {
+      const double d = filters_[axis][j].bias - out.mean[axis];
+      out.variance += w[j] * (filters_[axis][j].bias_variance + d * d) / 3.0;
+    }
+  }
+  return out;
+}
+
+void MotionModelBank::end_partial_views() {
+  for (std::vector<Filter>& axis : filters_)
+    for (Filter& f : axis) f.forget_bias();
+}
+
 void MotionModelBank::start(Filter& filter, MotionModel model, double position, double previous,
                             double dt, double r) const {
   filter.surprises = 0;
+  filter.forget_bias();
   if (model == MotionModel::kConstantPosition) {
     filter.mean << position, 0.0;
     filter.covariance << r, 0.0, 0.0, 0.0;

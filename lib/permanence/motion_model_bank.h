@@ -32,6 +32,11 @@
 // 99.9% gate restarts from them (kSurprisesToRestart), so that no member is lost for good. The
 // forgetting is stated in continuous time: n frames of dt forget as one of n dt. With the prior
 // uniform over members, the prior term is a constant that the normalisation removes.
+//
+// A partial view (a detection stating an extra noise e) is off by e s: each member carries the
+// bias s ~ N(0, 1) as a third state, constant over consecutive partial views (H = [1 0 e]), and
+// forgets it at a clean view or a gap (end_partial_views), so that a partly covered object's
+// centroid lagging frame after frame is read as the bias it is, not as a change of velocity.
 
 #include "opf/permanence/axis_motion_model.h"
 #include "opf/permanence/model_weights.h"
@@ -66,6 +71,13 @@ struct BankPrediction {
   Eigen::Vector3d variance() const;
 };
 
+/// The bias of the current stretch of partial views in units of their stated extra noise: a
+/// detection with extra noise e is off by e s (per axis; s ~ N(0, 1) when the stretch begins).
+struct PartialViewBias {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  double variance = 1.0;
+};
+
 class MotionModelBank {
  public:
   /// Throws std::invalid_argument naming the first bad option.
@@ -76,8 +88,13 @@ class MotionModelBank {
   /// position's pinned at 0) with the prior weights; a later one steps every member across the
   /// interval (a gap just predicts across) and updates it and the weights.
   /// `extra_noise` (m): the noise the detector states for this detection beyond its usual (a
-  /// partial view's), added in variance to options.observation_noise (observation_sigma).
+  /// partial view's): the scale of the bias s that a stretch of partial views shares (each
+  /// member's third state, PartialViewBias), a clean view ending the stretch.
   void update(double t, const Eigen::Vector3d& position, double extra_noise = 0.0);
+  /// The partial views' bias s: its mixture mean per axis and variance (averaged over the axes).
+  PartialViewBias partial_view_bias() const;
+  /// Ends a stretch of partial views (a gap: the object comes back seen from another side).
+  void end_partial_views();
 
   bool initialised() const { return initialised_; }
   /// The time of the last update (s).
@@ -108,6 +125,17 @@ class MotionModelBank {
   struct Filter {
     kalman::Vector<2> mean;
     kalman::Matrix<2> covariance;
+    /// The partial views' bias s (a detection off by extra_noise s, s ~ N(0, 1), one s for a
+    /// stretch of consecutive partial views): its mean, variance and covariance with (p, v).
+    double bias = 0.0;
+    double bias_variance = 1.0;
+    kalman::Vector<2> bias_covariance = kalman::Vector<2>::Zero();
+    /// s afresh: N(0, 1), independent of (p, v).
+    void forget_bias() {
+      bias = 0.0;
+      bias_variance = 1.0;
+      bias_covariance.setZero();
+    }
     int surprises = 0;  ///< consecutive measurements outside the member's gate
     /// The model's step over step_dt, reused while frames keep one rate.
     double step_dt = -1.0;
@@ -118,6 +146,9 @@ class MotionModelBank {
   /// the velocity is their slope); v pinned at 0 for constant position.
   void start(Filter& filter, MotionModel model, double position, double previous, double dt,
              double r) const;
+  /// Member f's update with the axis's measurement z, its stated extra noise and the detector's
+  /// usual noise (variance r); returns the Student-t correction's log-likelihood and distance.
+  kalman::Correction<3, 1> update_member(Filter& f, double z, double extra_noise, double r) const;
 
   MotionModelBankOptions options_;
   std::array<std::vector<AxisMotionModel>, 3> models_;

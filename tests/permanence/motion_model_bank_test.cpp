@@ -338,6 +338,48 @@ TEST(MotionModelBank, AStatedExtraNoiseWeighsADetectionLess) {
   EXPECT_THROW(stated.update(t + 0.1, on_track, std::nan("")), std::invalid_argument);
 }
 
+// A partly covered object's centroid lags its centre frame after frame, by a share of the extra
+// noise the detector states: a ball rolling at 1 m/s under a cover, its last ten detections off by
+// -e_k (e_k = 2, 4, ..., 20 mm stated). One bias per stretch, s ~ N(0, 1) in units of e_k, explains
+// the lag; read as white noise it would be a slowing ball.
+MotionModelBank rolled_under_a_cover(double s, bool stated) {
+  MotionModelBankOptions velocity_only;
+  velocity_only.constant_position = velocity_only.damped_velocity = velocity_only.ballistic = false;
+  velocity_only.observation_noise = 0.002;
+  MotionModelBank bank(velocity_only);
+  Random random(5);
+  for (int k = 0; k < 70; ++k) {
+    const double t = k / kRate;
+    const double extra = k < 60 ? 0.0 : 0.002 * (k - 59);
+    const Eigen::Vector3d truth(1.0 * t, 0.0, 0.0);
+    bank.update(t, truth + Eigen::Vector3d(extra * s + 0.002 * random.normal(), 0.0, 0.0),
+                stated ? extra : 0.0);
+  }
+  return bank;
+}
+
+TEST(MotionModelBank, PartialViewsShareOneBiasInUnitsOfTheirStatedNoise) {
+  const MotionModelBank lagging = rolled_under_a_cover(-1.0, true);
+  const PartialViewBias bias = lagging.partial_view_bias();
+  EXPECT_NEAR(bias.mean[0], -1.0, 0.2);  // the lag read as the bias it is (-1.13 here)
+  EXPECT_LT(bias.variance, 0.2);         // and learned (0.06 here; 1 before the stretch)
+  EXPECT_NEAR(bias.mean[1], 0.0, 0.05);
+  EXPECT_NEAR(lagging.velocity()[0], 1.0, 0.02);  // the ball still rolls at 1 m/s (1.011 here)
+  // The same detections with no noise stated read as a slowing ball (0.949 here).
+  EXPECT_LT(rolled_under_a_cover(-1.0, false).velocity()[0], 0.97);
+}
+
+TEST(MotionModelBank, ACleanViewOrAGapEndsAStretchOfPartialViews) {
+  MotionModelBank bank = rolled_under_a_cover(-1.0, true);
+  MotionModelBank after_gap = bank;
+  bank.update(70 / kRate, Eigen::Vector3d(70 / kRate, 0.0, 0.0));
+  EXPECT_EQ(bank.partial_view_bias().mean, Eigen::Vector3d::Zero());
+  EXPECT_DOUBLE_EQ(bank.partial_view_bias().variance, 1.0);
+  after_gap.end_partial_views();
+  EXPECT_EQ(after_gap.partial_view_bias().mean, Eigen::Vector3d::Zero());
+  EXPECT_DOUBLE_EQ(after_gap.partial_view_bias().variance, 1.0);
+}
+
 // sample_member maps uniform draws to members in proportion to their weights: a stratified grid
 // of N draws falls on member j round(N w_j) times, give or take one.
 TEST(MotionModelBank, SampleMemberFollowsTheWeights) {

@@ -1,5 +1,5 @@
-"""The hand scenes' reveal statistic: was the OPF's main hypothesis the right one when the cube
-was seen again (carried if it moved while hidden, left otherwise)?"""
+"""The hand scenes' reveal statistic: were the OPF's main hypothesis and its most probable one the
+right one when the cube was seen again (carried if it moved while hidden, left otherwise)?"""
 
 import csv
 import importlib.util
@@ -44,7 +44,8 @@ def test_each_reveal_is_judged_by_whether_the_cube_moved(tmp_path):
                                  (3, 1, "measured"), (4, 0, "left"), (5, 0, "left")]:
         rows.append((frame, "cube", "opf", 1, 0, visible, mode, 0.3, 0.1))
     write_frames(path, rows)
-    assert hand_scenes.reveals(path) == (2, 3)
+    # Without a probability column every row counts as certain: the main one is the likeliest.
+    assert hand_scenes.reveals(path) == (2, 2, 3)
 
 
 def test_in_the_cups_game_only_the_right_carrier_counts(tmp_path):
@@ -62,5 +63,27 @@ def test_in_the_cups_game_only_the_right_carrier_counts(tmp_path):
         writer.writeheader()
         for r in rows:
             writer.writerow(dict(zip(FIELDS + ["model"], r)))
-    assert hand_scenes.reveals(path, "ball", {"cup_b", "hand_b"}) == (1, 2)
-    assert hand_scenes.reveals(path, "ball") == (2, 2)
+    assert hand_scenes.reveals(path, "ball", {"cup_b", "hand_b"}) == (1, 1, 2)
+    assert hand_scenes.reveals(path, "ball") == (2, 2, 2)
+
+
+def test_the_most_probable_hypothesis_may_differ_from_the_main_one(tmp_path):
+    path = tmp_path / "frames.csv"
+    fields = FIELDS + ["model", "probability"]
+    rows = []
+    # The cube stays put while hidden in frames 1-2. Seed 0: main `left` at 0.45, `carried` at
+    # 0.55 (the main hypothesis changes hands only on stronger evidence): the main is right, the
+    # most probable is not. Seed 1: main `left` at 0.6: both right.
+    for seed, p_left in ((0, 0.45), (1, 0.6)):
+        for frame, visible in ((0, 1), (1, 0), (2, 0), (3, 1)):
+            mode = "left" if not visible else "measured"
+            rows.append((frame, "cube", "opf", seed, 0, visible, mode, 0.2, 0.0, "", p_left))
+            if not visible:
+                rows.append((frame, "cube", "opf", seed, 1, visible, "carried", 0.25, 0.0, "hand",
+                             1.0 - p_left))
+    with open(path, "w", newline="") as f:
+        writer = csv.DictWriter(f, fields)
+        writer.writeheader()
+        for r in rows:
+            writer.writerow(dict(zip(fields, r)))
+    assert hand_scenes.reveals(path) == (2, 1, 2)
