@@ -1,7 +1,7 @@
 // The motion-model bank (permanence/motion_model_bank.h) for one object: its per-frame update
-// (3 axes, every member's Kalman step and the weights: 15 + 15 + 18 members with the defaults)
-// and its predictive mixture for one horizon (every member's prediction, as the particles of a
-// gap would draw from it).
+// (3 axes, every member's Kalman step and the weights: 15 + 15 + 18 members with the defaults),
+// with clean views and with partial views, and its predictive mixture for one horizon (every
+// member's prediction, as the particles of a gap would draw from it).
 
 #include "opf/core/random.h"
 #include "opf/permanence/motion_model_bank.h"
@@ -27,13 +27,15 @@ std::vector<Eigen::Vector3d> throw_positions(std::size_t count) {
   return positions;
 }
 
-void BM_BankUpdate(benchmark::State& state) {
+// Every frame stating `extra_noise` (m; 0: none) is the worst case of a stretch of partial views,
+// each member's update then a 3-state one (its bias s).
+void run_updates(benchmark::State& state, double extra_noise) {
   const auto positions = throw_positions(256);
   MotionModelBank bank;
   std::size_t k = 0;
   double t = 0.0;
   for (auto _ : state) {
-    bank.update(t, positions[k]);
+    bank.update(t, positions[k], extra_noise);
     t += kDt;
     k = (k + 1) % positions.size();
     benchmark::ClobberMemory();
@@ -41,7 +43,16 @@ void BM_BankUpdate(benchmark::State& state) {
   state.counters["members"] =
       static_cast<double>(bank.members(0).size() + bank.members(1).size() + bank.members(2).size());
 }
+
+void BM_BankUpdate(benchmark::State& state) {
+  run_updates(state, 0.0);
+}
 BENCHMARK(BM_BankUpdate)->Unit(benchmark::kMicrosecond);
+
+void BM_BankUpdatePartialViews(benchmark::State& state) {
+  run_updates(state, 0.005);
+}
+BENCHMARK(BM_BankUpdatePartialViews)->Unit(benchmark::kMicrosecond);
 
 void BM_BankPredict(benchmark::State& state) {
   const auto positions = throw_positions(30);

@@ -107,6 +107,9 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
     throw std::invalid_argument("MotionModelBank: update() at t = " + std::to_string(t) +
                                 " s, before the last one at " + std::to_string(t_) + " s");
   t_ = t;
+  // A clean view ends a stretch of partial views; within one, s's covariance with (p, v) moves.
+  const bool continues_stretch = in_partial_views_ && extra_noise > 0.0;
+  if (in_partial_views_ && extra_noise == 0.0) end_partial_views();
   for (int axis = 0; axis < 3; ++axis) {
     log_likelihoods_.resize(filters_[axis].size());
     for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
@@ -117,7 +120,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
       }
       kalman::predict(f.mean, f.covariance, f.step.transition, f.step.process_noise);
       f.mean += f.step.offset;
-      f.bias_covariance = f.step.transition * f.bias_covariance;
+      if (continues_stretch) f.bias_covariance = f.step.transition * f.bias_covariance;
       const auto correction = update_member(f, position[axis], extra_noise, r);
       log_likelihoods_[j] = correction.log_likelihood;
       f.surprises = correction.squared_distance > kAxisGateChiSquare ? f.surprises + 1 : 0;
@@ -127,14 +130,14 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
     }
     weights_[axis].update(dt, options_.memory, log_likelihoods_);
   }
+  in_partial_views_ = extra_noise > 0.0;
   last_position_ = position;
 }
 
 kalman::Correction<3, 1> MotionModelBank::update_member(Filter& f, double z, double extra_noise,
                                                         double r) const {
   const kalman::Matrix<1> noise = kalman::Matrix<1>::Constant(r);
-  if (extra_noise == 0.0) {
-    f.forget_bias();  // a clean view ends a stretch of partial views
+  if (extra_noise == 0.0) {  // s forgotten: the (p, v) update alone
     const auto c = kalman::update_covariance_student_t(f.covariance, kObservation, noise,
                                                        kalman::Vector<1>(z - kObservation * f.mean),
                                                        noise_model_);
@@ -175,6 +178,7 @@ PartialViewBias MotionModelBank::partial_view_bias() const {
 void MotionModelBank::end_partial_views() {
   for (std::vector<Filter>& axis : filters_)
     for (Filter& f : axis) f.forget_bias();
+  in_partial_views_ = false;
 }
 
 void MotionModelBank::start(Filter& filter, MotionModel model, double position, double previous,

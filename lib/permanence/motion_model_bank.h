@@ -158,6 +158,7 @@ class MotionModelBank {
   /// The detector's noise on one axis (kBankNoiseDof).
   kalman::StudentTNoise noise_model_ = kalman::student_t_noise<1>(kBankNoiseDof);
   Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();
+  bool in_partial_views_ = false;  ///< the last update was a partial view (no gap since)
   double t_ = 0.0;
   bool initialised_ = false;
 };
