@@ -89,12 +89,13 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
     throw std::invalid_argument(
         "MotionModelBank: update() with a non-finite time, position or noise");
   const double r = options_.observation_noise * options_.observation_noise;
+  // A (re)start reads one detection alone: its bias, unknown, counts as noise.
+  const double detection_r = r + extra_noise * extra_noise;
   if (!initialised_) {
-    const double first_r = r + extra_noise * extra_noise;
     for (int axis = 0; axis < 3; ++axis) {
       for (std::size_t j = 0; j < filters_[axis].size(); ++j)
         start(filters_[axis][j], models_[axis][j].model, position[axis], position[axis], 0.0,
-              first_r);
+              detection_r);
       weights_[axis].reset();
     }
     t_ = t;
@@ -125,8 +126,7 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
       log_likelihoods_[j] = correction.log_likelihood;
       f.surprises = correction.squared_distance > kAxisGateChiSquare ? f.surprises + 1 : 0;
       if (f.surprises >= kSurprisesToRestart)
-        start(f, models_[axis][j].model, position[axis], last_position_[axis], dt,
-              r + extra_noise * extra_noise);
+        start(f, models_[axis][j].model, position[axis], last_position_[axis], dt, detection_r);
     }
     weights_[axis].update(dt, options_.memory, log_likelihoods_);
   }
