@@ -7,6 +7,7 @@
 #include "opf/permanence/motion_classifier.h"
 #include "opf/permanence/occluder_carry.h"
 #include "opf/permanence/occluder_selection.h"
+#include "opf/permanence/partial_view.h"
 #include "opf/permanence/place_visibility.h"
 #include "opf/permanence/trajectory_motion.h"
 
@@ -98,9 +99,10 @@ Estimate ObjectPermanenceFilter::initialise(double t, const mrpt::poses::CPose3D
 
 void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
-                                      const Estimate& estimate, double extra_noise) {
+                                      const Estimate& estimate, double extra_noise,
+                                      const PartialViewBias& stretch_prior) {
   detector_jitter_.add(t, orientation);
-  update_banks(t, position, orientation, extra_noise);
+  update_banks(t, position, orientation, extra_noise, stretch_prior);
   history_.push_back({t, translation_of(estimate.pose.mean), orientation_of(estimate.pose.mean)});
   while (history_.size() > options_.history_length) history_.pop_front();
 }
@@ -122,26 +124,26 @@ bool ObjectPermanenceFilter::bank_expects(double t, const Eigen::Vector3d& posit
 }
 
 void ObjectPermanenceFilter::update_banks(double t, const Eigen::Vector3d& position,
-                                          const Eigen::Quaterniond& orientation,
-                                          double extra_noise) {
+                                          const Eigen::Quaterniond& orientation, double extra_noise,
+                                          const PartialViewBias& stretch_prior) {
   // A validation gate with two-in-a-row confirmation: one measurement the models cannot explain
   // is held back (a wrong detection must not set the velocity the particles drift by); when the
   // next one is outside too, both are taken (the object moved as no model predicted).
   if (!bank_expects(t, position, extra_noise)) {
     if (!held_) {
-      held_ = HeldMeasurement{t, position, orientation, extra_noise};
+      held_ = HeldMeasurement{t, position, orientation, extra_noise, stretch_prior};
       return;
     }
     take_held_measurement();
   }
   held_.reset();
-  translation_bank_.update(t, position, extra_noise);
+  translation_bank_.update(t, position, extra_noise, stretch_prior);
   rotation_bank_.update(t, orientation);
 }
 
 void ObjectPermanenceFilter::take_held_measurement() {
   if (!held_) return;
-  translation_bank_.update(held_->t, held_->position, held_->extra_noise);
+  translation_bank_.update(held_->t, held_->position, held_->extra_noise, held_->stretch_prior);
   rotation_bank_.update(held_->t, held_->orientation);
   held_.reset();
 }
@@ -180,10 +182,12 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
   }
   const double last_seen = t_;
   t_ = t;
+  remember_radii(ensemble.frame);
 
   if (measurement) {
     return update(t, dt, *measurement,
-                  options_.stated_noise ? stated_extra_noise(ensemble, measurement) : 0.0);
+                  options_.stated_noise ? stated_extra_noise(ensemble, measurement) : 0.0,
+                  ensemble);
   }
   if (!hidden_) {
     hidden_ = true;
@@ -197,8 +201,8 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
 }
 
 Estimate ObjectPermanenceFilter::update(double t, double dt,
-                                        const mrpt::poses::CPose3D& measurement,
-                                        double extra_noise) {
+                                        const mrpt::poses::CPose3D& measurement, double extra_noise,
+                                        const EnsembleView& ensemble) {
   // The object was seen in the previous frame too: the banks' velocity carries the particles.
   const bool drifts = options_.velocity_drift && !hidden_ && !history_.empty();
   for (std::size_t i = 0; i < hypotheses_.size(); ++i) {
@@ -216,12 +220,19 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   Hypothesis& h = hypotheses_[0];
   const EstimateMode hidden_by = h.motion ? h.motion->mode() : EstimateMode::kMeasured;
   if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
-  // A partial view is off by its stated extra noise times the bias s the banks estimate over the
-  // stretch of partial views so far: the particles take the detection less that, with the rest
-  // of s's spread as its extra noise (docs/dynamics.md, "Partial views").
-  Eigen::Vector3d seen = position;
-  if (extra_noise > 0.0 && !hidden_ && translation_bank_.initialised()) {
-    const PartialViewBias bias = translation_bank_.partial_view_bias();
+  // A partial view is off towards its visible part: the known part of that is taken off the
+  // detection (partial_view.h); the rest, extra noise times the bias s shared by the stretch of
+  // partial views, has its mean estimated by the banks and its spread counts as the detection's
+  // extra noise (docs/dynamics.md, "Partial views").
+  const PartialViewCentre centre =
+      partial_view_centre(position, extra_noise, object_, ensemble, options_.occluder);
+  const Eigen::Vector3d detected = centre.position;
+  PartialViewBias stretch_prior;  // s when a stretch begins
+  stretch_prior.variance = 1.0 - centre.known_share * centre.known_share;
+  Eigen::Vector3d seen = detected;
+  if (extra_noise > 0.0) {
+    const bool goes_on = !hidden_ && translation_bank_.in_partial_views();
+    const PartialViewBias bias = goes_on ? translation_bank_.partial_view_bias() : stretch_prior;
     seen -= extra_noise * bias.mean;
     h.filter.set_translation_extra_noise(extra_noise * std::sqrt(bias.variance));
   }
@@ -246,7 +257,7 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   hidden_ = false;
   // The history sample holds the estimate itself: its moments are computed once per step.
   const Estimate estimate = make_estimate(h, 0);
-  remember(t, position, orientation, estimate, extra_noise);
+  remember(t, detected, orientation, estimate, extra_noise, stretch_prior);
   return estimate;
 }
 
@@ -309,7 +320,8 @@ std::unique_ptr<HiddenMotion> ObjectPermanenceFilter::bank_mixture(PoseParticleF
 }
 
 VirtualMeasurementMotion::Settings ObjectPermanenceFilter::virtual_measurement_settings() const {
-  return {options_.uncertainty, options_.modules.uncertainty, options_.carry_particles};
+  return {options_.uncertainty, options_.modules.uncertainty, options_.carry_particles,
+          options_.stated_noise};
 }
 
 bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
@@ -392,9 +404,12 @@ void ObjectPermanenceFilter::keep_hypothesis_explaining(const Eigen::Vector3d& p
 void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensemble) {
   if (hypotheses_.size() < 2) return;
   std::vector<ViewBlocker> blockers;
-  for (const Estimate& e : ensemble.previous_estimates)
-    if (e.object != object_)
-      blockers.push_back({translation_of(e.pose.mean), translation_covariance(e)});
+  for (const Estimate& e : ensemble.previous_estimates) {
+    if (e.object == object_) continue;
+    const auto radius = stated_radii_.find(e.object);
+    blockers.push_back({translation_of(e.pose.mean), translation_covariance(e),
+                        radius == stated_radii_.end() ? 0.0 : radius->second});
+  }
   // p(no detection | the object at the place) = 1 - P(seen) (1 - P_miss).
   for (Hypothesis& h : hypotheses_) {
     const Eigen::Vector3d place = h.filter.translation_moments().mean;
@@ -404,6 +419,17 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
   }
   normalise_probabilities();
   most_probable_first();
+}
+
+void ObjectPermanenceFilter::remember_radii(const Frame& frame) {
+  for (const Detection& d : frame.detections) {
+    if (d.object == object_ || !(d.radius > 0.0)) continue;
+    const auto known = stated_radii_.find(d.object);
+    if (known != stated_radii_.end())
+      known->second = d.radius;
+    else
+      stated_radii_.emplace(d.object, d.radius);
+  }
 }
 
 void ObjectPermanenceFilter::normalise_probabilities() {

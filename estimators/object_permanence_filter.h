@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -58,9 +59,11 @@ class ObjectPermanenceFilter final : public Estimator {
   /// `extra_noise` (m): the detector's stated extra noise of the detection
   /// (Detection::extra_noise).
   void update_banks(double t, const Eigen::Vector3d& position,
-                    const Eigen::Quaterniond& orientation, double extra_noise);
+                    const Eigen::Quaterniond& orientation, double extra_noise,
+                    const PartialViewBias& stretch_prior);
   void take_held_measurement();
-  Estimate update(double t, double dt, const mrpt::poses::CPose3D& measurement, double extra_noise);
+  Estimate update(double t, double dt, const mrpt::poses::CPose3D& measurement, double extra_noise,
+                  const EnsembleView& ensemble);
   void start_occlusion(double last_seen, const EnsembleView& ensemble);
   /// The motion test (paper Eq. 10-11, or the fitted displacement) over the history.
   bool history_moves() const;
@@ -75,11 +78,14 @@ class ObjectPermanenceFilter final : public Estimator {
   /// The rotation likelihood's spread from the detector's own jitter (adaptive_rotation_noise).
   void adapt_rotation_noise(Hypothesis& hypothesis);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
-                const Estimate& estimate, double extra_noise);
+                const Estimate& estimate, double extra_noise,
+                const PartialViewBias& stretch_prior = {});
   void keep_hypothesis_explaining(const Eigen::Vector3d& position);
   /// The negative information: each hypothesis whose place the camera would see, while no
   /// detection arrives, loses probability by the detector's miss probability.
   void weigh_by_what_is_not_seen(const EnsembleView& ensemble);
+  /// Keeps the radii the frame's detections state (stated_radii_).
+  void remember_radii(const Frame& frame);
   /// Orders the hypotheses most probable first (stably: ties keep their order; the main one keeps
   /// its place unless another is substantially more probable), drops the negligible ones and
   /// renormalises.
@@ -108,12 +114,17 @@ class ObjectPermanenceFilter final : public Estimator {
     Eigen::Vector3d position;
     Eigen::Quaterniond orientation;
     double extra_noise;
+    PartialViewBias stretch_prior;
   };
   std::optional<HeldMeasurement> held_;
   double t_ = 0.0;
   double hidden_since_ = 0.0;
-  /// m: how near the occluder came to this object when it hid it (place_visibility.h).
+  /// m: how near the occluder came to this object when it hid it: the extent of an object whose
+  /// detector states none (place_visibility.h).
   double hiding_radius_ = 0.0;
+  /// m: every other object's silhouette radius, as its detections last stated it
+  /// (Detection::radius).
+  std::map<std::string, double, std::less<>> stated_radii_;
   /// The object's position covariance at onset: how well each hypothesis knows its place (the
   /// particles' random walk spreads them to keep them alive, not because the object moves).
   Eigen::Matrix3d place_covariance_ = Eigen::Matrix3d::Zero();

@@ -113,7 +113,8 @@ void bind_tracker(py::module_& m) {
            "occluder module's line of sight starts, as opf track --camera")
       .def("step", &PyTracker::step, py::arg("t"), py::arg("detections"),
            "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}, "
-           "an eighth number the detection's stated extra noise (m). Returns {object: Estimate} "
+           "an eighth number the detection's stated extra noise (m), a ninth the object's stated "
+           "radius (m). Returns {object: Estimate} "
            "for every object seen so far. A non-finite or malformed "
            "input raises ValueError naming the object and the field, and leaves the tracker as "
            "it was.")

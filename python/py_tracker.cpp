@@ -38,17 +38,22 @@ std::vector<double> pose_fields(const std::string& object, const py::object& pos
                                 ": expected a pose [x, y, z, qx, qy, qz, qw] or None, got " +
                                 py::cast<std::string>(py::repr(pose)));
   }
-  if (p.size() != kPoseFields.size() && p.size() != kPoseFields.size() + 1)
+  if (p.size() < kPoseFields.size() || p.size() > kPoseFields.size() + 2)
     throw std::invalid_argument(where +
                                 ": expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with "
-                                "extra_noise), got " +
+                                "extra_noise, 9 with radius), got " +
                                 std::to_string(p.size()));
   for (std::size_t i = 0; i < kPoseFields.size(); ++i)
     require_finite(p[i], where + ", field '" + kPoseFields[i] + "'");
-  // An eighth number: the detector's stated extra noise (m), as the log's extra_noise column.
-  if (p.size() > kPoseFields.size() && !(std::isfinite(p.back()) && p.back() >= 0.0))
-    throw std::invalid_argument(where + ", field 'extra_noise': expected a standard deviation >= " +
-                                "0, got " + csv::format_double(p.back()));
+  // An eighth number: the detector's stated extra noise (m), as the log's extra_noise column; a
+  // ninth: the object's stated radius (m), as its radius column.
+  const auto require_length = [&](std::size_t i, const char* field, const char* what) {
+    if (p.size() > i && !(std::isfinite(p[i]) && p[i] >= 0.0))
+      throw std::invalid_argument(where + ", field '" + field + "': expected " + what +
+                                  " >= 0, got " + csv::format_double(p[i]));
+  };
+  require_length(7, "extra_noise", "a standard deviation");
+  require_length(8, "radius", "a radius");
   return p;
 }
 
@@ -70,7 +75,7 @@ Frame frame_from(double t, const std::map<std::string, py::object>& detections) 
                                   csv::format_double(q.norm()));
     frame.detections.push_back({object,
                                 make_pose(Eigen::Vector3d(p[0], p[1], p[2]), q.normalized()),
-                                p.size() > kPoseFields.size() ? p.back() : 0.0});
+                                p.size() > 7 ? p[7] : 0.0, p.size() > 8 ? p[8] : 0.0});
   }
   return frame;
 }

@@ -17,6 +17,10 @@ struct Detection {
   /// standard deviation per axis of the position; 0: none. Estimators add it in variance to their
   /// configured observation noise (observation_sigma in estimator.h).
   double extra_noise = 0.0;
+  /// m: the object's extent across the line of sight as the detector states it, the radius of the
+  /// disc of its whole silhouette's area at its depth; 0: not stated. The occluder module takes it
+  /// as how much of the view the object covers (place_visibility.h).
+  double radius = 0.0;
 };
 
 /// The detections that share one timestamp (seconds). An object with no detection is unobserved.

@@ -18,6 +18,9 @@ inline constexpr std::array<std::string_view, 9> kLogColumns = {"t",  "object", 
 /// A CSV log's optional column: the extra noise the detector states for each detection (m, a
 /// standard deviation >= 0; empty: none), Detection::extra_noise.
 inline constexpr std::string_view kExtraNoiseColumn = "extra_noise";
+/// A CSV log's optional column: the object's extent across the line of sight as the detector
+/// states it (m, a radius >= 0; empty: not stated), Detection::radius.
+inline constexpr std::string_view kRadiusColumn = "radius";
 
 /// kCsv: the toolkit's CSV (a header naming kLogColumns). kTum: the TUM RGB-D trajectory format
 /// (evo, most SLAM systems): "timestamp tx ty tz qx qy qz qw" per line, separated by spaces or

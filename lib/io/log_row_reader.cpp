@@ -74,18 +74,23 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
                      "object's name (--object) or the column");
   for (std::size_t i = 0; i < names_.size(); ++i)
     if (!names_[i].empty()) column_[i] = reader_.column(names_[i]);
-  const auto& header = reader_.header();
-  if (options.format == LogFormat::kCsv &&
-      std::find(header.begin(), header.end(), kExtraNoiseColumn) != header.end())
-    extra_noise_column_ = reader_.column(kExtraNoiseColumn);
+  const auto optional_column = [&](std::string_view name) -> std::optional<std::size_t> {
+    const auto& header = reader_.header();
+    if (options.format != LogFormat::kCsv ||
+        std::find(header.begin(), header.end(), name) == header.end())
+      return std::nullopt;
+    return reader_.column(name);
+  };
+  extra_noise_column_ = optional_column(kExtraNoiseColumn);
+  radius_column_ = optional_column(kRadiusColumn);
 }
 
-double LogRowReader::extra_noise() const {
-  if (!extra_noise_column_ || reader_.field(*extra_noise_column_).empty()) return 0.0;
-  const double value = reader_.number(*extra_noise_column_);
+double LogRowReader::optional_length(const std::optional<std::size_t>& column,
+                                     std::string_view what) const {
+  if (!column || reader_.field(*column).empty()) return 0.0;
+  const double value = reader_.number(*column);
   if (!(value >= 0.0))
-    reader_.fail(*extra_noise_column_,
-                 "expected a standard deviation >= 0, got " + reader_.field(*extra_noise_column_));
+    reader_.fail(*column, "expected " + std::string(what) + " >= 0, got " + reader_.field(*column));
   return value * metres_per_unit_;
 }
 
@@ -129,7 +134,8 @@ bool LogRowReader::next(LogRow& row) {
     if (row.object.empty()) reader_.fail(column_[1], "expected an object name, got an empty field");
   }
   row.pose.reset();
-  row.extra_noise = extra_noise();
+  row.extra_noise = optional_length(extra_noise_column_, "a standard deviation");
+  row.radius = optional_length(radius_column_, "a radius");
 
   std::size_t empty_fields = 0;
   for (std::size_t i = 0; i < kPoseFields; ++i)

@@ -13,6 +13,7 @@
 #include <istream>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace opf {
 
@@ -24,6 +25,9 @@ struct LogRow {
   /// m: the extra noise the detector states for the detection (column kExtraNoiseColumn, scaled
   /// by the length unit; empty: 0), Detection::extra_noise.
   double extra_noise = 0.0;
+  /// m: the object's extent the detector states (column kRadiusColumn, scaled by the length unit;
+  /// empty: 0), Detection::radius.
+  double radius = 0.0;
   std::size_t line = 0;  ///< 1-based line in the file, for error messages
 };
 
@@ -42,8 +46,9 @@ class LogRowReader {
 
  private:
   bool next_box(LogRow& row);
-  /// The current row's kExtraNoiseColumn (0 without the column or where empty), checked >= 0.
-  double extra_noise() const;
+  /// The current row's optional length `column` (0 without the column or where empty), checked
+  /// >= 0 (`what` names the quantity in the error), in metres.
+  double optional_length(const std::optional<std::size_t>& column, std::string_view what) const;
 
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
   csv::Reader reader_;
@@ -51,6 +56,7 @@ class LogRowReader {
   double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge file (> 0)
   std::array<std::size_t, 9> column_{};
   std::optional<std::size_t> extra_noise_column_;  // a CSV log's optional kExtraNoiseColumn
+  std::optional<std::size_t> radius_column_;       // a CSV log's optional kRadiusColumn
   double seconds_per_unit_ = 1.0;
   double metres_per_unit_ = 1.0;
 };

@@ -49,6 +49,8 @@ class VirtualMeasurementMotion : public HiddenMotion {
     UncertaintyOptions uncertainty;
     bool uncertainty_module = true;  ///< off: Q~ = Q
     bool carry_particles = true;
+    /// A carrier's partial view read as one (partial_view.h); off, its detection as it is.
+    bool stated_noise = true;
   };
 
   explicit VirtualMeasurementMotion(const Settings& settings)

@@ -83,7 +83,8 @@ MotionModelBank::MotionModelBank(const MotionModelBankOptions& options) : option
   }
 }
 
-void MotionModelBank::update(double t, const Eigen::Vector3d& position, double extra_noise) {
+void MotionModelBank::update(double t, const Eigen::Vector3d& position, double extra_noise,
+                             const PartialViewBias& stretch_prior) {
   if (!std::isfinite(t) || !position.allFinite() || !(extra_noise >= 0.0) ||
       !std::isfinite(extra_noise))
     throw std::invalid_argument(
@@ -111,6 +112,13 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
   // A clean view ends a stretch of partial views; within one, s's covariance with (p, v) moves.
   const bool continues_stretch = in_partial_views_ && extra_noise > 0.0;
   if (in_partial_views_ && extra_noise == 0.0) end_partial_views();
+  if (extra_noise > 0.0 && !continues_stretch)
+    for (int axis = 0; axis < 3; ++axis)
+      for (Filter& f : filters_[axis]) {
+        f.bias = stretch_prior.mean[axis];
+        f.bias_variance = stretch_prior.variance;
+        f.bias_covariance.setZero();
+      }
   for (int axis = 0; axis < 3; ++axis) {
     log_likelihoods_.resize(filters_[axis].size());
     for (std::size_t j = 0; j < filters_[axis].size(); ++j) {

@@ -90,7 +90,11 @@ class MotionModelBank {
   /// `extra_noise` (m): the noise the detector states for this detection beyond its usual (a
   /// partial view's): the scale of the bias s that a stretch of partial views shares (each
   /// member's third state, PartialViewBias), a clean view ending the stretch.
-  void update(double t, const Eigen::Vector3d& position, double extra_noise = 0.0);
+  /// `stretch_prior`: s's prior when this detection begins a stretch of partial views.
+  void update(double t, const Eigen::Vector3d& position, double extra_noise = 0.0,
+              const PartialViewBias& stretch_prior = {});
+  /// Whether the last update was a partial view with no gap since (a stretch goes on).
+  bool in_partial_views() const { return in_partial_views_; }
   /// The partial views' bias s: its mixture mean per axis and variance (averaged over the axes).
   PartialViewBias partial_view_bias() const;
   /// Ends a stretch of partial views (a gap: the object comes back seen from another side).

@@ -1,6 +1,7 @@
 #include "opf/permanence/occluder_carry.h"
 
 #include "opf/core/pose_conversion.h"
+#include "opf/permanence/partial_view.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,6 +33,19 @@ CarrierPose carrier_pose(const Detection* detection, const Estimate* estimate,
   return {translation_of(for_position), orientation_of(for_orientation).normalized()};
 }
 
+// The carrier's pose, its detection's partial view read as one (partial_view.h) when `stated`.
+CarrierPose carrier_pose(const std::string& carrier, const Estimate* estimate,
+                         const EnsembleView& ensemble, const OccluderOptions& options,
+                         bool stated) {
+  const Detection* detection = ensemble.frame.find(carrier);
+  CarrierPose pose = carrier_pose(detection, estimate, options.orientation_from_estimate);
+  if (detection && stated)
+    pose.position =
+        partial_view_centre(pose.position, detection->extra_noise, carrier, ensemble, options)
+            .position;
+  return pose;
+}
+
 double horizontal_distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                            const Eigen::Vector3d& up) {
   const Eigen::Vector3d d = a - b;
@@ -46,20 +60,21 @@ OccluderCarry::OccluderCarry(const Settings& settings, const OccluderOptions& op
                              const Estimate& occluder_estimate, const EnsembleView& ensemble)
     : VirtualMeasurementMotion(settings),
       options_(options),
+      stated_noise_(settings.stated_noise),
       speed_window_(settings.uncertainty.speed_window),
       up_(up.normalized()),
       occluder_(std::move(occluder)),
       position_at_onset_(position_at_onset),
       orientation_at_onset_(orientation_at_onset) {
-  const CarrierPose reference = carrier_pose(ensemble.frame.find(occluder_), &occluder_estimate,
-                                             options_.orientation_from_estimate);
+  const CarrierPose reference =
+      carrier_pose(occluder_, &occluder_estimate, ensemble, options_, settings.stated_noise);
   occluder_position_at_onset_ = last_carrier_position_ = reference.position;
   occluder_orientation_at_onset_ = last_carrier_orientation_ = reference.orientation;
   // A cover at the object's level (a cup slid over a ball) moves it only by pushing it: it waits
   // for the occluder's departure. One above it (a hand, a lifted tray) is followed from onset.
   const bool level = std::abs(up_.dot(reference.position - position_at_onset_)) <= options_.reach;
   const bool wait = options_.carry_from_departure && level;
-  carrying_ = !wait;
+  waits_ = wait;
   at_offset_ = options_.keep_offset || wait;
   closest_distance_ = horizontal_distance(reference.position, position_at_onset_, up_);
 }
@@ -99,14 +114,13 @@ std::optional<VirtualMeasurementMotion::Measurement> OccluderCarry::measure(
   // The occluder's measurement this frame (the paper's y_k^j), or its estimate when it is hidden
   // itself (a chain of occlusions).
   const Estimate* occluder_estimate = find_estimate(ensemble, occluder_);
-  const Detection* occluder_detection = ensemble.frame.find(occluder_);
-  if (!occluder_estimate && !occluder_detection) return std::nullopt;
+  if (!occluder_estimate && !ensemble.frame.find(occluder_)) return std::nullopt;
   const CarrierPose occluder =
-      carrier_pose(occluder_detection, occluder_estimate, options_.orientation_from_estimate);
-  if (!carrying_) {
-    if (!departed(occluder.position, occluder.orientation)) return std::nullopt;
-    carrying_ = true;
-  }
+      carrier_pose(occluder_, occluder_estimate, ensemble, options_, stated_noise_);
+  // Judged afresh every frame: a cover that comes closer again than where it seemed to depart
+  // (its detection's jitter) is still closing in, and the carry restarts from its new closest
+  // approach.
+  if (waits_ && !departed(occluder.position, occluder.orientation)) return std::nullopt;
   const Eigen::Quaterniond carried =
       occluder.orientation * occluder_orientation_at_onset_.conjugate();
   Measurement z;

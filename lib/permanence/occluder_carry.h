@@ -37,6 +37,7 @@ class OccluderCarry final : public VirtualMeasurementMotion {
   double speed(double t, const Eigen::Vector3d& position);
 
   OccluderOptions options_;
+  bool stated_noise_;    ///< the carrier's partial views read as such
   double speed_window_;  ///< s, the uncertainty module's
   Eigen::Vector3d up_;
   std::string occluder_;
@@ -46,7 +47,7 @@ class OccluderCarry final : public VirtualMeasurementMotion {
   Eigen::Quaterniond occluder_orientation_at_onset_;
   Eigen::Vector3d position_at_onset_;
   Eigen::Quaterniond orientation_at_onset_;
-  bool carrying_ = true;         ///< false while a cover closes in
+  bool waits_ = false;           ///< a cover: carries only once it departs
   double closest_distance_ = 0;  ///< its closest horizontal distance so far
   bool at_offset_ = false;       ///< carried at its whole offset, turned about the occluder
   Eigen::Vector3d last_carrier_position_;

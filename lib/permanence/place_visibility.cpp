@@ -16,13 +16,14 @@ double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd
 }
 
 double seen_probability(const Eigen::Vector3d& place, const Eigen::Matrix3d& covariance,
-                        std::span<const ViewBlocker> blockers, double radius,
+                        std::span<const ViewBlocker> blockers, double fallback_radius,
                         const OccluderOptions& options) {
   const Eigen::MatrixXd p = occlusion_plane_projection(place, options);
   const std::optional<Eigen::Vector3d> ray = line_of_sight(place, options);
   double seen = 1.0;
   for (const ViewBlocker& b : blockers) {
     if (!b.mean.allFinite() || !b.covariance.allFinite()) continue;
+    const double radius = b.radius > 0.0 ? b.radius : fallback_radius;
     const Eigen::Vector3d offset = b.mean - place;
     if (ray && offset.dot(*ray) > radius) continue;  // behind the place
     seen *= 1.0 - covering_probability(p * offset, p * (covariance + b.covariance) * p.transpose(),

@@ -31,6 +31,7 @@ CameraFrame CameraSensor::observe(const SceneSnapshot& scene) {
       sighting.position = camera_.back_project(blobs[i]->centroid_px, depth);
       sighting.partial_view_offset =
           partial_view_offset(sighting.visible_fraction, expected, depth, camera_);
+      sighting.radius = silhouette_radius(expected, depth, camera_);
     }
     frame.sightings.push_back(sighting);
   }
@@ -39,10 +40,15 @@ CameraFrame CameraSensor::observe(const SceneSnapshot& scene) {
 
 double partial_view_offset(double visible_fraction, double expected_area_px, double depth,
                            const CameraModel& camera) {
-  if (!(expected_area_px > 0.0) || !(visible_fraction < 1.0)) return 0.0;
+  if (!(visible_fraction < 1.0)) return 0.0;
+  return (1.0 - std::max(visible_fraction, 0.0)) *
+         silhouette_radius(expected_area_px, depth, camera);
+}
+
+double silhouette_radius(double expected_area_px, double depth, const CameraModel& camera) {
+  if (!(expected_area_px > 0.0)) return 0.0;
   const double radius_px = std::sqrt(expected_area_px / std::numbers::pi);
-  const double focal_px = std::sqrt(camera.fx * camera.fy);
-  return (1.0 - std::max(visible_fraction, 0.0)) * radius_px * depth / focal_px;
+  return radius_px * depth / std::sqrt(camera.fx * camera.fy);
 }
 
 double centre_depth_offset(const Body& body, const BodyPose& pose, const CameraModel& camera) {

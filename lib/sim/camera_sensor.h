@@ -45,4 +45,8 @@ double centre_depth_offset(const Body& body, const BodyPose& pose, const CameraM
 double partial_view_offset(double visible_fraction, double expected_area_px, double depth,
                            const CameraModel& camera);
 
+/// m: rho, the radius of the disc of a silhouette's area `expected_area_px` (pixels) at z-depth
+/// `depth` (m); 0 for no area.
+double silhouette_radius(double expected_area_px, double depth, const CameraModel& camera);
+
 }  // namespace opf::sim

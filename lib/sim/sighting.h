@@ -23,6 +23,9 @@ struct Sighting {
   /// visible fraction f and the silhouette's equivalent-disc radius rho at the body's depth
   /// (camera_sensor.h); 0 for a body seen whole.
   double partial_view_offset = 0.0;
+  /// m: the radius rho of the disc of the body's whole silhouette's area at its depth, as a
+  /// detector that knows the object's model states it; 0 when no blob was found.
+  double radius = 0.0;
 };
 
 /// One frame's sightings of every tracked body.

@@ -21,6 +21,7 @@ TEST(CupsGame, TheOpfFollowsTheBallsCupThroughTheShuffle) {
       (config.estimator_config.empty() ? EstimatorSettings{}
                                        : load_estimator_settings(config.estimator_config));
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
+  settings.opf.occluder.camera_position = config.camera.position;  // as `opf run` passes it
   const ExperimentResults r = run_open_loop(config, observation, {"opf", "pf"}, settings, 1, 9);
   const RunErrors& pf = r.runs.at("pf")[0];
   // The PF keeps the ball where it vanished, ~0.18 m from it on average while hidden. The OPF

@@ -131,6 +131,29 @@ TEST(MeasurementLogErrors, ANegativeOrNonNumericExtraNoise) {
   EXPECT_EQ(e.line(), 2u);
 }
 
+TEST(MeasurementLog, ReadsEachDetectionsStatedRadiusInTheLogsLengthUnit) {
+  const MeasurementLog log = parse(
+      "t,object,x,y,z,qx,qy,qz,qw,radius\n"
+      "0,ball,0.1,0.2,0.3,0,0,0,1,0.025\n"
+      "0,mug,0.5,0,0,0,0,0,1,\n");
+  ASSERT_EQ(log.frames.size(), 1u);
+  EXPECT_EQ(log.frames[0].find("ball")->radius, 0.025);
+  EXPECT_EQ(log.frames[0].find("mug")->radius, 0.0);  // empty: not stated
+  LogReadOptions millimetres;
+  millimetres.length_unit = LengthUnit::kMillimetres;
+  std::istringstream in("t,object,x,y,z,qx,qy,qz,qw,radius\n0,ball,100,0,0,0,0,0,1,45\n");
+  EXPECT_DOUBLE_EQ(parse_measurement_log(in, "log.csv", millimetres).frames[0].detections[0].radius,
+                   0.045);
+}
+
+TEST(MeasurementLogErrors, ANegativeOrNonNumericRadius) {
+  InputError e = parse_error("t,object,x,y,z,qx,qy,qz,qw,radius\n0,ball,0,0,0,0,0,0,1,-0.02\n");
+  EXPECT_STREQ(e.what(), "log.csv:2: column 'radius': expected a radius >= 0, got -0.02");
+  e = parse_error("t,object,x,y,z,qx,qy,qz,qw,radius\n0,ball,0,0,0,0,0,0,1,big\n");
+  EXPECT_EQ(e.field(), "radius");
+  EXPECT_EQ(e.line(), 2u);
+}
+
 TEST(MeasurementLog, EmptyPoseRowMarksObjectUnobservedButKeepsTheFrame) {
   const MeasurementLog log = parse(std::string(kHeader) +
                                    "0,ball,1,2,3,0,0,0,1\n"

@@ -380,6 +380,27 @@ TEST(MotionModelBank, ACleanViewOrAGapEndsAStretchOfPartialViews) {
   EXPECT_DOUBLE_EQ(after_gap.partial_view_bias().variance, 1.0);
 }
 
+// A stretch's first partial view starts s from the prior the caller states: N(0, 1) when nothing is
+// known of its direction, N(0, 1 - 0.87^2) once the known share is taken off the detection, and a
+// tight prior holds s where it says.
+TEST(MotionModelBank, AStretchOfPartialViewsStartsFromTheStatedPrior) {
+  const auto first_partial_view = [](const PartialViewBias& prior) {
+    MotionModelBank bank;
+    Random random(7);
+    for (int k = 0; k < 30; ++k)
+      bank.update(k / kRate, Eigen::Vector3d(0.002 * random.normal(), 0.0, 0.0));
+    bank.update(30 / kRate, Eigen::Vector3d(0.01, 0.0, 0.0), 0.01, prior);
+    return bank.partial_view_bias();
+  };
+  const PartialViewBias unknown = first_partial_view({});
+  const PartialViewBias known_share = first_partial_view({Eigen::Vector3d::Zero(), 0.2431});
+  EXPECT_LT(known_share.variance, 0.2431);
+  EXPECT_LT(known_share.variance, 0.5 * unknown.variance);
+  const PartialViewBias held = first_partial_view({Eigen::Vector3d(0.5, 0.0, 0.0), 1e-6});
+  EXPECT_NEAR(held.mean[0], 0.5, 1e-3);
+  EXPECT_LT(held.variance, 1e-6);
+}
+
 // sample_member maps uniform draws to members in proportion to their weights: a stratified grid
 // of N draws falls on member j round(N w_j) times, give or take one.
 TEST(MotionModelBank, SampleMemberFollowsTheWeights) {

@@ -54,6 +54,26 @@ TEST(PlaceVisibility, AnObliqueCameraLooksAlongItsOwnRay) {
   EXPECT_GT(seen_probability(kPlace, kTight, on_the_ray, 0.08, OccluderOptions{}), 1.0 - 1e-9);
 }
 
+TEST(PlaceVisibility, AStatedRadiusCoversInPlaceOfTheFallback) {
+  const OccluderOptions top_down;
+  const auto seen = [&](const ViewBlocker& blocker) {
+    return seen_probability(kPlace, kTight, std::vector{blocker}, 0.08, top_down);
+  };
+  // A hand whose detector states a 0.1 m silhouette: 9 cm across covers the place though the
+  // 8 cm fallback would not; 11 cm clears it, seven combined standard deviations (1.4 mm) out.
+  const auto hand_at = [](double across, double radius) {
+    return ViewBlocker{Eigen::Vector3d(0.5, across, 0.12), kTight, radius};
+  };
+  EXPECT_LT(seen(hand_at(0.09, 0.1)), 1e-9);
+  EXPECT_GT(seen(hand_at(0.11, 0.1)), 1.0 - 1e-9);
+  EXPECT_NEAR(seen(hand_at(0.1, 0.1)), 0.5, 1e-9);  // on the edge
+  // A radius stated smaller than the fallback: 6 cm across is clear of a 4 cm cup.
+  EXPECT_GT(seen(hand_at(0.06, 0.04)), 1.0 - 1e-9);
+  EXPECT_LT(seen(hand_at(0.06, 0.0)), 1e-9);  // not stated: the fallback's 8 cm
+  // Behind the place by more than its radius: hides nothing.
+  EXPECT_EQ(seen({Eigen::Vector3d(0.5, 0.0, -0.2), kTight, 0.1}), 1.0);
+}
+
 TEST(PlaceVisibility, TheHidingRadiusIsTheOccludersOffsetWhenTheObjectWasLastSeenAtMostReach) {
   const OccluderOptions options;  // reach 0.15 m
   EXPECT_NEAR(hiding_radius(kPlace, Eigen::Vector3d(0.56, 0.08, 0.12), options), 0.1, 1e-12);

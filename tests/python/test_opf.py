@@ -189,7 +189,13 @@ CUP = [0.1, 0.2, 0.3, 0.0, 0.0, 0.0, 1.0]
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 0], "object 'cup', fields 'qx,qy,qz,qw': expected a unit "
                                         "quaternion (norm within 0.01 of 1), got norm 0"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 1],
-     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise), got 6"),
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
+     "radius), got 6"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, -0.05],
+     "object 'cup', field 'radius': expected a radius >= 0, got -0.05"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 1.0],
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
+     "radius), got 10"),
     (NEXT, "0.1,0.2,0.3,0,0,0,1", "object 'cup': expected a pose [x, y, z, qx, qy, qz, qw] or "
                                   "None, got '0.1,0.2,0.3,0,0,0,1'"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, -0.01],

@@ -79,6 +79,8 @@ TEST(CameraSensor, AHalfCoveredBallIsSeenInPartWithABiasedCentre) {
   const double bias = (ball.position - Eigen::Vector3d(0.45, 0.05, 0.0)).head<2>().norm();
   EXPECT_GT(ball.partial_view_offset, bias);
   EXPECT_LT(ball.partial_view_offset, 0.025);  // at most the radius
+  // The radius stated is the whole silhouette's, however much of it is covered.
+  EXPECT_NEAR(ball.radius, 0.025, 5e-4);
 }
 
 TEST(CameraSensor, AWholeViewStatesNoPartialViewOffset) {
@@ -87,6 +89,8 @@ TEST(CameraSensor, AWholeViewStatesNoPartialViewOffset) {
   ASSERT_TRUE(ball.detected);
   // 1 - f is the tessellation's 0.3% and the pixels' rounding: below a tenth of a millimetre.
   EXPECT_LT(ball.partial_view_offset, 1e-4);
+  // Its silhouette's radius is the sphere's 2.5 cm, within the pixels' rounding (0.5 mm, 2%).
+  EXPECT_NEAR(ball.radius, 0.025, 5e-4);
 }
 
 TEST(PartialViewOffset, IsTheCoveredShareOfTheEquivalentDiscsRadius) {
@@ -97,6 +101,13 @@ TEST(PartialViewOffset, IsTheCoveredShareOfTheEquivalentDiscsRadius) {
   EXPECT_NEAR(partial_view_offset(0.2, area, 0.5, kCamera), 0.8 * rho, 1e-15);
   EXPECT_EQ(partial_view_offset(1.0, area, 0.5, kCamera), 0.0);
   EXPECT_EQ(partial_view_offset(0.5, 0.0, 0.5, kCamera), 0.0);  // nothing expected: nothing stated
+}
+
+TEST(SilhouetteRadius, IsTheEquivalentDiscsRadiusInMetresAtItsDepth) {
+  const double area = M_PI * 50.0 * 50.0;
+  EXPECT_NEAR(silhouette_radius(area, 0.5, kCamera),
+              50.0 * 0.5 / std::sqrt(kCamera.fx * kCamera.fy), 1e-15);
+  EXPECT_EQ(silhouette_radius(0.0, 0.5, kCamera), 0.0);
 }
 
 TEST(PartialViewOffset, BoundsTheCentroidOfADiscCutByAStraightEdge) {

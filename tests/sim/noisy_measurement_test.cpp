@@ -44,6 +44,17 @@ TEST(NoisyMeasurement, APartialViewStatesItsOffsetAsExtraNoise) {
   EXPECT_EQ(f.detections[1].extra_noise, 0.0);
 }
 
+TEST(NoisyMeasurement, EveryDetectionStatesItsSilhouettesRadius) {
+  CameraFrame camera{1.0,
+                     {{"ball", 0.5, true, {0.4, 0.0, 0.0}, 0.0125, 0.025},
+                      {"mug", 1.0, true, {0.4, 0.15, 0.03}, 0.0, 0.045}}};
+  Random noise(1);
+  const Frame f = noisy_measurement(camera, two_bodies(), MeasurementSettings{}, noise);
+  ASSERT_EQ(f.detections.size(), 2u);
+  EXPECT_EQ(f.detections[0].radius, 0.025);
+  EXPECT_EQ(f.detections[1].radius, 0.045);
+}
+
 TEST(NoisyMeasurement, NoiseHasTheConfiguredSpread) {
   // Over many frames the position noise has std 2 mm per axis and the orientation noise 0.01 rad
   // per tangent axis around the truth: 5 standard errors of the variance estimate (sqrt(2/N)).
