@@ -231,8 +231,10 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   stretch_prior.variance = 1.0 - centre.known_share * centre.known_share;
   Eigen::Vector3d seen = detected;
   if (extra_noise > 0.0) {
-    const bool goes_on = !hidden_ && translation_bank_.in_partial_views();
-    const PartialViewBias bias = goes_on ? translation_bank_.partial_view_bias() : stretch_prior;
+    // A gap ended the banks' stretch (start_occlusion): after one, a stretch begins afresh.
+    const PartialViewBias bias = translation_bank_.in_partial_views()
+                                     ? translation_bank_.partial_view_bias()
+                                     : stretch_prior;
     seen -= extra_noise * bias.mean;
     h.filter.set_translation_extra_noise(extra_noise * std::sqrt(bias.variance));
   }
@@ -422,14 +424,8 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
 }
 
 void ObjectPermanenceFilter::remember_radii(const Frame& frame) {
-  for (const Detection& d : frame.detections) {
-    if (d.object == object_ || !(d.radius > 0.0)) continue;
-    const auto known = stated_radii_.find(d.object);
-    if (known != stated_radii_.end())
-      known->second = d.radius;
-    else
-      stated_radii_.emplace(d.object, d.radius);
-  }
+  for (const Detection& d : frame.detections)
+    if (d.object != object_ && d.radius > 0.0) stated_radii_[d.object] = d.radius;
 }
 
 void ObjectPermanenceFilter::normalise_probabilities() {

@@ -24,25 +24,19 @@ struct CarrierPose {
   Eigen::Quaterniond orientation;
 };
 
+// A detection's partial view is read as one (partial_view.h) when `stated`.
 CarrierPose carrier_pose(const Detection* detection, const Estimate* estimate,
-                         bool orientation_from_estimate) {
-  const mrpt::poses::CPose3D& for_position = detection ? detection->pose : estimate->pose.mean;
-  const mrpt::poses::CPose3D& for_orientation =
-      (estimate && (orientation_from_estimate || !detection)) ? estimate->pose.mean
-                                                              : detection->pose;
-  return {translation_of(for_position), orientation_of(for_orientation).normalized()};
-}
-
-// The carrier's pose, its detection's partial view read as one (partial_view.h) when `stated`.
-CarrierPose carrier_pose(const std::string& carrier, const Estimate* estimate,
                          const EnsembleView& ensemble, const OccluderOptions& options,
                          bool stated) {
-  const Detection* detection = ensemble.frame.find(carrier);
-  CarrierPose pose = carrier_pose(detection, estimate, options.orientation_from_estimate);
+  const mrpt::poses::CPose3D& for_position = detection ? detection->pose : estimate->pose.mean;
+  const mrpt::poses::CPose3D& for_orientation =
+      (estimate && (options.orientation_from_estimate || !detection)) ? estimate->pose.mean
+                                                                      : detection->pose;
+  CarrierPose pose{translation_of(for_position), orientation_of(for_orientation).normalized()};
   if (detection && stated)
-    pose.position =
-        partial_view_centre(pose.position, detection->extra_noise, carrier, ensemble, options)
-            .position;
+    pose.position = partial_view_centre(pose.position, detection->extra_noise, detection->object,
+                                        ensemble, options)
+                        .position;
   return pose;
 }
 
@@ -66,8 +60,8 @@ OccluderCarry::OccluderCarry(const Settings& settings, const OccluderOptions& op
       occluder_(std::move(occluder)),
       position_at_onset_(position_at_onset),
       orientation_at_onset_(orientation_at_onset) {
-  const CarrierPose reference =
-      carrier_pose(occluder_, &occluder_estimate, ensemble, options_, settings.stated_noise);
+  const CarrierPose reference = carrier_pose(ensemble.frame.find(occluder_), &occluder_estimate,
+                                             ensemble, options_, settings.stated_noise);
   occluder_position_at_onset_ = last_carrier_position_ = reference.position;
   occluder_orientation_at_onset_ = last_carrier_orientation_ = reference.orientation;
   // A cover at the object's level (a cup slid over a ball) moves it only by pushing it: it waits
@@ -114,9 +108,10 @@ std::optional<VirtualMeasurementMotion::Measurement> OccluderCarry::measure(
   // The occluder's measurement this frame (the paper's y_k^j), or its estimate when it is hidden
   // itself (a chain of occlusions).
   const Estimate* occluder_estimate = find_estimate(ensemble, occluder_);
-  if (!occluder_estimate && !ensemble.frame.find(occluder_)) return std::nullopt;
+  const Detection* occluder_detection = ensemble.frame.find(occluder_);
+  if (!occluder_estimate && !occluder_detection) return std::nullopt;
   const CarrierPose occluder =
-      carrier_pose(occluder_, occluder_estimate, ensemble, options_, stated_noise_);
+      carrier_pose(occluder_detection, occluder_estimate, ensemble, options_, stated_noise_);
   // Judged afresh every frame: a cover that comes closer again than where it seemed to depart
   // (its detection's jitter) is still closing in, and the carry restarts from its new closest
   // approach.
