@@ -38,9 +38,10 @@ constexpr std::size_t kMaxOccluderHypotheses = 4;
 // place seen and empty.
 constexpr double kNegligibleProbability = 1e-3;
 
-// Carried or left: before any evidence, the two answers are equally likely (the carried half
-// shared by the plausible occluders); on a tie the object is left where it was last seen.
-constexpr double kLeftPrior = 0.5;
+// Carried or left, before any evidence: odds of 2:1 that a cover leaves the object where it was
+// last seen (the carried third shared by the plausible occluders): an object stays put unless the
+// evidence says otherwise (docs/occluder.md).
+constexpr double kLeftPrior = 2.0 / 3.0;
 
 // The detector's miss probability per frame for an object in clear view: a hypothesis whose place
 // is seen and empty keeps this share of its probability.
@@ -379,7 +380,8 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
   if (with_left) {
     spawn(std::make_unique<HeldMotion>(virtual_measurement_settings(), EstimateMode::kLeft),
           kLeftPrior);
-    std::rotate(hypotheses_.begin(), hypotheses_.end() - 1, hypotheses_.end());  // first on a tie
+    // Left first: the main estimate at onset.
+    std::rotate(hypotheses_.begin(), hypotheses_.end() - 1, hypotheses_.end());
     most_probable_first();
   }
   return true;

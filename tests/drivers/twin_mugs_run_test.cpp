@@ -59,12 +59,13 @@ TEST_F(TwinMugs, OneHypothesisFollowsEachMugAndTheRightOneSurvivesTheReveal) {
   const ExperimentResults r = run(settings());
   const HypothesisStats h = hypothesis_stats(r, "opf");
   ASSERT_GT(h.hidden_frames, 150u);
-  // At onset (the mugs' rims 4.5 cm either side): left where it vanished at 1/2, and carried by
-  // either mug at 1/4 each, equally plausible.
+  // At onset (the mugs' rims 4.5 cm either side): left where it vanished at 2/3 (the prior odds
+  // 2:1), and carried by either mug at 1/6 each, equally plausible.
   for (const FrameRecord& record : r.records) {
     if (record.frame != 60 || record.estimate.object != "ball") continue;
     const bool left = record.estimate.mode == EstimateMode::kLeft;
-    EXPECT_NEAR(record.estimate.probability, left ? 0.5 : 0.25, 0.01) << record.seed_index;
+    EXPECT_NEAR(record.estimate.probability, left ? 2.0 / 3.0 : 1.0 / 6.0, 0.01)
+        << record.seed_index;
   }
   // The hypothesis following mug B is held while B closes in and slides over the ball, then
   // carried at its offset of B's closest approach: the estimates' few mm to ~1 cm. The

@@ -896,16 +896,16 @@ TEST(ObjectPermanenceFilter, EveryPlausibleOccluderIsAHypothesisWithItsProbabili
   scene.objects.push_back({"cup_c", cup(Eigen::Vector3d::UnitX())});
   const SceneRun opf = run(scene, opf_factory(OpfOptions{}));
 
-  // At onset: left where it vanished at 1/2 (carried or left, equally likely before any
-  // evidence), and the carried half shared by the three cups, equally plausible: 1/6 each.
+  // At onset: left where it vanished at 2/3 (the prior odds 2:1 before any evidence), and the
+  // carried third shared by the three cups, equally plausible: 1/9 each.
   const Estimate& onset = opf.estimates[41].at("ball");
   EXPECT_EQ(onset.mode, EstimateMode::kLeft);
-  EXPECT_NEAR(onset.probability, 0.5, 1e-3);
+  EXPECT_NEAR(onset.probability, 2.0 / 3.0, 1e-3);
   ASSERT_EQ(opf.extras[41].size(), 3u);
   std::set<std::string> carriers;
   for (const Estimate& e : opf.extras[41]) {
     EXPECT_EQ(e.mode, EstimateMode::kCarried);
-    EXPECT_NEAR(e.probability, 1.0 / 6.0, 1e-3);
+    EXPECT_NEAR(e.probability, 1.0 / 9.0, 1e-3);
     carriers.insert(e.motion_model);
   }
   EXPECT_EQ(carriers, (std::set<std::string>{"cup_a", "cup_b", "cup_c"}));
@@ -984,25 +984,37 @@ TEST(ObjectPermanenceFilter, PassedOverTheBallIsLeftAndPickedUpItIsCarried) {
   ASSERT_EQ(passed.first, 45);
   const SceneRun over = run(pass, opf_factory(OpfOptions{}));
   const SceneRun up = run(pick, opf_factory(OpfOptions{}));
-  // At onset: left and carried by the hand, one half each, left first on the tie (the first
-  // frame's evidence on the hand's edge moves them by under 1%).
+  // At onset: left at 2/3 and carried by the hand at 1/3, the prior (the first frame's evidence
+  // on the hand's edge moves them by under 1%).
   for (const SceneRun* r : {&over, &up}) {
     EXPECT_EQ(r->estimates[45].at("ball").mode, EstimateMode::kLeft);
-    EXPECT_NEAR(r->estimates[45].at("ball").probability, 0.5, 0.01);
+    EXPECT_NEAR(r->estimates[45].at("ball").probability, 2.0 / 3.0, 0.01);
     ASSERT_EQ(r->extras[45].size(), 1u);
     EXPECT_EQ(r->extras[45][0].motion_model, "hand");
+    // In every frame the probabilities sum to one, and no other hypothesis is as much as a Bayes
+    // factor of 10^(1/2) more probable than the main one (it would have taken its place).
     for (int k = 45; k < 150; ++k) {
-      double total = r->estimates[k].at("ball").probability;
-      for (const Estimate& e : r->extras[k]) total += e.probability;
+      const double main = r->estimates[k].at("ball").probability;
+      double total = main;
+      for (const Estimate& e : r->extras[k]) {
+        total += e.probability;
+        ASSERT_LT(e.probability, std::sqrt(10.0) * main) << k;
+      }
       ASSERT_NEAR(total, 1.0, 1e-12) << k;
     }
   }
   // Passed over: nothing says otherwise while the hand covers the place, and the ball is seen
   // there as soon as it does not. Left throughout, within the noise of where it was (2 mm per
-  // axis; the estimate of a still ball ~1.5 mm, 4 sigma 6 mm).
+  // axis; the estimate of a still ball ~1.5 mm, 4 sigma 6 mm), and the more probable by the prior
+  // odds until the last hidden frame: there the ball is on the hand's edge (8.0 cm off its
+  // centre), and not seen there, carried is the more probable (0.6), short of the Bayes factor
+  // the main estimate needs to change hands.
   for (int k = passed.first; k <= passed.last; ++k) {
     ASSERT_EQ(over.estimates[k].at("ball").mode, EstimateMode::kLeft) << k;
     EXPECT_LT(error_at(over, pass, "ball", k), 0.006) << k;
+    if (k < passed.last) {
+      EXPECT_GT(over.estimates[k].at("ball").probability, 0.5) << k;
+    }
   }
   // Picked up: the hand's offset when the ball was last seen (8 cm) must open up again before
   // the place is seen empty, ~0.55 s after the pick at 0.15 m/s, blurred by the estimates'
@@ -1040,7 +1052,7 @@ TEST(ObjectPermanenceFilter, AStatedSizeCoversThePlaceByItself) {
 
 // Negative information needs a clear line of sight: with a tray hovering over the ball's place
 // from 1.8 s, the place is never seen: picked up, the ball is still left where it vanished, the
-// two hypotheses keeping their halves, until it is seen again.
+// two hypotheses keeping their prior shares, until it is seen again.
 TEST(ObjectPermanenceFilter, APlaceOutOfSightIsNoEvidence) {
   const Scene pick = hand_scene(true, true);
   const HiddenSpan span = hidden_span(pick);
@@ -1052,8 +1064,8 @@ TEST(ObjectPermanenceFilter, APlaceOutOfSightIsNoEvidence) {
     highest = std::max(highest, r.estimates[k].at("ball").probability);
   }
   // The first frames, the carried cloud still on the hand's edge, move them by about 1%.
-  EXPECT_GT(lowest, 0.48);
-  EXPECT_LT(highest, 0.52);
+  EXPECT_GT(lowest, 2.0 / 3.0 - 0.02);
+  EXPECT_LT(highest, 2.0 / 3.0 + 0.02);
 }
 
 TEST(ObjectPermanenceFilter, AllModulesOffIsTheStandardPf) {
