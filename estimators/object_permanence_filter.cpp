@@ -333,7 +333,9 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
   std::vector<const Estimate*> candidate_estimates;
   for (const Estimate& e : ensemble.previous_estimates) {
     if (e.object == object_) continue;
-    candidates.push_back({e.object, translation_of(e.pose.mean), translation_covariance(e)});
+    const auto radius = stated_radii_.find(e.object);
+    candidates.push_back({e.object, translation_of(e.pose.mean), translation_covariance(e),
+                          radius == stated_radii_.end() ? 0.0 : radius->second});
     candidate_estimates.push_back(&e);
   }
   const TranslationMoments own = h.filter.translation_moments();

@@ -85,6 +85,8 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     const OccluderCandidate& c = candidates[j];
     if (!c.mean.allFinite() || !c.covariance.allFinite()) continue;
     const Eigen::MatrixXd sigma = p * c.covariance * p.transpose();
+    // It hides the object within its own silhouette where its size is stated.
+    const double reach = c.radius > 0.0 ? c.radius : options.reach;
     if (options.gate) {
       const Eigen::Vector3d offset = c.mean - hidden_mean;
       const double spread =
@@ -92,7 +94,7 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
                                       hidden_sigma + sigma, Eigen::EigenvaluesOnly)
                                       .eigenvalues()
                                       .maxCoeff()));
-      const bool across = (p * offset).norm() <= options.reach + options.gate_sigmas * spread;
+      const bool across = (p * offset).norm() <= reach + options.gate_sigmas * spread;
       const bool in_front = !ray || offset.dot(*ray) <= options.reach;
       if (!across || !in_front) {
         ++choice.implausible;
@@ -108,9 +110,8 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     if (!std::isfinite(d)) continue;
     ++plausible;
     if (options.gate)
-      weighted.push_back({d,
-                          {j, covering_probability(p * (c.mean - hidden_mean), hidden_sigma + sigma,
-                                                   options.reach)}});
+      weighted.push_back(
+          {d, {j, covering_probability(p * (c.mean - hidden_mean), hidden_sigma + sigma, reach)}});
     if (d < best_d) {
       runner_up = best;
       runner_up_d = best_d;

@@ -97,11 +97,13 @@ void describe_options(Visitor& v, OccluderOptions& o) {
   // gate_sigmas (a 3-sigma gate) are set in code, not in settings.
 }
 
-/// A candidate occluder: another object's position estimate.
+/// A candidate occluder: another object's position estimate, and its size where stated.
 struct OccluderCandidate {
   std::string object;
   Eigen::Vector3d mean;
   Eigen::Matrix3d covariance;
+  /// m: its silhouette's radius as its detections state it; 0: not stated (`reach` is taken).
+  double radius = 0.0;
 };
 
 /// A plausible occluder as a hypothesis: the candidate and the probability that it is the one

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 
 #include <limits>
@@ -86,6 +87,34 @@ TEST(OccluderSelection, EveryPlausibleCandidateIsWeighedByHowLikelyItHidesTheObj
   OccluderOptions paper;
   paper.gate = false;
   EXPECT_TRUE(choose_occluders({0, 0, 0}, kCloud, candidates, paper).weighted.empty());
+}
+
+// A candidate whose size is stated hides the object within its own silhouette, not within
+// `reach`: a grip of radius 3 cm, 6 cm off across the line of sight, is 2.1 sigma short of
+// covering it (the offset's spread 1.4 cm: Phi(-2.1) = 0.017), a tray of radius 10 cm as far
+// off covers it (Phi(2.8) = 0.998); without sizes both are within 0.15 m and equally likely.
+TEST(OccluderSelection, AStatedSizeIsTheReachOfItsCover) {
+  std::vector<OccluderCandidate> candidates = {at("grip", 0.06, 0.0, 0.2),
+                                               at("tray", -0.06, 0.0, 0.2)};
+  OccluderChoice choice = choose_occluders({0, 0, 0}, kCloud, candidates, {});
+  ASSERT_EQ(choice.weighted.size(), 2u);
+  EXPECT_NEAR(choice.weighted[0].probability, 0.5, 1e-6);
+  candidates[0].radius = 0.03;
+  candidates[1].radius = 0.10;
+  choice = choose_occluders({0, 0, 0}, kCloud, candidates, {});
+  ASSERT_EQ(choice.weighted.size(), 2u);
+  const auto probability_of = [&](const std::string& name) {
+    for (const WeightedOccluder& w : choice.weighted)
+      if (candidates[w.candidate].object == name) return w.probability;
+    return -1.0;
+  };
+  const auto phi = [](double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); };
+  const double spread = std::sqrt(2e-4), grip = phi(-0.03 / spread), tray = phi(0.04 / spread);
+  EXPECT_NEAR(probability_of("grip"), grip / (grip + tray), 1e-9);
+  EXPECT_NEAR(probability_of("tray"), tray / (grip + tray), 1e-9);
+  // Beyond its size and three sigma, the gate turns it away.
+  candidates[0].mean.x() = 0.08;
+  EXPECT_EQ(choose_occluders({0, 0, 0}, kCloud, candidates, {}).weighted.size(), 1u);
 }
 
 TEST(OccluderSelection, LineOfSightNeedsTheCamera) {
