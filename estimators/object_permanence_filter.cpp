@@ -183,7 +183,6 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
   }
   const double last_seen = t_;
   t_ = t;
-  remember_radii(ensemble.frame);
 
   if (measurement) {
     return update(t, dt, *measurement,
@@ -333,9 +332,8 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
   std::vector<const Estimate*> candidate_estimates;
   for (const Estimate& e : ensemble.previous_estimates) {
     if (e.object == object_) continue;
-    const auto radius = stated_radii_.find(e.object);
     candidates.push_back({e.object, translation_of(e.pose.mean), translation_covariance(e),
-                          radius == stated_radii_.end() ? 0.0 : radius->second});
+                          stated_radius(ensemble, e.object)});
     candidate_estimates.push_back(&e);
   }
   const TranslationMoments own = h.filter.translation_moments();
@@ -412,9 +410,8 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
   std::vector<ViewBlocker> blockers;
   for (const Estimate& e : ensemble.previous_estimates) {
     if (e.object == object_) continue;
-    const auto radius = stated_radii_.find(e.object);
     blockers.push_back({translation_of(e.pose.mean), translation_covariance(e),
-                        radius == stated_radii_.end() ? 0.0 : radius->second});
+                        stated_radius(ensemble, e.object)});
   }
   // p(no detection | the object at the place) = 1 - P(seen) (1 - P_miss).
   for (Hypothesis& h : hypotheses_) {
@@ -425,11 +422,6 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
   }
   normalise_probabilities();
   most_probable_first();
-}
-
-void ObjectPermanenceFilter::remember_radii(const Frame& frame) {
-  for (const Detection& d : frame.detections)
-    if (d.object != object_ && d.radius > 0.0) stated_radii_[d.object] = d.radius;
 }
 
 void ObjectPermanenceFilter::normalise_probabilities() {

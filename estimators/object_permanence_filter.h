@@ -18,7 +18,6 @@
 
 #include <cstdint>
 #include <deque>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -84,8 +83,6 @@ class ObjectPermanenceFilter final : public Estimator {
   /// The negative information: each hypothesis whose place the camera would see, while no
   /// detection arrives, loses probability by the detector's miss probability.
   void weigh_by_what_is_not_seen(const EnsembleView& ensemble);
-  /// Keeps the radii the frame's detections state (stated_radii_).
-  void remember_radii(const Frame& frame);
   /// Orders the hypotheses most probable first (stably: ties keep their order; the main one keeps
   /// its place unless another is substantially more probable), drops the negligible ones and
   /// renormalises.
@@ -122,9 +119,6 @@ class ObjectPermanenceFilter final : public Estimator {
   /// m: how near the occluder came to this object when it hid it: the extent of an object whose
   /// detector states none (place_visibility.h).
   double hiding_radius_ = 0.0;
-  /// m: every other object's silhouette radius, as its detections last stated it
-  /// (Detection::radius).
-  std::map<std::string, double, std::less<>> stated_radii_;
   /// The object's position covariance at onset: how well each hypothesis knows its place (the
   /// particles' random walk spreads them to keep them alive, not because the object moves).
   Eigen::Matrix3d place_covariance_ = Eigen::Matrix3d::Zero();

@@ -23,6 +23,12 @@ double stated_extra_noise(const EnsembleView& view, const mrpt::poses::CPose3D* 
   return 0.0;
 }
 
+double stated_radius(const EnsembleView& view, std::string_view object) {
+  for (const StatedRadius& r : view.stated_radii)
+    if (r.object == object) return r.radius;
+  return 0.0;
+}
+
 double observation_sigma(double configured, double extra_noise) {
   return std::hypot(configured, extra_noise);
 }

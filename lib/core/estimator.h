@@ -8,17 +8,27 @@
 #include <mrpt/poses/CPose3D.h>
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace opf {
 
+/// An object's size as its detections last stated it: its silhouette's radius (m,
+/// Detection::radius).
+struct StatedRadius {
+  std::string object;
+  double radius = 0.0;
+};
+
 /// Read-only view of the whole ensemble at the frame being processed: the current detections of
-/// every object and every object's estimate from the previous frame. Estimators that reason about
-/// other objects (the OPF's occluder module) read it; the others ignore it.
+/// every object, every object's estimate from the previous frame, and the sizes the detections
+/// have stated so far (this frame's included; an object hidden now keeps its last). Estimators
+/// that reason about other objects (the OPF's occluder module) read it; the others ignore it.
 struct EnsembleView {
   const Frame& frame;
   std::span<const Estimate> previous_estimates;
+  std::span<const StatedRadius> stated_radii = {};
 };
 
 /// The time step from `previous` to `t` (s); throws std::invalid_argument naming `estimator` when
@@ -29,6 +39,9 @@ double time_step(std::string_view estimator, double previous, double t);
 /// detection whose pose it points at, as the Tracker passes them); 0 for nullptr or a pose from
 /// anywhere else.
 double stated_extra_noise(const EnsembleView& view, const mrpt::poses::CPose3D* measurement);
+
+/// m: the radius `object`'s detections last stated in `view`; 0 if they never stated one.
+double stated_radius(const EnsembleView& view, std::string_view object);
 
 /// The observation noise of one detection (m or rad): the configured sigma and the detection's
 /// stated extra noise, independent errors, added in variance: sqrt(configured^2 + extra^2).

@@ -30,9 +30,10 @@ const std::vector<Estimate>& Tracker::step(const Frame& frame) {
   has_stepped_ = true;
   last_t_ = frame.t;
 
+  remember_radii(frame);
   // Every estimator sees the same, previous-frame picture of the others, whatever the order.
   const std::vector<Estimate> previous = estimates_;
-  const EnsembleView view{frame, previous};
+  const EnsembleView view{frame, previous, stated_radii_};
   pool_->for_each(objects_.size(), [&](std::size_t i) {
     const Detection* detection = frame.find(objects_[i]);
     estimates_[i] = estimators_[i]->step(frame.t, detection ? &detection->pose : nullptr, view);
@@ -55,6 +56,18 @@ const std::vector<Estimate>& Tracker::step(const Frame& frame) {
     }
   }
   return estimates_;
+}
+
+void Tracker::remember_radii(const Frame& frame) {
+  for (const Detection& d : frame.detections) {
+    if (!(d.radius > 0.0)) continue;
+    const auto known = std::find_if(stated_radii_.begin(), stated_radii_.end(),
+                                    [&](const StatedRadius& r) { return r.object == d.object; });
+    if (known != stated_radii_.end())
+      known->radius = d.radius;
+    else
+      stated_radii_.push_back({d.object, d.radius});
+  }
 }
 
 }  // namespace opf

@@ -37,12 +37,16 @@ class Tracker {
   const std::vector<Estimate>& hypotheses() const { return hypotheses_; }
 
  private:
+  /// Keeps the sizes the frame's detections state (stated_radii_).
+  void remember_radii(const Frame& frame);
+
   EstimatorFactory factory_;
   std::uint64_t seed_;
   std::vector<std::string> objects_;
   std::vector<std::unique_ptr<Estimator>> estimators_;
   std::vector<Estimate> estimates_;
   std::vector<Estimate> hypotheses_;
+  std::vector<StatedRadius> stated_radii_;  ///< each object's last stated size
   bool has_stepped_ = false;
   double last_t_ = 0.0;
   std::unique_ptr<WorkerPool> pool_;

@@ -3,14 +3,6 @@
 #include "opf/core/pose_conversion.h"
 
 namespace opf {
-namespace {
-
-double stated_radius(const Frame& frame, std::string_view object) {
-  const Detection* d = frame.find(object);
-  return d ? d->radius : 0.0;
-}
-
-}  // namespace
 
 std::optional<Eigen::Vector3d> away_from_cover(const Eigen::Vector3d& position, double extra_noise,
                                                std::string_view object,
@@ -18,7 +10,7 @@ std::optional<Eigen::Vector3d> away_from_cover(const Eigen::Vector3d& position, 
                                                const OccluderOptions& options) {
   const std::optional<Eigen::Vector3d> ray = line_of_sight(position, options);
   if (!ray || !position.allFinite()) return std::nullopt;
-  const double own_radius = stated_radius(ensemble.frame, object);
+  const double own_radius = stated_radius(ensemble, object);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int covers = 0;
   for (const Estimate& e : ensemble.previous_estimates) {
@@ -27,7 +19,7 @@ std::optional<Eigen::Vector3d> away_from_cover(const Eigen::Vector3d& position, 
     if (!offset.allFinite() || offset.dot(*ray) <= 0.0) continue;  // not nearer the camera
     const Eigen::Vector3d across = offset - *ray * ray->dot(offset);
     const double d = across.norm();
-    const double radius = stated_radius(ensemble.frame, e.object);
+    const double radius = stated_radius(ensemble, e.object);
     const double overlap = radius > 0.0 && own_radius > 0.0 ? radius + own_radius : options.reach;
     if (d >= overlap) continue;
     ++covers;

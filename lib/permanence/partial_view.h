@@ -24,9 +24,10 @@ inline constexpr double kPartialViewCentroidShare = 0.87;
 /// the unit directions away from each tracked object (other than `object`) that covers it, a
 /// vector of length at most 1 (covers on opposite sides cancel). A cover is nearer the camera than
 /// `position` and overlaps it across the line of sight: its centre within the two stated radii
-/// summed (Detection::radius, this frame's detections), or within options.reach where either
-/// states none. A cover whose centre is within `extra_noise` (m) of `position` leaves a ring in
-/// view and counts as no direction. None without a cover, or without a line of sight (plane 3d).
+/// summed (as the detections last stated them: EnsembleView::stated_radii), or within options.reach
+/// where either states none. A cover whose centre is within `extra_noise` (m) of `position` leaves
+/// a ring in view and counts as no direction. None without a cover, or without a line of sight
+/// (plane 3d).
 std::optional<Eigen::Vector3d> away_from_cover(const Eigen::Vector3d& position, double extra_noise,
                                                std::string_view object,
                                                const EnsembleView& ensemble,

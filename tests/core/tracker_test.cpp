@@ -13,6 +13,7 @@ class RecordingEstimator final : public Estimator {
  public:
   struct Log {
     std::vector<std::size_t> ensemble_sizes;
+    std::vector<double> hand_radii;  ///< the hand's size as the view stated it, each step
     std::uint64_t seed = 0;
   };
   RecordingEstimator(std::uint64_t seed, Log& log) : log_(log) { log_.seed = seed; }
@@ -23,6 +24,7 @@ class RecordingEstimator final : public Estimator {
   }
   Estimate step(double t, const mrpt::poses::CPose3D* z, const EnsembleView& view) override {
     log_.ensemble_sizes.push_back(view.previous_estimates.size());
+    log_.hand_radii.push_back(stated_radius(view, "hand"));
     if (z) last_ = *z;
     return make(t, z ? EstimateMode::kMeasured : EstimateMode::kPredicted);
   }
@@ -70,6 +72,29 @@ TEST(Tracker, CreatesEstimatorsAtFirstDetectionInOrderOfAppearance) {
   EXPECT_EQ(logs["ball"].ensemble_sizes, (std::vector<std::size_t>{2}));
   // Seeds differ per object and are reproducible.
   EXPECT_NE(logs["mug"].seed, logs["ball"].seed);
+}
+
+// The sizes the detections state are remembered for every estimator to read: a hand hidden now
+// keeps the size it last stated, a new statement replaces it, and an object that never stated
+// one has none.
+TEST(Tracker, KeepsEachObjectsLastStatedSize) {
+  std::map<std::string, RecordingEstimator::Log> logs;
+  Tracker tracker(
+      [&](const std::string& object, std::uint64_t seed) {
+        return std::make_unique<RecordingEstimator>(seed, logs[object]);
+      },
+      99);
+  const auto with_hand = [](double t, double radius) {
+    Frame f = frame(t, {{"cube", 0.0}, {"hand", 0.1}});
+    f.detections[1].radius = radius;
+    return f;
+  };
+  tracker.step(frame(0.0, {{"cube", 0.0}}));
+  tracker.step(with_hand(0.1, 0.0));
+  tracker.step(with_hand(0.2, 0.07));
+  tracker.step(frame(0.3, {{"cube", 0.0}}));
+  tracker.step(with_hand(0.4, 0.05));
+  EXPECT_EQ(logs["cube"].hand_radii, (std::vector<double>{0.0, 0.07, 0.07, 0.05}));
 }
 
 TEST(Tracker, RejectsFramesThatDoNotAdvanceInTime) {

@@ -80,7 +80,7 @@ TEST(PartialView, CoversOnSeveralSidesAverageAndOppositeOnesCancel) {
   // Two mugs' rims closing in from either side: the visible part stays centred.
   std::vector<Estimate> estimates = {estimate_at("mug_a", {0.5, 0.05, 0.05}),
                                      estimate_at("mug_b", {0.5, -0.05, 0.05})};
-  Frame frame;
+  const Frame frame;
   const EnsembleView view{frame, estimates};
   EXPECT_FALSE(away_from_cover(ball, 0.01, "ball", view, top_down));
   // At right angles: half of each direction, and a share of 0.87 / sqrt(2) known.
@@ -90,12 +90,12 @@ TEST(PartialView, CoversOnSeveralSidesAverageAndOppositeOnesCancel) {
   EXPECT_NEAR((*away - Eigen::Vector3d(0.5, -0.5, 0)).norm(), 0.0, 1e-12);
   EXPECT_NEAR(partial_view_centre(ball, 0.01, "ball", view, top_down).known_share,
               kPartialViewCentroidShare / std::sqrt(2.0), 1e-12);
-  // With the radii stated, only an object whose silhouette overlaps the ball's covers it: mug A
-  // 5 cm off with 2 cm + 2.5 cm radii does not, mug B (4.5 cm + 2.5 cm) does.
-  frame.detections = {{"ball", mrpt::poses::CPose3D(), 0.01, 0.025},
-                      {"mug_a", mrpt::poses::CPose3D(), 0.0, 0.02},
-                      {"mug_b", mrpt::poses::CPose3D(), 0.0, 0.045}};
-  const auto sized = away_from_cover(ball, 0.01, "ball", view, top_down);
+  // With the radii stated (as the detections last stated them, mug B's while it is itself
+  // hidden), only an object whose silhouette overlaps the ball's covers it: mug A 5 cm off with
+  // 2 cm + 2.5 cm radii does not, mug B (4.5 cm + 2.5 cm) does.
+  const std::vector<StatedRadius> radii = {{"ball", 0.025}, {"mug_a", 0.02}, {"mug_b", 0.045}};
+  const EnsembleView sized_view{frame, estimates, radii};
+  const auto sized = away_from_cover(ball, 0.01, "ball", sized_view, top_down);
   ASSERT_TRUE(sized);
   EXPECT_NEAR((*sized - Eigen::Vector3d(1, 0, 0)).norm(), 0.0, 1e-12);
 }
