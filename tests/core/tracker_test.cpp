@@ -48,13 +48,16 @@ Frame frame(double t, std::vector<std::pair<std::string, double>> detections) {
   return f;
 }
 
+// A factory of recording estimators, each logging into its object's entry of `logs`.
+EstimatorFactory recording_into(std::map<std::string, RecordingEstimator::Log>& logs) {
+  return [&logs](const std::string& object, std::uint64_t seed) {
+    return std::make_unique<RecordingEstimator>(seed, logs[object]);
+  };
+}
+
 TEST(Tracker, CreatesEstimatorsAtFirstDetectionInOrderOfAppearance) {
   std::map<std::string, RecordingEstimator::Log> logs;
-  Tracker tracker(
-      [&](const std::string& object, std::uint64_t seed) {
-        return std::make_unique<RecordingEstimator>(seed, logs[object]);
-      },
-      99);
+  Tracker tracker(recording_into(logs), 99);
   EXPECT_EQ(tracker.step(frame(0.0, {{"mug", 1.0}})).size(), 1u);
   const auto& second = tracker.step(frame(0.1, {{"ball", 2.0}}));
   ASSERT_EQ(second.size(), 2u);
@@ -79,11 +82,7 @@ TEST(Tracker, CreatesEstimatorsAtFirstDetectionInOrderOfAppearance) {
 // one has none.
 TEST(Tracker, KeepsEachObjectsLastStatedSize) {
   std::map<std::string, RecordingEstimator::Log> logs;
-  Tracker tracker(
-      [&](const std::string& object, std::uint64_t seed) {
-        return std::make_unique<RecordingEstimator>(seed, logs[object]);
-      },
-      99);
+  Tracker tracker(recording_into(logs), 99);
   const auto with_hand = [](double t, double radius) {
     Frame f = frame(t, {{"cube", 0.0}, {"hand", 0.1}});
     f.detections[1].radius = radius;
@@ -99,11 +98,7 @@ TEST(Tracker, KeepsEachObjectsLastStatedSize) {
 
 TEST(Tracker, RejectsFramesThatDoNotAdvanceInTime) {
   std::map<std::string, RecordingEstimator::Log> logs;
-  Tracker tracker(
-      [&](const std::string& object, std::uint64_t seed) {
-        return std::make_unique<RecordingEstimator>(seed, logs[object]);
-      },
-      1);
+  Tracker tracker(recording_into(logs), 1);
   tracker.step(frame(1.0, {{"a", 0.0}}));
   EXPECT_THROW(tracker.step(frame(1.0, {{"a", 0.0}})), std::invalid_argument);
   EXPECT_THROW(tracker.step(frame(0.5, {{"a", 0.0}})), std::invalid_argument);
@@ -111,11 +106,7 @@ TEST(Tracker, RejectsFramesThatDoNotAdvanceInTime) {
 
 TEST(Tracker, RefusesANonFiniteTimeAndKeepsGoing) {
   std::map<std::string, RecordingEstimator::Log> logs;
-  Tracker tracker(
-      [&](const std::string& object, std::uint64_t seed) {
-        return std::make_unique<RecordingEstimator>(seed, logs[object]);
-      },
-      1);
+  Tracker tracker(recording_into(logs), 1);
   // Also as the first frame: taken, it would leave no later time accepted.
   EXPECT_THROW(tracker.step(frame(std::nan(""), {{"a", 0.0}})), std::invalid_argument);
   EXPECT_TRUE(tracker.estimates().empty());

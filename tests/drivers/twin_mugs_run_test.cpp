@@ -61,7 +61,7 @@ TEST_F(TwinMugs, OneHypothesisFollowsEachMugAndTheRightOneSurvivesTheReveal) {
   const ExperimentResults r = run(settings());
   const HypothesisStats h = hypothesis_stats(r, "opf");
   ASSERT_GT(h.hidden_frames, 150u);
-  // At onset (the mugs' rims 4.5 cm either side, each on the edge of the other's silhouette):
+  // At onset (the mugs' rims 4.5 cm either side, the ball on the edge of either's silhouette):
   // left where it vanished at 2/3 (the prior odds 2:1), and carried by either mug, the third
   // shared by how likely each hides it.
   std::map<std::size_t, std::map<std::string, double>> onset;  // seed -> hypothesis -> probability
