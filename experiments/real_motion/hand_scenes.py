@@ -54,11 +54,17 @@ ESTIMATORS = "opf,pf,cvkf,imm,oapf"
 # m: the hand's centre this far from the cube's leaves it in view (the plate's half-diagonal 9.9 cm
 # plus the cube's half-width).
 CLEAR = 0.11
+# m: the largest offset of a path from the workspace's centre along either table axis that keeps
+# the plate wholly in the camera's view: at the plate's top (0.66 m below the camera) the 75 degree
+# field spans +-0.506 m along the image's vertical (x), less the plate's half-diagonal 9.9 cm. A
+# window whose path leaves the view would hide the hand itself and say nothing of the hypotheses.
+IN_VIEW = 0.40
 
 
 def windows(read, path):
-    """(t, x, y, yaw) at 30 Hz over the scene for each window of the recording, from 2 s on in
-    steps of 0.5 s: the horizontal path scaled into the workspace, the turn about the vertical."""
+    """(t, x, y, yaw) at 30 Hz over the scene for each window of the recording whose path stays in
+    view (in_view), from 2 s on in steps of 0.5 s: the horizontal path scaled into the workspace,
+    the turn about the vertical."""
     t, p, q = read(os.path.join(HERE, path))
     t = t - t[0]
     # Yaw about the vertical from the quaternion (x, y, z, w), unwrapped.
@@ -71,7 +77,14 @@ def windows(read, path):
         x = WORKSPACE[0] + SCALE * (xs - xs.mean())
         y = WORKSPACE[1] + SCALE * (ys - ys.mean())
         yaw = np.interp(times + start, t, yaw_all)
-        yield times, x, y, yaw - yaw[0]
+        if in_view(x, y):
+            yield times, x, y, yaw - yaw[0]
+
+
+def in_view(x, y):
+    """Whether a path stays within IN_VIEW of the workspace's centre along both table axes."""
+    return bool(np.all(np.abs(np.asarray(x) - WORKSPACE[0]) <= IN_VIEW) and
+                np.all(np.abs(np.asarray(y) - WORKSPACE[1]) <= IN_VIEW))
 
 
 def hand_path(read, path, cube_time, left_at):
@@ -82,7 +95,8 @@ def hand_path(read, path, cube_time, left_at):
         left = (at(times, x, left_at), at(times, y, left_at))
         if clear_at_both_ends(times, x, y, cube, left):
             return times, x, y, yaw
-    raise SystemExit(f"hand_scenes: no window of {path} leaves the cube in view at both ends")
+    raise SystemExit(f"hand_scenes: no window of {path} stays in the camera's view and leaves the "
+                     "cube in view at both ends")
 
 
 def clear_at_both_ends(times, x, y, cube, left):
@@ -104,7 +118,8 @@ def cups_paths(moving_b, moving_a):
     for _, ax, ay, _ in windows(moving_a[1], moving_a[2]):
         if clear_at_both_ends(times, ax, ay, ball, left):
             return times, (bx, by), (ax, ay)
-    raise SystemExit(f"hand_scenes: no window of {moving_a[2]} leaves the ball in view")
+    raise SystemExit(f"hand_scenes: no window of {moving_a[2]} stays in the camera's view and "
+                     "leaves the ball in view")
 
 
 def at(times, values, t):

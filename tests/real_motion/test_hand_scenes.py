@@ -1,10 +1,13 @@
-"""The hand scenes' reveal statistic: were the OPF's main hypothesis and its most probable one the
-right one when the cube was seen again (carried if it moved while hidden, left otherwise)?"""
+"""The hand scenes: which windows of a recording make a scene (the path in the camera's view), and
+the reveal statistic: were the OPF's main hypothesis and its most probable one the right one when
+the cube was seen again (carried if it moved while hidden, left otherwise)?"""
 
 import csv
 import importlib.util
 import sys
 from pathlib import Path
+
+import numpy as np
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "experiments" / "real_motion"))
@@ -87,3 +90,26 @@ def test_the_most_probable_hypothesis_may_differ_from_the_main_one(tmp_path):
         for r in rows:
             writer.writerow(dict(zip(fields, r)))
     assert hand_scenes.reveals(path) == (2, 1, 2)
+
+
+def test_a_window_whose_path_leaves_the_view_is_refused(tmp_path):
+    # A recording that drifts 1 m/s along x: scaled by 0.25 and centred, a 10 s window spans
+    # +-1.25 m, far past the camera's view; the same recording still gives a window once its
+    # first 20 s stand still.
+    t = np.arange(0.0, 40.0, 0.01)
+    drifting = np.stack([t, np.zeros_like(t), np.zeros_like(t)], axis=1)
+    resting_first = np.where(t[:, None] < 20.0, 0.0, drifting - np.array([20.0, 0.0, 0.0]))
+    identity = np.tile([0.0, 0.0, 0.0, 1.0], (len(t), 1))
+
+    def reader(p):
+        return lambda path: (t, p, identity)
+
+    assert list(hand_scenes.windows(reader(drifting), "drifting")) == []
+    kept = list(hand_scenes.windows(reader(resting_first), "resting"))
+    assert kept
+    for _, x, y, _ in kept:
+        assert hand_scenes.in_view(x, y)
+        assert np.abs(x - hand_scenes.WORKSPACE[0]).max() <= hand_scenes.IN_VIEW
+    assert hand_scenes.in_view([0.55 + 0.39], [0.0])
+    assert not hand_scenes.in_view([0.55 + 0.41], [0.0])
+    assert not hand_scenes.in_view([0.55], [-0.41])
