@@ -41,7 +41,8 @@ import convert  # noqa: E402
 
 RECORDINGS = (("tumvi_room1", convert.read_euroc, "raw/handheld/tumvi_room1.csv"),
               ("tumvi_room2", convert.read_tum, "raw/handheld/tumvi_room2.txt"),
-              ("tumvi_room4", convert.read_euroc, "raw/handheld/tumvi_room4.csv"))
+              ("tumvi_room4", convert.read_euroc, "raw/handheld/tumvi_room4.csv"),
+              ("tumvi_room5", convert.read_tum, "raw/handheld/tumvi_room5.txt"))
 RATE = 30.0
 DURATION = 10.0        # s of each scene
 WINDOW_START = 2.0     # s into the recording

@@ -5,7 +5,7 @@
 # within a fifth of the PF's error, and in the cups game the ball under cup B likewise; in the
 # pass-over it leaves the cube where it was, within 2 mm of the PF's error; and at every reveal
 # its main hypothesis is the right one (carried, by cup B or its hand in the cups game; left), and
-# in the carry and the cups game its most probable one too.
+# its most probable one too.
 # Usage: hand_scenes_subset.sh REPO OPF WORK_DIR
 set -euo pipefail
 repo="$1" opf="$2" work="$3"
@@ -24,10 +24,9 @@ assert error["pass", "opf"] <= error["pass", "pf"] + 0.002, error
 for r in rows:
     if r["estimator"] == "opf":
         assert int(r["reveals"]) > 0 and r["right_at_reveal"] == r["reveals"], r
-        # Carried, the place seen empty makes the carrier the most probable too (passed over,
-        # carried and left stay at about 1/2 until the reveal: docs/occluder.md).
-        if r["scene"] != "pass":
-            assert r["most_probable_right_at_reveal"] == r["reveals"], r
+        # Carried, the place seen empty makes the carrier the most probable; passed over, left
+        # keeps its prior odds of 2:1 until the reveal (docs/occluder.md).
+        assert r["most_probable_right_at_reveal"] == r["reveals"], r
 print("hand scenes subset: " + "; ".join(
     f"{scene} opf {1000 * error[scene, 'opf']:.1f} mm, pf {1000 * error[scene, 'pf']:.1f} mm"
     for scene in ("carry", "pass", "cups")))
