@@ -92,10 +92,10 @@ def test_the_most_probable_hypothesis_may_differ_from_the_main_one(tmp_path):
     assert hand_scenes.reveals(path) == (2, 1, 2)
 
 
-def test_a_window_whose_path_leaves_the_view_is_refused(tmp_path):
-    # A recording that drifts 1 m/s along x: scaled by 0.25 and centred, a 10 s window spans
-    # +-1.25 m, far past the camera's view; the same recording still gives a window once its
-    # first 20 s stand still.
+def test_a_window_whose_path_leaves_the_view_is_refused():
+    # A recording that drifts 1 m/s along x: scaled by 0.25 and centred, every 10 s window spans
+    # +-1.25 m, far past the camera's view. One that stands still for its first 20 s and then
+    # drifts gives windows, each in view.
     t = np.arange(0.0, 40.0, 0.01)
     drifting = np.stack([t, np.zeros_like(t), np.zeros_like(t)], axis=1)
     resting_first = np.where(t[:, None] < 20.0, 0.0, drifting - np.array([20.0, 0.0, 0.0]))
