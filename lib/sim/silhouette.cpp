@@ -97,20 +97,7 @@ double expected_silhouette_area(const Body& body, const BodyPose& pose, const Ca
 
   std::vector<cv::Point2f> hull;
   cv::convexHull(projected, hull);
-  const float x0 = -0.5f;
-  const float y0 = -0.5f;
-  const float x1 = static_cast<float>(camera.width) - 0.5f;
-  const float y1 = static_cast<float>(camera.height) - 0.5f;
-  bool inside = true;
-  for (const cv::Point2f& q : hull) {
-    inside = inside && q.x >= x0 && q.x <= x1 && q.y >= y0 && q.y <= y1;
-  }
-  if (inside) return cv::contourArea(hull);
-
-  const std::vector<cv::Point2f> image{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-  std::vector<cv::Point2f> clipped;
-  const float area = cv::intersectConvexConvex(hull, image, clipped, true);
-  return area > 0.0f ? static_cast<double>(area) : 0.0;
+  return cv::contourArea(hull);
 }
 
 }  // namespace opf::sim

@@ -7,15 +7,15 @@
 
 namespace opf::sim {
 
-/// Area in pixels of the convex hull of the body's projected outline, clipped to the image
-/// rectangle [-0.5, width - 0.5] x [-0.5, height - 0.5] (so a body half out of the frame expects
-/// half its area, as the detector can only see that half). Exact up to sampling for the convex
-/// shapes of body.h: a box projects its 8 corners, a cylinder 2 x 256 points on its cap rims, a
-/// sphere 720 points on its contour generator (the circle where the viewing cone touches it),
-/// so the error is below 0.01%. The renderer draws spheres and cylinders as inscribed polyhedra,
-/// slightly smaller (see SceneRendererOptions).
-/// Returns 0 for a body wholly behind the camera, NaN for one that straddles the camera plane
-/// (its projection is unbounded) or contains the camera.
+/// Area in pixels of the convex hull of the body's projected outline, the whole of it, past the
+/// image's edges too: the frame's edge covers a body as another body would (one half out of the
+/// frame is seen in part, visible fraction a half, and states its whole size). Exact up to
+/// sampling for the convex shapes of body.h: a box projects its 8 corners, a cylinder 2 x 256
+/// points on its cap rims, a sphere 720 points on its contour generator (the circle where the
+/// viewing cone touches it), so the error is below 0.01%. The renderer draws spheres and cylinders
+/// as inscribed polyhedra, slightly smaller (see SceneRendererOptions). Returns 0 for a body wholly
+/// behind the camera, NaN for one that straddles the camera plane (its projection is unbounded) or
+/// contains the camera.
 double expected_silhouette_area(const Body& body, const BodyPose& pose, const CameraModel& camera);
 
 }  // namespace opf::sim

@@ -93,6 +93,31 @@ TEST(CameraSensor, AWholeViewStatesNoPartialViewOffset) {
   EXPECT_NEAR(ball.radius, 0.025, 5e-4);
 }
 
+TEST(CameraSensor, ABallHalfOutOfTheFrameIsSeenInPartWithItsWholeSize) {
+  CameraSensor sensor(kCamera);
+  // The ball's centre on the image's right edge (column width - 0.5): the frame's edge covers
+  // half of it as a cover's would, and the detector knows its blob ends at the edge.
+  const double edge_y =
+      kCamera.back_project(Eigen::Vector2d(kCamera.width - 0.5, kCamera.cy), 0.49).y();
+  SceneSnapshot s = ball_and_box({0.45, -0.2, 0.05}, 0.01);
+  s.poses[1].position = {0.55, edge_y, 0.0};
+  const Sighting ball = sensor.observe(s).sightings[0];
+  ASSERT_TRUE(ball.detected);
+  EXPECT_GT(ball.visible_fraction, 0.35);
+  EXPECT_LT(ball.visible_fraction, 0.65);
+  // The centroid lies inside the frame (nearer its centre line y = 0), and the stated
+  // partial-view offset bounds the bias.
+  const double bias = (ball.position - s.poses[1].position).head<2>().norm();
+  EXPECT_LT(std::abs(ball.position.y()), std::abs(edge_y) - 0.005);
+  EXPECT_GT(ball.partial_view_offset, bias);
+  EXPECT_LT(ball.partial_view_offset, ball.radius);
+  // The size stated is the whole silhouette's: this far off the axis the sphere's is an ellipse
+  // stretched outwards, of the area of a 3.0 cm disc; the half in the frame alone would state
+  // 3.0 / sqrt(2) = 2.1 cm, less than the ball's 2.5 cm.
+  EXPECT_GT(ball.radius, 0.025);
+  EXPECT_LT(ball.radius, 0.032);
+}
+
 TEST(PartialViewOffset, IsTheCoveredShareOfTheEquivalentDiscsRadius) {
   // A silhouette of pi 50^2 pixels at 0.5 m has rho = 50 px = 50 * 0.5 / f metres.
   const double area = M_PI * 50.0 * 50.0;

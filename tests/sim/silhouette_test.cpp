@@ -84,9 +84,10 @@ TEST(ExpectedSilhouetteArea, UprightCylinderUnderTheLensIsItsTopDisc) {
             1.1 * disc);
 }
 
-TEST(ExpectedSilhouetteArea, IsClippedToTheImage) {
+TEST(ExpectedSilhouetteArea, IsTheWholeBodysPastTheImageEdgeToo) {
   const CameraModel camera = CameraModel::top_down(kEye);
-  // A paper-thin plate (1 um), whose side adds nothing even far off the axis.
+  // A paper-thin plate (1 um), whose side adds nothing even far off the axis: parallel to the
+  // image plane, its projection has the same area wherever it lies at one depth.
   const Body plate = make_body(Shape::kBox, Eigen::Vector3d(0.1, 0.1, 1e-6));
   const double z = 0.0;
   // Centred on the image's right edge (u = width - 0.5): where that column meets the top face.
@@ -96,8 +97,10 @@ TEST(ExpectedSilhouetteArea, IsClippedToTheImage) {
       expected_silhouette_area(plate, pose_at(Eigen::Vector3d(0.55, edge_y, z)), camera);
   const double inside =
       expected_silhouette_area(plate, pose_at(Eigen::Vector3d(0.55, 0.0, z)), camera);
-  EXPECT_NEAR(straddling / inside, 0.5, 1e-3);
-  EXPECT_EQ(expected_silhouette_area(plate, pose_at(Eigen::Vector3d(0.55, 3.0, z)), camera), 0.0);
+  const double outside =
+      expected_silhouette_area(plate, pose_at(Eigen::Vector3d(0.55, 3.0, z)), camera);
+  EXPECT_NEAR(straddling / inside, 1.0, 1e-3);
+  EXPECT_NEAR(outside / inside, 1.0, 1e-3);
 }
 
 TEST(ExpectedSilhouetteArea, BehindTheCameraIsZeroAndAcrossItIsNaN) {
