@@ -48,6 +48,9 @@ DURATION = 10.0        # s of each scene
 WINDOW_START = 2.0     # s into the recording
 SCALE = 0.25           # the recording's horizontal motion into the workspace
 HOVER = 0.12           # m above the table, the hand's centre
+PLATE = (0.14, 0.14, 0.04)  # m, the hand's size
+CAMERA_HEIGHT = 0.8    # m above the table, looking straight down at the workspace's centre
+FIELD_OF_VIEW = 75     # degrees, vertical (along the table's x)
 WORKSPACE = (0.55, 0.0)  # m, the table's centre under the camera
 PICK, PLACE, PASS = 2.5, 6.5, 4.0  # s
 COVER, LIFT = 2.5, 6.5  # s: in the cups game, cup B over the ball, and lifted off it
@@ -56,10 +59,11 @@ ESTIMATORS = "opf,pf,cvkf,imm,oapf"
 # plus the cube's half-width).
 CLEAR = 0.11
 # m: the largest offset of a path from the workspace's centre along either table axis that keeps
-# the plate wholly in the camera's view: at the plate's top (0.66 m below the camera) the 75 degree
-# field spans +-0.506 m along the image's vertical (x), less the plate's half-diagonal 9.9 cm. A
+# the plate wholly in the camera's view: at the plate's top (0.66 m below the camera) the field
+# spans +-0.506 m along the image's vertical (x), less the plate's half-diagonal 9.9 cm: 0.41 m. A
 # window whose path leaves the view would hide the hand itself and say nothing of the hypotheses.
-IN_VIEW = 0.40
+IN_VIEW = ((CAMERA_HEIGHT - HOVER - PLATE[2] / 2) * np.tan(np.radians(FIELD_OF_VIEW / 2)) -
+           np.hypot(PLATE[0], PLATE[1]) / 2)
 
 
 def windows(read, path):
@@ -132,8 +136,8 @@ def scene_header(comment, experiment, frames, target, table_z):
     noise and threshold, the object of interest and the table (its centre at table_z)."""
     return [f"# {comment}; hand_scenes.py",
             f"name: {experiment}", f"rate: {int(RATE)}", f"frames: {frames}",
-            "camera:", "  position: [0.55, 0.0, 0.8]", "  look_at: [0.55, 0.0, 0.0]",
-            "  up: [1, 0, 0]", "  vertical_fov_deg: 75",
+            "camera:", f"  position: [0.55, 0.0, {CAMERA_HEIGHT}]", "  look_at: [0.55, 0.0, 0.0]",
+            "  up: [1, 0, 0]", f"  vertical_fov_deg: {FIELD_OF_VIEW}",
             "measurement:", "  position_noise: 0.002", "  orientation_noise: 0.01",
             "  min_visible_fraction: 0.3", "  min_area_pixels: 30",
             f"objects_of_interest: {target}", "bodies:",
@@ -148,7 +152,7 @@ def scene_yaml(name, kind, times, x, y, yaw):
     cube = (at(times, x, resting_t), at(times, y, resting_t))
     lines = scene_header(f"{kind} of a 2 cm cube by a hand on a recorded path ({name})",
                          f"{name}_{kind}", len(times), "cube", -0.01)
-    lines += ["  - name: hand", "    shape: box", "    size: [0.14, 0.14, 0.04]",
+    lines += ["  - name: hand", "    shape: box", f"    size: [{PLATE[0]}, {PLATE[1]}, {PLATE[2]}]",
              "    colour: [0, 255, 255]", "    waypoints:"]
     for t, xi, yi, a in zip(times, x, y, yaw):
         lines.append(f"      - {{t: {t:.6f}, position: [{xi:.6f}, {yi:.6f}, {HOVER}], "
