@@ -271,14 +271,20 @@ void ObjectPermanenceFilter::start_occlusion(double last_seen, const EnsembleVie
   const bool bank = options_.dynamics.predictor == DynamicsPredictor::kBank;
   // A moving object goes to the dynamics module, a static one to the occluder module (paper
   // Sec. III-B); with the bank, a static object no occluder hides is predicted by the bank too
-  // (whose constant-position members then carry the weight).
+  // (whose constant-position members then carry the weight). With the gate, a moving object may
+  // also be carried by what hides it (a cup under the hand that moves it): its own motion and
+  // each plausible carrier are hypotheses, weighed by what the camera does not see.
   if (options_.modules.dynamics && history_moves()) {
     Hypothesis& h = hypotheses_[0];
     h.motion = bank ? bank_mixture(h.filter) : fitted_trajectory(last_seen);
-    if (h.motion) return;
+    if (h.motion) {
+      if (options_.modules.occluder && options_.occluder.gate)
+        start_occluders(ensemble, /*beside_own_motion=*/true);
+      return;
+    }
   }
   // The occluder module may add a hypothesis: hypotheses_ is not referenced across the call.
-  if (options_.modules.occluder && start_occluders(ensemble)) return;
+  if (options_.modules.occluder && start_occluders(ensemble, /*beside_own_motion=*/false)) return;
   Hypothesis& h = hypotheses_[0];
   if (options_.modules.dynamics && bank)
     h.motion = bank_mixture(h.filter);
@@ -326,7 +332,7 @@ VirtualMeasurementMotion::Settings ObjectPermanenceFilter::virtual_measurement_s
           options_.stated_noise};
 }
 
-bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
+bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool beside_own_motion) {
   Hypothesis& h = hypotheses_[0];
   std::vector<OccluderCandidate> candidates;
   std::vector<const Estimate*> candidate_estimates;
@@ -365,14 +371,22 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble) {
   const double carried_share = with_left ? 1.0 - kLeftPrior : 1.0;
   // The others copy the filter as it is at onset, before hypothesis 0 moves.
   const std::optional<PoseParticleFilter> at_onset =
-      occluders.size() > 1 || with_left ? std::optional(h.filter) : std::nullopt;
+      occluders.size() > 1 || with_left || beside_own_motion ? std::optional(h.filter)
+                                                             : std::nullopt;
   const auto spawn = [&](std::unique_ptr<HiddenMotion> motion, double probability) {
-    Hypothesis twin(*at_onset);  // O_i' (another occluder), or the object left in place
+    Hypothesis twin(*at_onset);  // O_i' (another occluder), the object left, or its carrier
     twin.filter.reseed(derive_seed(seed_, ++spawned_));
     twin.motion = std::move(motion);
     twin.probability = probability;
     hypotheses_.push_back(std::move(twin));
   };
+  if (beside_own_motion) {  // its own motion takes the place of `left`, at the same odds
+    for (const WeightedOccluder& o : occluders)
+      spawn(carry(o.candidate), carried_share * o.probability);
+    hypotheses_[0].probability = kLeftPrior;
+    most_probable_first();
+    return true;
+  }
   for (std::size_t k = 1; k < occluders.size(); ++k)
     spawn(carry(occluders[k].candidate), carried_share * occluders[k].probability);
   hypotheses_[0].motion = carry(k0);

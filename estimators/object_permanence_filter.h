@@ -69,8 +69,10 @@ class ObjectPermanenceFilter final : public Estimator {
   /// The paper predictor's source: the Ceres fit of the history, if it can be fitted.
   std::unique_ptr<HiddenMotion> fitted_trajectory(double last_seen) const;
   std::unique_ptr<HiddenMotion> bank_mixture(PoseParticleFilter& filter);
-  /// The occluder module: false when no object can hide this one.
-  bool start_occluders(const EnsembleView& ensemble);
+  /// The occluder module: false when no object can hide this one. `beside_own_motion`: the main
+  /// hypothesis keeps the motion it has (a moving object's) in place of `left`, and every
+  /// plausible occluder carries a further one.
+  bool start_occluders(const EnsembleView& ensemble, bool beside_own_motion);
   VirtualMeasurementMotion::Settings virtual_measurement_settings() const;
   /// The random walk, after a drift by the banks' velocity (one pass).
   void predict_with_bank_velocity(Hypothesis& hypothesis, double dt);
