@@ -23,6 +23,7 @@ one, was the right one when it was seen again.
 Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and hand_scenes.md.
 
 Usage: hand_scenes.py OUT_DIR [--opf build/bin/opf] [--seeds 5] [--recordings N]
+                       [--window-start S]
 """
 
 import argparse
@@ -45,7 +46,7 @@ RECORDINGS = (("tumvi_room1", convert.read_euroc, "raw/handheld/tumvi_room1.csv"
               ("tumvi_room5", convert.read_tum, "raw/handheld/tumvi_room5.txt"))
 RATE = 30.0
 DURATION = 10.0        # s of each scene
-WINDOW_START = 2.0     # s into the recording
+WINDOW_START = 2.0     # s into the recording: the earliest window's start (--window-start)
 SCALE = 0.25           # the recording's horizontal motion into the workspace
 HOVER = 0.12           # m above the table, the hand's centre
 PLATE = (0.14, 0.14, 0.04)  # m, the hand's size
@@ -66,22 +67,22 @@ IN_VIEW = ((CAMERA_HEIGHT - HOVER - PLATE[2] / 2) * np.tan(np.radians(FIELD_OF_V
            np.hypot(PLATE[0], PLATE[1]) / 2)
 
 
-def windows(read, path):
+def windows(read, path, start=WINDOW_START):
     """(t, x, y, yaw) at 30 Hz over the scene for each window of the recording whose path stays in
-    view (in_view), from 2 s on in steps of 0.5 s: the horizontal path scaled into the workspace,
-    the turn about the vertical."""
+    view (in_view), from `start` s on in steps of 0.5 s: the horizontal path scaled into the
+    workspace, the turn about the vertical."""
     t, p, q = read(os.path.join(HERE, path))
     t = t - t[0]
     # Yaw about the vertical from the quaternion (x, y, z, w), unwrapped.
     yaw_all = np.unwrap(np.arctan2(2 * (q[:, 3] * q[:, 2] + q[:, 0] * q[:, 1]),
                                    1 - 2 * (q[:, 1] ** 2 + q[:, 2] ** 2)))
     times = np.arange(0.0, DURATION + 1e-9, 1.0 / RATE)
-    for start in np.arange(WINDOW_START, t[-1] - DURATION, 0.5):
-        xs = np.interp(times + start, t, p[:, 0])
-        ys = np.interp(times + start, t, p[:, 1])
+    for first in np.arange(start, t[-1] - DURATION, 0.5):
+        xs = np.interp(times + first, t, p[:, 0])
+        ys = np.interp(times + first, t, p[:, 1])
         x = WORKSPACE[0] + SCALE * (xs - xs.mean())
         y = WORKSPACE[1] + SCALE * (ys - ys.mean())
-        yaw = np.interp(times + start, t, yaw_all)
+        yaw = np.interp(times + first, t, yaw_all)
         if in_view(x, y):
             yield times, x, y, yaw - yaw[0]
 
@@ -92,10 +93,10 @@ def in_view(x, y):
                 np.all(np.abs(np.asarray(y) - WORKSPACE[1]) <= IN_VIEW))
 
 
-def hand_path(read, path, cube_time, left_at):
-    """The first window in which the cube, lying where the hand is at cube_time, is seen before
-    the hand reaches it, and after the hand leaves where it is at left_at."""
-    for times, x, y, yaw in windows(read, path):
+def hand_path(read, path, cube_time, left_at, start=WINDOW_START):
+    """The first window from `start` on in which the cube, lying where the hand is at cube_time,
+    is seen before the hand reaches it, and after the hand leaves where it is at left_at."""
+    for times, x, y, yaw in windows(read, path, start):
         cube = (at(times, x, cube_time), at(times, y, cube_time))
         left = (at(times, x, left_at), at(times, y, left_at))
         if clear_at_both_ends(times, x, y, cube, left):
@@ -113,14 +114,14 @@ def clear_at_both_ends(times, x, y, cube, left):
     return distance(0.0, 1.0, cube) >= CLEAR and distance(DURATION - 1.0, DURATION, left) >= CLEAR
 
 
-def cups_paths(moving_b, moving_a):
+def cups_paths(moving_b, moving_a, start=WINDOW_START):
     """Cup B's path (the first window of its recording that leaves the ball in view before B
     covers it and after B is lifted off it) and cup A's (the first window of the other recording
     that leaves it in view then too)."""
-    times, bx, by, _ = hand_path(moving_b[1], moving_b[2], COVER, LIFT)
+    times, bx, by, _ = hand_path(moving_b[1], moving_b[2], COVER, LIFT, start)
     ball = (at(times, bx, COVER), at(times, by, COVER))
     left = (at(times, bx, LIFT), at(times, by, LIFT))
-    for _, ax, ay, _ in windows(moving_a[1], moving_a[2]):
+    for _, ax, ay, _ in windows(moving_a[1], moving_a[2], start):
         if clear_at_both_ends(times, ax, ay, ball, left):
             return times, (bx, by), (ax, ay)
     raise SystemExit(f"hand_scenes: no window of {moving_a[2]} stays in the camera's view and "
@@ -255,17 +256,23 @@ def main():
     parser.add_argument("--opf", default=os.path.join(REPO, "build", "bin", "opf"))
     parser.add_argument("--seeds", type=int, default=5)
     parser.add_argument("--recordings", type=int, default=len(RECORDINGS))
+    parser.add_argument("--window-start", type=float, default=WINDOW_START,
+                        help="s into each recording where the windows begin (default 2): other "
+                        "stretches of the same recordings, motion the scenes were not built on")
     args = parser.parse_args()
+    if not args.window_start >= 0.0:
+        parser.error(f"--window-start: {args.window_start} is not a time >= 0 s")
     os.makedirs(args.out, exist_ok=True)
     table = []
     for i, (name, read, path) in enumerate(RECORDINGS[:args.recordings]):
         for kind, cube_time, left_at in (("carry", PICK, PLACE), ("pass", PASS, PASS)):
-            times, x, y, yaw = hand_path(read, path, cube_time, left_at)
+            times, x, y, yaw = hand_path(read, path, cube_time, left_at, args.window_start)
             table.append((name, kind, *run_scene(args, f"{name}_{kind}",
                                                  scene_yaml(name, kind, times, x, y, yaw),
                                                  "cube")))
         # The cups game: cup B on this recording, cup A on the next.
-        times, b, a = cups_paths(RECORDINGS[i], RECORDINGS[(i + 1) % len(RECORDINGS)])
+        times, b, a = cups_paths(RECORDINGS[i], RECORDINGS[(i + 1) % len(RECORDINGS)],
+                                 args.window_start)
         table.append((name, "cups", *run_scene(args, f"{name}_cups", cups_yaml(name, times, b, a),
                                                "ball", {"cup_b", "hand_b"})))
     write_results(args.out, table)

@@ -4,6 +4,7 @@ the cube was seen again (carried if it moved while hidden, left otherwise)?"""
 
 import csv
 import importlib.util
+import subprocess
 import sys
 from pathlib import Path
 
@@ -113,3 +114,29 @@ def test_a_window_whose_path_leaves_the_view_is_refused():
     assert hand_scenes.in_view([0.55 + 0.39], [0.0])
     assert not hand_scenes.in_view([0.55 + 0.41], [0.0])
     assert not hand_scenes.in_view([0.55], [-0.41])
+
+
+def test_the_windows_begin_where_asked(tmp_path):
+    # A slow loop (in view everywhere): the first window from 6 s is the recording from 6 s on,
+    # scaled into the workspace; from the default 2 s it is another stretch of motion.
+    t = np.arange(0.0, 30.0, 0.01)
+    loop = np.stack([0.3 * np.sin(2 * np.pi * t / 20), 0.2 * np.cos(2 * np.pi * t / 15),
+                     np.zeros_like(t)], axis=1)
+    identity = np.tile([0.0, 0.0, 0.0, 1.0], (len(t), 1))
+
+    def reader(path):
+        return t, loop, identity
+
+    times, x, y, _ = next(hand_scenes.windows(reader, "loop", 6.0))
+    xs = np.interp(times + 6.0, t, loop[:, 0])
+    ys = np.interp(times + 6.0, t, loop[:, 1])
+    assert np.array_equal(x, hand_scenes.WORKSPACE[0] + hand_scenes.SCALE * (xs - xs.mean()))
+    assert np.array_equal(y, hand_scenes.WORKSPACE[1] + hand_scenes.SCALE * (ys - ys.mean()))
+    _, x_default, _, _ = next(hand_scenes.windows(reader, "loop"))
+    assert not np.allclose(x_default, x)
+    # A negative start is refused on the command line, naming the option.
+    run = subprocess.run([sys.executable, str(ROOT / "experiments" / "real_motion" /
+                                              "hand_scenes.py"), str(tmp_path / "out"),
+                          "--window-start", "-1"], capture_output=True, text=True)
+    assert run.returncode == 2
+    assert "--window-start: -1.0 is not a time >= 0 s" in run.stderr
