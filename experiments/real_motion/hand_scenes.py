@@ -20,7 +20,9 @@ estimator, the hidden object's error while hidden (the main estimate's, and for 
 hypothesis nearest the truth), and how often the OPF's main hypothesis, and its most probable
 one, was the right one when it was seen again.
 
-Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and hand_scenes.md.
+Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and hand_scenes.md. A
+scene that no window of its recording fits from --window-start on is not run: it is named, with
+the reason, on stderr and under the table in hand_scenes.md.
 
 Usage: hand_scenes.py OUT_DIR [--opf build/bin/opf] [--seeds 5] [--recordings N]
                        [--window-start S]
@@ -67,6 +69,10 @@ IN_VIEW = ((CAMERA_HEIGHT - HOVER - PLATE[2] / 2) * np.tan(np.radians(FIELD_OF_V
            np.hypot(PLATE[0], PLATE[1]) / 2)
 
 
+class NoWindow(Exception):
+    """No stretch of a recording from the requested start makes the scene (see hand_path)."""
+
+
 def windows(read, path, start=WINDOW_START):
     """(t, x, y, yaw) at 30 Hz over the scene for each window of the recording whose path stays in
     view (in_view), from `start` s on in steps of 0.5 s: the horizontal path scaled into the
@@ -101,8 +107,8 @@ def hand_path(read, path, cube_time, left_at, start=WINDOW_START):
         left = (at(times, x, left_at), at(times, y, left_at))
         if clear_at_both_ends(times, x, y, cube, left):
             return times, x, y, yaw
-    raise SystemExit(f"hand_scenes: no window of {path} stays in the camera's view and leaves the "
-                     "cube in view at both ends")
+    raise NoWindow(f"no window of {path} from {start:g} s stays in the camera's view and leaves "
+                   "the cube in view at both ends")
 
 
 def clear_at_both_ends(times, x, y, cube, left):
@@ -124,8 +130,8 @@ def cups_paths(moving_b, moving_a, start=WINDOW_START):
     for _, ax, ay, _ in windows(moving_a[1], moving_a[2], start):
         if clear_at_both_ends(times, ax, ay, ball, left):
             return times, (bx, by), (ax, ay)
-    raise SystemExit(f"hand_scenes: no window of {moving_a[2]} stays in the camera's view and "
-                     "leaves the ball in view")
+    raise NoWindow(f"no window of {moving_a[2]} from {start:g} s stays in the camera's view and "
+                   "leaves the ball in view")
 
 
 def at(times, values, t):
@@ -263,19 +269,38 @@ def main():
     if not args.window_start >= 0.0:
         parser.error(f"--window-start: {args.window_start} is not a time >= 0 s")
     os.makedirs(args.out, exist_ok=True)
-    table = []
-    for i, (name, read, path) in enumerate(RECORDINGS[:args.recordings]):
+    built, skipped = build_scenes(RECORDINGS, args.window_start, args.recordings)
+    for name, kind, reason in skipped:
+        print(f"hand_scenes: {name} {kind} not run: {reason}", file=sys.stderr)
+    if not built:
+        sys.exit(f"hand_scenes: no scene can be built from {args.window_start:g} s into the "
+                 "recordings")
+    table = [(name, kind, *run_scene(args, f"{name}_{kind}", text, target, carriers))
+             for name, kind, text, target, carriers in built]
+    write_results(args.out, table, skipped)
+
+
+def build_scenes(recordings, start, count=None):
+    """The scenes of each of the first `count` recordings (all by default) from `start` s on, as
+    (recording, scene, experiment file's text, object of interest, its carriers), and those no
+    window fits, as (recording, scene, why); the cups game takes cup B from a recording and cup A
+    from the next in `recordings`."""
+    built, skipped = [], []
+    for i, (name, read, path) in enumerate(recordings[:count]):
         for kind, cube_time, left_at in (("carry", PICK, PLACE), ("pass", PASS, PASS)):
-            times, x, y, yaw = hand_path(read, path, cube_time, left_at, args.window_start)
-            table.append((name, kind, *run_scene(args, f"{name}_{kind}",
-                                                 scene_yaml(name, kind, times, x, y, yaw),
-                                                 "cube")))
-        # The cups game: cup B on this recording, cup A on the next.
-        times, b, a = cups_paths(RECORDINGS[i], RECORDINGS[(i + 1) % len(RECORDINGS)],
-                                 args.window_start)
-        table.append((name, "cups", *run_scene(args, f"{name}_cups", cups_yaml(name, times, b, a),
-                                               "ball", {"cup_b", "hand_b"})))
-    write_results(args.out, table)
+            try:
+                times, x, y, yaw = hand_path(read, path, cube_time, left_at, start)
+            except NoWindow as e:
+                skipped.append((name, kind, str(e)))
+                continue
+            built.append((name, kind, scene_yaml(name, kind, times, x, y, yaw), "cube", None))
+        try:
+            times, b, a = cups_paths(recordings[i], recordings[(i + 1) % len(recordings)], start)
+        except NoWindow as e:
+            skipped.append((name, "cups", str(e)))
+            continue
+        built.append((name, "cups", cups_yaml(name, times, b, a), "ball", {"cup_b", "hand_b"}))
+    return built, skipped
 
 
 def run_scene(args, experiment, text, target, carriers=None):
@@ -292,8 +317,9 @@ def run_scene(args, experiment, text, target, carriers=None):
             reveals(os.path.join(run_dir, f"{experiment}_frames.csv"), target, carriers))
 
 
-def write_results(out, table):
-    """hand_scenes.csv (tidy) and hand_scenes.md (the table), the table also printed."""
+def write_results(out, table, skipped=()):
+    """hand_scenes.csv (tidy) and hand_scenes.md (the table, and the scenes not run), the table
+    also printed."""
     estimators = ESTIMATORS.split(",")
     with open(os.path.join(out, "hand_scenes.csv"), "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
@@ -320,6 +346,9 @@ def write_results(out, table):
             "in the last hidden frame was the right one (carried, in the cups game by cup B or "
             "its hand, if the object moved while hidden; left otherwise).\n\n" +
             "\n".join(lines) + "\n")
+    if skipped:
+        text += ("\nNot run, no window of the recording fits:\n\n" +
+                 "".join(f"- {name} {kind}: {reason}\n" for name, kind, reason in skipped))
     with open(os.path.join(out, "hand_scenes.md"), "w") as f:
         f.write(text)
     print(text, end="")

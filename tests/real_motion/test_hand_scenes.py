@@ -140,3 +140,35 @@ def test_the_windows_begin_where_asked(tmp_path):
                           "--window-start", "-1"], capture_output=True, text=True)
     assert run.returncode == 2
     assert "--window-start: -1.0 is not a time >= 0 s" in run.stderr
+
+
+def test_a_scene_no_window_fits_is_reported_and_the_others_are_built(tmp_path):
+    # One recording circles within the view (radius 0.3 m once scaled, a turn in 8 s); the other
+    # drifts out of it at once. The circling one's carry and pass are built; its cups game, whose
+    # cup A would follow the drifting one, and each of the drifting one's scenes are not, each
+    # named with the reason.
+    t = np.arange(0.0, 30.0, 0.01)
+    circle = np.stack([1.2 * np.cos(2 * np.pi * t / 8), 1.2 * np.sin(2 * np.pi * t / 8),
+                       np.zeros_like(t)], axis=1)
+    drifting = np.stack([t, np.zeros_like(t), np.zeros_like(t)], axis=1)
+    identity = np.tile([0.0, 0.0, 0.0, 1.0], (len(t), 1))
+    recordings = (("circling", lambda path: (t, circle, identity), "circling.csv"),
+                  ("drifting", lambda path: (t, drifting, identity), "drifting.csv"))
+
+    built, skipped = hand_scenes.build_scenes(recordings, 2.0)
+
+    assert [(name, kind) for name, kind, *_ in built] == [("circling", "carry"),
+                                                          ("circling", "pass")]
+    assert all(text.startswith(f"# {kind} ") for _, kind, text, _, _ in built)
+    assert [(name, kind) for name, kind, _ in skipped] == [
+        ("circling", "cups"), ("drifting", "carry"), ("drifting", "pass"), ("drifting", "cups")]
+    assert "no window of drifting.csv from 2 s" in skipped[0][2]
+    assert all("drifting.csv" in reason for _, _, reason in skipped)
+    # The first recording's scenes alone: its cups game still takes cup A from the next.
+    built, skipped = hand_scenes.build_scenes(recordings, 2.0, 1)
+    assert [(name, kind) for name, kind, *_ in built] == [("circling", "carry"),
+                                                          ("circling", "pass")]
+    assert [(name, kind) for name, kind, _ in skipped] == [("circling", "cups")]
+    hand_scenes.write_results(str(tmp_path), [], skipped)
+    written = (tmp_path / "hand_scenes.md").read_text()
+    assert "- circling cups: no window of drifting.csv" in written
