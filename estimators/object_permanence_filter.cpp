@@ -102,7 +102,7 @@ void ObjectPermanenceFilter::remember(double t, const Eigen::Vector3d& position,
                                       const Eigen::Quaterniond& orientation,
                                       const Estimate& estimate, double extra_noise,
                                       const PartialViewBias& stretch_prior) {
-  detector_jitter_.add(t, orientation);
+  detector_jitter_.add(t, position, orientation);
   update_banks(t, position, orientation, extra_noise, stretch_prior);
   history_.push_back({t, translation_of(estimate.pose.mean), orientation_of(estimate.pose.mean)});
   while (history_.size() > options_.history_length) history_.pop_front();
@@ -196,7 +196,7 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
     start_occlusion(last_seen, ensemble);
   }
   for (Hypothesis& h : hypotheses_) h.last = h.motion->step(last_seen, t, ensemble, h.filter);
-  if (options_.occluder.gate) weigh_by_what_is_not_seen(ensemble);
+  if (options_.occluder.gate) weigh_by_what_is_not_seen(ensemble, dt);
   return make_estimate(hypotheses_[0], 0);
 }
 
@@ -419,19 +419,32 @@ void ObjectPermanenceFilter::keep_hypothesis_explaining(const Eigen::Vector3d& p
   hypotheses_[0].probability = 1.0;
 }
 
-void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensemble) {
+void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensemble, double dt) {
   if (hypotheses_.size() < 2) return;
+  // Where the objects are, as well as the detector tells: each covariance at the detector's own
+  // noise, read from this object's detections (place_visibility.h, at_detector_noise), never
+  // below a tenth of the configured noise, as for the rotation likelihood.
+  const double configured = options_.particles.observation_noise_translation;
+  const std::optional<double> read = detector_jitter_.translation_sigma();
+  const auto known = [&](const Eigen::Matrix3d& covariance) {
+    if (!read) return covariance;
+    return at_detector_noise(covariance, configured,
+                             std::max(*read, kJitterFloorShare * configured),
+                             options_.particles.process_noise_translation, dt);
+  };
   std::vector<ViewBlocker> blockers;
   for (const Estimate& e : ensemble.previous_estimates) {
     if (e.object == object_) continue;
-    blockers.push_back({translation_of(e.pose.mean), translation_covariance(e),
-                        stated_radius(ensemble, e.object)});
+    blockers.push_back({translation_of(e.pose.mean), known(translation_covariance(e)),
+                        stated_radius(ensemble, e.object), stated_box(ensemble, e.object),
+                        orientation_of(e.pose.mean)});
   }
+  const Eigen::Matrix3d place_covariance = known(place_covariance_);
   // p(no detection | the object at the place) = 1 - P(seen) (1 - P_miss).
   for (Hypothesis& h : hypotheses_) {
     const Eigen::Vector3d place = h.filter.translation_moments().mean;
     const double seen =
-        seen_probability(place, place_covariance_, blockers, hiding_radius_, options_.occluder);
+        seen_probability(place, place_covariance, blockers, hiding_radius_, options_.occluder);
     if (std::isfinite(seen)) h.probability *= 1.0 - seen * (1.0 - kDetectorMissProbability);
   }
   normalise_probabilities();

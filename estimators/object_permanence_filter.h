@@ -84,7 +84,7 @@ class ObjectPermanenceFilter final : public Estimator {
   void keep_hypothesis_explaining(const Eigen::Vector3d& position);
   /// The negative information: each hypothesis whose place the camera would see, while no
   /// detection arrives, loses probability by the detector's miss probability.
-  void weigh_by_what_is_not_seen(const EnsembleView& ensemble);
+  void weigh_by_what_is_not_seen(const EnsembleView& ensemble, double dt);
   /// Orders the hypotheses most probable first (stably: ties keep their order; the main one keeps
   /// its place unless another is substantially more probable), drops the negligible ones and
   /// renormalises.

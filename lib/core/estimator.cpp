@@ -29,6 +29,12 @@ double stated_radius(const EnsembleView& view, std::string_view object) {
   return 0.0;
 }
 
+Eigen::Vector3d stated_box(const EnsembleView& view, std::string_view object) {
+  for (const StatedRadius& r : view.stated_radii)
+    if (r.object == object) return r.box;
+  return Eigen::Vector3d::Zero();
+}
+
 double observation_sigma(double configured, double extra_noise) {
   return std::hypot(configured, extra_noise);
 }

@@ -15,10 +15,11 @@
 namespace opf {
 
 /// An object's size as its detections last stated it: its silhouette's radius (m,
-/// Detection::radius).
+/// Detection::radius) and its bounding box (m, Detection::box), each zero where never stated.
 struct StatedRadius {
   std::string object;
   double radius = 0.0;
+  Eigen::Vector3d box = Eigen::Vector3d::Zero();
 };
 
 /// Read-only view of the whole ensemble at the frame being processed: the current detections of
@@ -42,6 +43,9 @@ double stated_extra_noise(const EnsembleView& view, const mrpt::poses::CPose3D* 
 
 /// m: the radius `object`'s detections last stated in `view`; 0 if they never stated one.
 double stated_radius(const EnsembleView& view, std::string_view object);
+
+/// m: the bounding box `object`'s detections last stated in `view`; zero if they never stated one.
+Eigen::Vector3d stated_box(const EnsembleView& view, std::string_view object);
 
 /// The observation noise of one detection (m or rad): the configured sigma and the detection's
 /// stated extra noise, independent errors, added in variance: sqrt(configured^2 + extra^2).

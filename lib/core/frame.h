@@ -2,6 +2,7 @@
 // A Frame: the pose detections of one time instant. Objects absent from it are unobserved.
 
 #include <mrpt/poses/CPose3D.h>
+#include <Eigen/Core>
 
 #include <string>
 #include <string_view>
@@ -21,6 +22,10 @@ struct Detection {
   /// disc of its whole silhouette's area at its depth; 0: not stated. The occluder module takes it
   /// as how much of the view the object covers (place_visibility.h).
   double radius = 0.0;
+  /// m: the full extents of the object's bounding box in its own frame, as a detector that knows
+  /// the object's model states them; zero: not stated. The occluder module takes the box, turned
+  /// by the object's estimated orientation, as its silhouette (place_visibility.h).
+  Eigen::Vector3d box = Eigen::Vector3d::Zero();
 };
 
 /// The detections that share one timestamp (seconds). An object with no detection is unobserved.

@@ -60,13 +60,13 @@ const std::vector<Estimate>& Tracker::step(const Frame& frame) {
 
 void Tracker::remember_radii(const Frame& frame) {
   for (const Detection& d : frame.detections) {
-    if (!(d.radius > 0.0)) continue;
-    const auto known = std::find_if(stated_radii_.begin(), stated_radii_.end(),
-                                    [&](const StatedRadius& r) { return r.object == d.object; });
-    if (known != stated_radii_.end())
-      known->radius = d.radius;
-    else
-      stated_radii_.push_back({d.object, d.radius});
+    const bool radius = d.radius > 0.0, box = (d.box.array() > 0.0).all();
+    if (!radius && !box) continue;
+    auto known = std::find_if(stated_radii_.begin(), stated_radii_.end(),
+                              [&](const StatedRadius& r) { return r.object == d.object; });
+    if (known == stated_radii_.end()) known = stated_radii_.insert(known, {d.object});
+    if (radius) known->radius = d.radius;
+    if (box) known->box = d.box;
   }
 }
 

@@ -193,7 +193,8 @@ void FrameAssembler::add(LogRow row) {
   members_[row.object] = {row.t, row.line};
   offset_sum_ += row.t - start_;  // offsets, so that equal times give exactly that time
   if (row.pose)
-    frame_.detections.push_back({std::move(row.object), *row.pose, row.extra_noise, row.radius});
+    frame_.detections.push_back(
+        {std::move(row.object), *row.pose, row.extra_noise, row.radius, row.box});
 }
 
 double FrameAssembler::gap_period() const {

@@ -21,6 +21,9 @@ inline constexpr std::string_view kExtraNoiseColumn = "extra_noise";
 /// A CSV log's optional column: the object's extent across the line of sight as the detector
 /// states it (m, a radius >= 0; empty: not stated), Detection::radius.
 inline constexpr std::string_view kRadiusColumn = "radius";
+/// A CSV log's optional columns: the full extents of the object's bounding box in its own frame
+/// as the detector states them (m, each > 0; all three empty: not stated), Detection::box.
+inline constexpr std::array<std::string_view, 3> kBoxColumns = {"box_x", "box_y", "box_z"};
 
 /// kCsv: the toolkit's CSV (a header naming kLogColumns). kTum: the TUM RGB-D trajectory format
 /// (evo, most SLAM systems): "timestamp tx ty tz qx qy qz qw" per line, separated by spaces or

@@ -83,6 +83,36 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
   };
   extra_noise_column_ = optional_column(kExtraNoiseColumn);
   radius_column_ = optional_column(kRadiusColumn);
+  for (std::size_t i = 0; i < kBoxColumns.size(); ++i)
+    box_columns_[i] = optional_column(kBoxColumns[i]);
+  const auto missing = std::find(box_columns_.begin(), box_columns_.end(), std::nullopt);
+  const bool none = std::all_of(box_columns_.begin(), box_columns_.end(),
+                                [](const auto& column) { return !column; });
+  if (missing != box_columns_.end() && !none)
+    throw InputError(
+        source, reader_.line(),
+        std::string(kBoxColumns[static_cast<std::size_t>(missing - box_columns_.begin())]),
+        "missing: a box is stated by box_x, box_y and box_z together");
+}
+
+Eigen::Vector3d LogRowReader::read_box() const {
+  if (!box_columns_[0]) return Eigen::Vector3d::Zero();
+  std::size_t empty = 0;
+  for (const auto& column : box_columns_) empty += reader_.field(*column).empty() ? 1 : 0;
+  if (empty == 3) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d box;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const std::size_t column = *box_columns_[i];
+    if (reader_.field(column).empty())
+      reader_.fail(column,
+                   "empty while another of box_x, box_y, box_z is set; leave all three "
+                   "empty where the box is not stated");
+    const double value = reader_.number(column);
+    if (!(value > 0.0))
+      reader_.fail(column, "expected a box's extent > 0, got " + reader_.field(column));
+    box(static_cast<Eigen::Index>(i)) = value * metres_per_unit_;
+  }
+  return box;
 }
 
 double LogRowReader::optional_length(const std::optional<std::size_t>& column,
@@ -136,6 +166,7 @@ bool LogRowReader::next(LogRow& row) {
   row.pose.reset();
   row.extra_noise = optional_length(extra_noise_column_, "a standard deviation");
   row.radius = optional_length(radius_column_, "a radius");
+  row.box = read_box();
 
   std::size_t empty_fields = 0;
   for (std::size_t i = 0; i < kPoseFields; ++i)

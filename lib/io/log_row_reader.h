@@ -7,6 +7,7 @@
 #include "opf/io/log_read_options.h"
 
 #include <mrpt/poses/CPose3D.h>
+#include <Eigen/Core>
 
 #include <array>
 #include <cstddef>
@@ -28,6 +29,9 @@ struct LogRow {
   /// m: the object's extent the detector states (column kRadiusColumn, scaled by the length unit;
   /// empty: 0), Detection::radius.
   double radius = 0.0;
+  /// m: the object's bounding box the detector states (columns kBoxColumns, scaled by the length
+  /// unit; all three empty: zero), Detection::box.
+  Eigen::Vector3d box = Eigen::Vector3d::Zero();
   std::size_t line = 0;  ///< 1-based line in the file, for error messages
 };
 
@@ -55,8 +59,10 @@ class LogRowReader {
   std::string object_;             // every row's object when the file has no object column
   double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge file (> 0)
   std::array<std::size_t, 9> column_{};
-  std::optional<std::size_t> extra_noise_column_;  // a CSV log's optional kExtraNoiseColumn
-  std::optional<std::size_t> radius_column_;       // a CSV log's optional kRadiusColumn
+  std::optional<std::size_t> extra_noise_column_;          // a CSV log's optional kExtraNoiseColumn
+  std::optional<std::size_t> radius_column_;               // a CSV log's optional kRadiusColumn
+  std::array<std::optional<std::size_t>, 3> box_columns_;  // a CSV log's optional kBoxColumns
+  Eigen::Vector3d read_box() const;
   double seconds_per_unit_ = 1.0;
   double metres_per_unit_ = 1.0;
 };

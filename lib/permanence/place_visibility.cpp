@@ -1,7 +1,12 @@
 #include "opf/permanence/place_visibility.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 namespace opf {
 
@@ -15,6 +20,83 @@ double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd
   return 0.5 * std::erfc(-(radius - distance) / (sigma * std::sqrt(2.0)));
 }
 
+namespace {
+
+double cross(const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
+}
+
+// The convex hull of the points, counter-clockwise (Andrew's monotone chain).
+std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points) {
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  std::vector<Eigen::Vector2d> hull(2 * points.size());
+  std::size_t k = 0;
+  for (const Eigen::Vector2d& p : points) {  // the lower hull
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p) <= 0.0) --k;
+    hull[k++] = p;
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i > 0; --i) {  // the upper hull
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i - 1]) <= 0.0) --k;
+    hull[k++] = points[i - 1];
+  }
+  hull.resize(k - 1);  // the last point is the first
+  return hull;
+}
+
+double standard_normal_cdf(double x) {
+  return 0.5 * std::erfc(-x / std::sqrt(2.0));
+}
+
+}  // namespace
+
+double box_covering_probability(const Eigen::MatrixXd& projection, const Eigen::Vector3d& offset,
+                                const Eigen::Matrix3d& covariance, const Eigen::Vector3d& box,
+                                const Eigen::Quaterniond& orientation) {
+  const Eigen::Matrix3d turn = orientation.normalized().toRotationMatrix();
+  std::vector<Eigen::Vector2d> corners;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3d sign((i & 1) ? 0.5 : -0.5, (i & 2) ? 0.5 : -0.5, (i & 4) ? 0.5 : -0.5);
+    corners.emplace_back((projection * (turn * sign.cwiseProduct(box))).head<2>());
+  }
+  const std::vector<Eigen::Vector2d> hull = convex_hull(std::move(corners));
+  const Eigen::Vector2d place = (projection * -offset).head<2>();  // from the box's centre
+  if (hull.size() < 3) return 0.0;  // a box with no extent across the line of sight
+  bool inside = true;
+  double nearest = std::numeric_limits<double>::infinity();
+  Eigen::Vector2d across = Eigen::Vector2d::UnitX();  // the nearest edge's normal
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const Eigen::Vector2d& a = hull[i];
+    const Eigen::Vector2d edge = hull[(i + 1) % hull.size()] - a;
+    const double along = std::clamp((place - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
+    const Eigen::Vector2d from_edge = place - (a + along * edge);
+    if (cross(a, a + edge, place) < 0.0) inside = false;
+    if (from_edge.norm() < nearest) {
+      nearest = from_edge.norm();
+      across = nearest > 0.0 ? Eigen::Vector2d(from_edge / nearest)
+                             : Eigen::Vector2d(edge.y(), -edge.x()).normalized();
+    }
+  }
+  const Eigen::Matrix2d spread =
+      (projection * covariance * projection.transpose()).topLeftCorner<2, 2>();
+  const double sigma = std::sqrt(std::max(across.dot(spread * across), 1e-18));
+  return standard_normal_cdf((inside ? nearest : -nearest) / sigma);
+}
+
+Eigen::Matrix3d at_detector_noise(const Eigen::Matrix3d& covariance, double configured, double read,
+                                  double process_density, double dt) {
+  if (!(read < configured) || !(dt > 0.0) || !covariance.allFinite()) return covariance;
+  const double q = process_density * process_density * dt;
+  const auto steady = [q](double noise) {
+    return 0.5 * (-q + std::sqrt(q * q + 4.0 * q * noise * noise));
+  };
+  const double floor = steady(read), excess = steady(configured) - floor;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+  const Eigen::Vector3d variances = (eigen.eigenvalues().array() - excess).max(floor);
+  return eigen.eigenvectors() * variances.asDiagonal() * eigen.eigenvectors().transpose();
+}
+
 double seen_probability(const Eigen::Vector3d& place, const Eigen::Matrix3d& covariance,
                         std::span<const ViewBlocker> blockers, double fallback_radius,
                         const OccluderOptions& options) {
@@ -25,9 +107,12 @@ double seen_probability(const Eigen::Vector3d& place, const Eigen::Matrix3d& cov
     if (!b.mean.allFinite() || !b.covariance.allFinite()) continue;
     const double radius = b.radius > 0.0 ? b.radius : fallback_radius;
     const Eigen::Vector3d offset = b.mean - place;
-    if (ray && offset.dot(*ray) > radius) continue;  // behind the place
-    seen *= 1.0 - covering_probability(p * offset, p * (covariance + b.covariance) * p.transpose(),
-                                       radius);
+    if (ray && offset.dot(*ray) > radius) continue;       // behind the place
+    const bool box = ray && (b.box.array() > 0.0).all();  // a silhouette in the occlusion plane
+    seen *= 1.0 - (box ? box_covering_probability(p, offset, covariance + b.covariance, b.box,
+                                                  b.orientation)
+                       : covering_probability(
+                             p * offset, p * (covariance + b.covariance) * p.transpose(), radius));
   }
   return seen;
 }

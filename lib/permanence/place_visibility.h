@@ -2,12 +2,14 @@
 // Whether the camera would see a hidden object where a hypothesis puts it: the negative
 // information that weighs the occluder module's hypotheses (carried or left). A place is in view
 // when its centre is clear of every other tracked object's silhouette: each covers it with the
-// probability that its centre lies within its radius of the place's line of sight; the objects
-// cover it independently.
+// probability that the place's line of sight passes through it (within its radius of its centre,
+// or through the box its detector states), given where both are; the objects cover it
+// independently.
 
 #include "opf/permanence/occluder_selection.h"
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <span>
 
@@ -19,17 +21,42 @@ namespace opf {
 double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance,
                             double radius);
 
+/// P(the place lies within a box's silhouette) for the box's centre at `offset` from the place
+/// +- `covariance` (their combined spread, m^2): the box (full extents `box`, m, in its own frame,
+/// turned by `orientation`) projected by `projection` onto the occlusion plane, a convex polygon;
+/// to first order, as for the disc, Phi(d / sigma) with d the place's signed distance inside the
+/// polygon's nearest edge and sigma the spread across that edge.
+double box_covering_probability(const Eigen::MatrixXd& projection, const Eigen::Vector3d& offset,
+                                const Eigen::Matrix3d& covariance, const Eigen::Vector3d& box,
+                                const Eigen::Quaterniond& orientation);
+
+/// A position covariance at the detector's own noise. A filter's covariance is computed with its
+/// configured observation noise `configured` (m); the detector's, read from its detections
+/// (DetectorJitter), is `read`. For a measured object the particle filter's covariance is the
+/// steady state of its random walk (density `process_density`, m/sqrt(s)) observed every `dt`
+/// s with noise n, P(n) = (-q + sqrt(q^2 + 4 q n^2)) / 2 per axis with q = process_density^2 dt;
+/// the excess P(configured) - P(read) is taken off each eigenvalue, none below P(read). What a
+/// hidden object's covariance has grown by stays. `read` at or above `configured`: unchanged.
+Eigen::Matrix3d at_detector_noise(const Eigen::Matrix3d& covariance, double configured, double read,
+                                  double process_density, double dt);
+
 /// Another tracked object's position estimate, as something that may stand in the way.
 struct ViewBlocker {
   Eigen::Vector3d mean;
   Eigen::Matrix3d covariance;
   /// m: its silhouette's radius as its detector states it (Detection::radius); 0: not stated.
   double radius = 0.0;
+  /// m: the full extents of its bounding box in its own frame as its detector states them
+  /// (Detection::box); zero: not stated. Where stated, its silhouette is the box's, turned by
+  /// `orientation`, in place of the radius's disc.
+  Eigen::Vector3d box = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
 };
 
 /// The probability that the camera sees a place (a position estimate `place` +- `covariance`):
-/// that no blocker covers it, each covering it when its centre lies within its radius (m;
-/// `fallback_radius` for a blocker whose detector states none) of the place's line of sight
+/// that no blocker covers it, each covering it when the place's line of sight passes through its
+/// stated box, or else when its centre lies within its radius (m; `fallback_radius` for a blocker
+/// whose detector states neither) of the place's line of sight
 /// (options.plane) and no more than that radius behind it along the ray: prod_k (1 - P_k), the
 /// objects covering independently. A blocker whose estimate is not finite is passed over.
 double seen_probability(const Eigen::Vector3d& place, const Eigen::Matrix3d& covariance,

@@ -32,6 +32,7 @@ CameraFrame CameraSensor::observe(const SceneSnapshot& scene) {
       sighting.partial_view_offset =
           partial_view_offset(sighting.visible_fraction, expected, depth, camera_);
       sighting.radius = silhouette_radius(expected, depth, camera_);
+      if (body.shape == Shape::kBox) sighting.box = body.size;
     }
     frame.sightings.push_back(sighting);
   }

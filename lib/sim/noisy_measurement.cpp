@@ -25,7 +25,7 @@ Frame noisy_measurement(const CameraFrame& camera, const SceneSnapshot& truth,
         truth.poses[index].orientation *
         so3::exp(settings.orientation_noise * Eigen::Vector3d(draws[3], draws[4], draws[5]));
     frame.detections.push_back(
-        {s.object, make_pose(position, orientation), s.partial_view_offset, s.radius});
+        {s.object, make_pose(position, orientation), s.partial_view_offset, s.radius, s.box});
   }
   return frame;
 }

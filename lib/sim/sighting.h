@@ -26,6 +26,10 @@ struct Sighting {
   /// m: the radius rho of the disc of the body's whole silhouette's area at its depth, as a
   /// detector that knows the object's model states it; 0 when no blob was found.
   double radius = 0.0;
+  /// m: the body's bounding box (a box body's own size), full extents in its frame, as a
+  /// detector that knows the object's model states it; zero for other shapes and when no blob
+  /// was found.
+  Eigen::Vector3d box = Eigen::Vector3d::Zero();
 };
 
 /// One frame's sightings of every tracked body.

@@ -14,6 +14,7 @@ class RecordingEstimator final : public Estimator {
   struct Log {
     std::vector<std::size_t> ensemble_sizes;
     std::vector<double> hand_radii;  ///< the hand's size as the view stated it, each step
+    std::vector<double> hand_box_x;  ///< the first extent of the hand's stated box, each step
     std::uint64_t seed = 0;
   };
   RecordingEstimator(std::uint64_t seed, Log& log) : log_(log) { log_.seed = seed; }
@@ -25,6 +26,7 @@ class RecordingEstimator final : public Estimator {
   Estimate step(double t, const mrpt::poses::CPose3D* z, const EnsembleView& view) override {
     log_.ensemble_sizes.push_back(view.previous_estimates.size());
     log_.hand_radii.push_back(stated_radius(view, "hand"));
+    log_.hand_box_x.push_back(stated_box(view, "hand").x());
     if (z) last_ = *z;
     return make(t, z ? EstimateMode::kMeasured : EstimateMode::kPredicted);
   }
@@ -83,17 +85,21 @@ TEST(Tracker, CreatesEstimatorsAtFirstDetectionInOrderOfAppearance) {
 TEST(Tracker, KeepsEachObjectsLastStatedSize) {
   std::map<std::string, RecordingEstimator::Log> logs;
   Tracker tracker(recording_into(logs), 99);
-  const auto with_hand = [](double t, double radius) {
+  const auto with_hand = [](double t, double radius, double box = 0.0) {
     Frame f = frame(t, {{"cube", 0.0}, {"hand", 0.1}});
     f.detections[1].radius = radius;
+    f.detections[1].box = Eigen::Vector3d::Constant(box);
     return f;
   };
   tracker.step(frame(0.0, {{"cube", 0.0}}));
   tracker.step(with_hand(0.1, 0.0));
   tracker.step(with_hand(0.2, 0.07));
   tracker.step(frame(0.3, {{"cube", 0.0}}));
-  tracker.step(with_hand(0.4, 0.05));
-  EXPECT_EQ(logs["cube"].hand_radii, (std::vector<double>{0.0, 0.07, 0.07, 0.05}));
+  tracker.step(with_hand(0.4, 0.05, 0.14));
+  tracker.step(with_hand(0.5, 0.0));  // states neither: both kept
+  tracker.step(with_hand(0.6, 0.06));
+  EXPECT_EQ(logs["cube"].hand_radii, (std::vector<double>{0.0, 0.07, 0.07, 0.05, 0.05, 0.06}));
+  EXPECT_EQ(logs["cube"].hand_box_x, (std::vector<double>{0.0, 0.0, 0.0, 0.14, 0.14, 0.14}));
 }
 
 TEST(Tracker, RejectsFramesThatDoNotAdvanceInTime) {

@@ -28,6 +28,7 @@ struct ScriptedObject {
   };
   std::function<bool(int)> visible = [](int) { return true; };
   double radius = 0.0;  // m, the size its detections state (Detection::radius); 0: none
+  Eigen::Vector3d box = Eigen::Vector3d::Zero();  // m, its stated box (Detection::box); 0: none
 };
 
 struct Scene {
@@ -70,7 +71,7 @@ SceneRun run(const Scene& scene, const EstimatorFactory& factory, std::uint64_t 
       if (!o.visible(k)) continue;
       frame.detections.push_back(
           {o.name, make_pose(measured, o.orientation(frame.t) * so3::exp(scene.noise_rotation * m)),
-           0.0, o.radius});
+           0.0, o.radius, o.box});
     }
     std::map<std::string, Estimate> by_object;
     for (const Estimate& e : tracker.step(frame)) by_object[e.object] = e;
@@ -182,12 +183,13 @@ TEST(ObjectPermanenceFilter, HiddenStaticBallIsCarriedWithTheMug) {
   const SceneRun pf = run(scene, pf_factory(options.particles));
 
   // Both hypotheses while hidden: left where it vanished, and carried by the mug. Left is the main
-  // estimate until the mug has moved off the ball's place (in 4-6 frames at 7 mm a frame: the
-  // mug's 5 mm offset when the ball was last seen, blurred by both estimates' spread of ~1 cm),
-  // and the place is seen empty for a frame or two, enough to outweigh it sqrt(10) to one.
+  // estimate until the mug has moved off the ball's place (in 4-8 frames at 7 mm a frame: the
+  // mug's 5 mm offset when the ball was last seen, blurred by both estimates' spread at the
+  // detector's 2 mm), and the place is seen empty for a frame or two, enough to outweigh it
+  // sqrt(10) to one.
   const int carried = carried_from(opf, "ball", 60, 150);
   EXPECT_GE(carried, 61);
-  EXPECT_LE(carried, 68);
+  EXPECT_LE(carried, 70);
   for (int k = 60; k < 150; ++k)
     ASSERT_EQ(pf.estimates[k].at("ball").mode, EstimateMode::kPredicted) << k;
   // The paper takes the occluder's measurement as the ball's: after the mug came to rest the
@@ -897,7 +899,8 @@ TEST(ObjectPermanenceFilter, EveryPlausibleOccluderIsAHypothesisWithItsProbabili
   const SceneRun opf = run(scene, opf_factory(OpfOptions{}));
 
   // At onset: left where it vanished at 2/3 (the prior odds 2:1 before any evidence), and the
-  // carried third shared by the three cups, equally plausible: 1/9 each.
+  // carried third shared by the three cups, equally plausible: 1/9 each (a frame's evidence on the
+  // cups' edges, at the detector's noise, moves each by under 0.4%).
   const Estimate& onset = opf.estimates[41].at("ball");
   EXPECT_EQ(onset.mode, EstimateMode::kLeft);
   EXPECT_NEAR(onset.probability, 2.0 / 3.0, 1e-3);
@@ -905,7 +908,7 @@ TEST(ObjectPermanenceFilter, EveryPlausibleOccluderIsAHypothesisWithItsProbabili
   std::set<std::string> carriers;
   for (const Estimate& e : opf.extras[41]) {
     EXPECT_EQ(e.mode, EstimateMode::kCarried);
-    EXPECT_NEAR(e.probability, 1.0 / 9.0, 1e-3);
+    EXPECT_NEAR(e.probability, 1.0 / 9.0, 4e-3);
     carriers.insert(e.motion_model);
   }
   EXPECT_EQ(carriers, (std::set<std::string>{"cup_a", "cup_b", "cup_c"}));
@@ -1033,6 +1036,55 @@ TEST(ObjectPermanenceFilter, PassedOverTheBallIsLeftAndPickedUpItIsCarried) {
     EXPECT_EQ(r->estimates[span.last + 1].at("ball").probability, 1.0);
     EXPECT_LT(error_at(*r, *scene, "ball", span.last + settled), 0.006);
   }
+}
+
+// --- A hand passes over a cube and lingers with a corner over it
+// A 14 cm square plate (a hand, 12 cm up), turned 45 degrees about the vertical, moves along x at
+// 0.15 m/s over a cube resting at x = 0.5 m and stops with its trailing corner over the cube (its
+// centre 8.5 cm past it; the corner reaches 9.9 cm) for 1 s before it moves on. The cube is hidden
+// while it lies within the plate's square silhouette. Its detections state the plate's area as
+// the disc of 7.9 cm, and, if `stated_box`, its box.
+Scene plate_lingering_with_its_corner(bool stated_box) {
+  const auto plate = [](double t) {
+    const double x = t < 2.566 ? 0.2 + 0.15 * t : t < 3.6 ? 0.585 : 0.585 + 0.15 * (t - 3.6);
+    return Eigen::Vector3d(x, 0.0, 0.12);
+  };
+  const Eigen::Vector3d cube(0.5, 0.0, 0.01);
+  const double half_diagonal = 0.07 * std::sqrt(2.0);
+  Scene scene;
+  scene.frames = 150;
+  scene.objects.push_back({"cube", [cube](double) { return cube; },
+                           [](double) { return Eigen::Quaterniond::Identity(); },
+                           [=](int k) {
+                             const Eigen::Vector3d d = plate(k / 30.0) - cube;
+                             return std::abs(d.x()) + std::abs(d.y()) > half_diagonal;
+                           }});
+  const Eigen::Quaterniond turned(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()));
+  scene.objects.push_back(
+      {"hand", plate, [turned](double) { return turned; }, [](int) { return true; },
+       std::sqrt(0.14 * 0.14 / M_PI),
+       stated_box ? Eigen::Vector3d(0.14, 0.14, 0.04) : Eigen::Vector3d::Zero()});
+  return scene;
+}
+
+// The plate's box, turned with its estimate, covers the cube's place under the corner (1 cm inside
+// both its sides, 3.6 combined standard deviations at the detector's 2 mm): nothing says the cube
+// was taken, and `left` keeps about the prior odds, the main hypothesis on the cube, until the
+// reveal. The disc of the plate's area (7.9 cm, 6 mm short of the place) would take the place as in
+// view and empty the whole second the corner lingers: carried would become the main estimate.
+TEST(ObjectPermanenceFilter, APlateLingeringWithItsCornerOverACubeLeavesItWhereItWas) {
+  const Scene boxed = plate_lingering_with_its_corner(true);
+  const HiddenSpan hidden = hidden_span(boxed);
+  ASSERT_GT(hidden.last - hidden.first, 45);  // hidden for over 1.5 s, 1 s of it under a corner
+  const SceneRun r = run(boxed, opf_factory(OpfOptions{}));
+  for (int k = hidden.first; k <= hidden.last; ++k) {
+    ASSERT_EQ(r.estimates[k].at("cube").mode, EstimateMode::kLeft) << k;
+    EXPECT_GT(r.estimates[k].at("cube").probability, 0.6) << k;
+    EXPECT_LT(error_at(r, boxed, "cube", k), 0.006) << k;
+  }
+  const Scene disc = plate_lingering_with_its_corner(false);
+  const SceneRun d = run(disc, opf_factory(OpfOptions{}));
+  EXPECT_EQ(d.estimates[hidden.last].at("cube").mode, EstimateMode::kCarried);
 }
 
 // --- A moving object carried by what hides it

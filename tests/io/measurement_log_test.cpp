@@ -154,6 +154,40 @@ TEST(MeasurementLogErrors, ANegativeOrNonNumericRadius) {
   EXPECT_EQ(e.line(), 2u);
 }
 
+TEST(MeasurementLog, ReadsEachDetectionsStatedBoxInTheLogsLengthUnit) {
+  const MeasurementLog log = parse(
+      "t,object,x,y,z,qx,qy,qz,qw,radius,box_x,box_y,box_z\n"
+      "0,hand,0.1,0.2,0.3,0,0,0,1,0.079,0.14,0.12,0.04\n"
+      "0,ball,0.5,0,0,0,0,0,1,0.025,,,\n");
+  ASSERT_EQ(log.frames.size(), 1u);
+  EXPECT_EQ(log.frames[0].find("hand")->box, Eigen::Vector3d(0.14, 0.12, 0.04));
+  EXPECT_EQ(log.frames[0].find("ball")->box, Eigen::Vector3d::Zero());  // empty: not stated
+  LogReadOptions millimetres;
+  millimetres.length_unit = LengthUnit::kMillimetres;
+  std::istringstream in(
+      "t,object,x,y,z,qx,qy,qz,qw,box_x,box_y,box_z\n0,hand,0,0,0,0,0,0,1,140,"
+      "120,40\n");
+  EXPECT_TRUE(parse_measurement_log(in, "log.csv", millimetres)
+                  .frames[0]
+                  .detections[0]
+                  .box.isApprox(Eigen::Vector3d(0.14, 0.12, 0.04)));
+}
+
+// A box is stated by its three extents together, each > 0; the error names the file, line and
+// column.
+TEST(MeasurementLogErrors, AnIncompleteOrNonPositiveBox) {
+  InputError e = parse_error("t,object,x,y,z,qx,qy,qz,qw,box_x,box_z\n0,hand,0,0,0,0,0,0,1,1,1\n");
+  EXPECT_STREQ(e.what(),
+               "log.csv:1: column 'box_y': missing: a box is stated by box_x, box_y and box_z "
+               "together");
+  e = parse_error("t,object,x,y,z,qx,qy,qz,qw,box_x,box_y,box_z\n0,hand,0,0,0,0,0,0,1,0.1,,0.1\n");
+  EXPECT_EQ(e.field(), "box_y");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_NE(std::string(e.what()).find("leave all three empty"), std::string::npos);
+  e = parse_error("t,object,x,y,z,qx,qy,qz,qw,box_x,box_y,box_z\n0,hand,0,0,0,0,0,0,1,0.1,0.1,0\n");
+  EXPECT_STREQ(e.what(), "log.csv:2: column 'box_z': expected a box's extent > 0, got 0");
+}
+
 TEST(MeasurementLog, EmptyPoseRowMarksObjectUnobservedButKeepsTheFrame) {
   const MeasurementLog log = parse(std::string(kHeader) +
                                    "0,ball,1,2,3,0,0,0,1\n"

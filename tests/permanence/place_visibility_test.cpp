@@ -74,6 +74,57 @@ TEST(PlaceVisibility, AStatedRadiusCoversInPlaceOfTheFallback) {
   EXPECT_EQ(seen({Eigen::Vector3d(0.5, 0.0, -0.2), kTight, 0.1}), 1.0);
 }
 
+// A 14 cm square plate turned 45 degrees about the vertical, 12 cm above the place: its corners
+// reach 9.9 cm from its centre along x and y, its sides 7 cm along the diagonals. Its stated box
+// covers what its corners do and clears what lies past its sides, where the disc of its area
+// (7.9 cm) says the opposite.
+TEST(PlaceVisibility, AStatedBoxCoversWithItsCornersAndClearsPastItsSides) {
+  const OccluderOptions top_down;
+  const Eigen::Vector3d plate(0.14, 0.14, 0.04);
+  const Eigen::Quaterniond turned(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()));
+  const auto seen = [&](const Eigen::Vector3d& across, const Eigen::Vector3d& box) {
+    const ViewBlocker hand{kPlace + across + Eigen::Vector3d(0, 0, 0.12), kTight, 0.079, box,
+                           turned};
+    return seen_probability(kPlace, kTight, std::vector{hand}, 0.08, top_down);
+  };
+  const Eigen::Vector3d under_a_corner(0.09, 0.0, 0.0);
+  const Eigen::Vector3d past_a_side = 0.075 * Eigen::Vector3d(1, 1, 0).normalized();
+  // 9 mm short of the corner: 6.4 mm inside both sides that meet there (1.4 mm combined spread).
+  const double sigma = std::sqrt(2e-6);
+  const double inside = (0.07 * std::sqrt(2.0) - 0.09) / std::sqrt(2.0);
+  EXPECT_NEAR(seen(under_a_corner, plate), 1.0 - phi(inside / sigma), 1e-12);
+  EXPECT_LT(seen(under_a_corner, plate), 1e-5);
+  EXPECT_GT(seen(under_a_corner, Eigen::Vector3d::Zero()), 1.0 - 1e-9);     // the disc: 1.1 cm out
+  EXPECT_NEAR(seen(past_a_side, plate), 1.0 - phi(-0.005 / sigma), 1e-12);  // 5 mm out
+  EXPECT_GT(seen(past_a_side, plate), 0.99);
+  EXPECT_NEAR(seen(past_a_side, Eigen::Vector3d::Zero()), 1.0 - phi(0.004 / sigma), 1e-12);
+  // On a side's middle: on the edge, one half.
+  EXPECT_NEAR(seen(0.07 * Eigen::Vector3d(1, 1, 0).normalized(), plate), 0.5, 1e-9);
+}
+
+// The particle filter's covariance of a measured object is the steady state of its random walk
+// (0.05 m/sqrt(s), 30 Hz) under the configured 10 mm, 7.7 mm per axis; at the 2 mm a detector
+// shows, 1.95 mm. What a hidden object's covariance has grown by stays; a covariance already
+// below the steady state, or a detector noisier than configured, changes nothing to less.
+TEST(PlaceVisibility, ACovarianceAtTheDetectorsNoiseLosesWhatTheConfiguredNoiseAdded) {
+  const double q = 0.05 * 0.05 / 30.0;
+  const auto steady = [q](double n) { return 0.5 * (-q + std::sqrt(q * q + 4.0 * q * n * n)); };
+  EXPECT_NEAR(std::sqrt(steady(0.01)), 0.0077, 1e-4);
+  EXPECT_NEAR(std::sqrt(steady(0.002)), 0.00195, 1e-5);
+  const Eigen::Matrix3d measured = steady(0.01) * Eigen::Matrix3d::Identity();
+  EXPECT_TRUE(at_detector_noise(measured, 0.01, 0.002, 0.05, 1.0 / 30)
+                  .isApprox(steady(0.002) * Eigen::Matrix3d::Identity(), 1e-9));
+  const Eigen::Matrix3d grown =
+      measured + Eigen::Vector3d(4e-4, 1e-4, 0).asDiagonal().toDenseMatrix();
+  EXPECT_TRUE(at_detector_noise(grown, 0.01, 0.002, 0.05, 1.0 / 30)
+                  .isApprox(steady(0.002) * Eigen::Matrix3d::Identity() +
+                                Eigen::Vector3d(4e-4, 1e-4, 0).asDiagonal().toDenseMatrix(),
+                            1e-9));
+  EXPECT_TRUE(at_detector_noise(1e-6 * Eigen::Matrix3d::Identity(), 0.01, 0.002, 0.05, 1.0 / 30)
+                  .isApprox(steady(0.002) * Eigen::Matrix3d::Identity(), 1e-9));
+  EXPECT_EQ(at_detector_noise(measured, 0.01, 0.02, 0.05, 1.0 / 30), measured);
+}
+
 TEST(PlaceVisibility, TheHidingRadiusIsTheOccludersOffsetWhenTheObjectWasLastSeenAtMostReach) {
   const OccluderOptions options;  // reach 0.15 m
   EXPECT_NEAR(hiding_radius(kPlace, Eigen::Vector3d(0.56, 0.08, 0.12), options), 0.1, 1e-12);

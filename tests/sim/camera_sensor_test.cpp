@@ -93,6 +93,15 @@ TEST(CameraSensor, AWholeViewStatesNoPartialViewOffset) {
   EXPECT_NEAR(ball.radius, 0.025, 5e-4);
 }
 
+// A box body's detections state its box, its own size; other shapes state none.
+TEST(CameraSensor, ABoxStatesItsSizeAndABallNone) {
+  CameraSensor sensor(kCamera);
+  const CameraFrame frame = sensor.observe(ball_and_box({0.7, -0.2, 0.05}, 0.01));
+  ASSERT_TRUE(frame.sightings[0].detected && frame.sightings[1].detected);
+  EXPECT_EQ(frame.sightings[0].box, Eigen::Vector3d::Zero());
+  EXPECT_EQ(frame.sightings[1].box, Eigen::Vector3d(0.12, 0.12, 0.01));
+}
+
 TEST(CameraSensor, ABallHalfOutOfTheFrameIsSeenInPartWithItsWholeSize) {
   CameraSensor sensor(kCamera);
   // The ball's centre on the image's right edge (column width - 0.5): the frame's edge covers
