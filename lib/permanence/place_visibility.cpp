@@ -3,12 +3,20 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
 
 namespace opf {
+namespace {
+
+// Phi(margin / sigma): the probability that a Gaussian offset of spread sigma stays within
+// `margin` of the edge it is measured from.
+double within_margin(double margin, double sigma) {
+  return 0.5 * std::erfc(-margin / (sigma * std::sqrt(2.0)));
+}
+
+}  // namespace
 
 double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance,
                             double radius) {
@@ -17,7 +25,7 @@ double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd
   along(0) = 1.0;
   if (distance > 0.0) along = offset / distance;
   const double sigma = std::sqrt(std::max(along.dot(covariance * along), 1e-18));
-  return 0.5 * std::erfc(-(radius - distance) / (sigma * std::sqrt(2.0)));
+  return within_margin(radius - distance, sigma);
 }
 
 namespace {
@@ -43,10 +51,6 @@ std::vector<Eigen::Vector2d> convex_hull(std::vector<Eigen::Vector2d> points) {
   }
   hull.resize(k - 1);  // the last point is the first
   return hull;
-}
-
-double standard_normal_cdf(double x) {
-  return 0.5 * std::erfc(-x / std::sqrt(2.0));
 }
 
 }  // namespace
@@ -81,7 +85,7 @@ double box_covering_probability(const Eigen::MatrixXd& projection, const Eigen::
   const Eigen::Matrix2d spread =
       (projection * covariance * projection.transpose()).topLeftCorner<2, 2>();
   const double sigma = std::sqrt(std::max(across.dot(spread * across), 1e-18));
-  return standard_normal_cdf((inside ? nearest : -nearest) / sigma);
+  return within_margin(inside ? nearest : -nearest, sigma);
 }
 
 Eigen::Matrix3d at_detector_noise(const Eigen::Matrix3d& covariance, double configured, double read,
