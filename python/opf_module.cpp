@@ -114,7 +114,8 @@ void bind_tracker(py::module_& m) {
       .def("step", &PyTracker::step, py::arg("t"), py::arg("detections"),
            "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}, "
            "an eighth number the detection's stated extra noise (m), a ninth the object's stated "
-           "radius (m). Returns {object: Estimate} "
+           "radius (m), a tenth to twelfth its box's full extents box_x, box_y, box_z (m, each "
+           "> 0, all three or none). Returns {object: Estimate} "
            "for every object seen so far. A non-finite or malformed "
            "input raises ValueError naming the object and the field, and leaves the tracker as "
            "it was.")

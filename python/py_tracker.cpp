@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -19,6 +20,8 @@ namespace opf::python {
 namespace {
 
 constexpr std::array<const char*, 7> kPoseFields = {"x", "y", "z", "qx", "qy", "qz", "qw"};
+// The pose; with extra_noise; with the radius; with the box's three extents.
+constexpr std::array<std::size_t, 4> kFieldCounts = {7, 8, 9, 12};
 // The measurement log's tolerance (io/log_row_reader.cpp), and its wording below.
 constexpr double kQuaternionNormTolerance = 0.01;
 
@@ -38,22 +41,28 @@ std::vector<double> pose_fields(const std::string& object, const py::object& pos
                                 ": expected a pose [x, y, z, qx, qy, qz, qw] or None, got " +
                                 py::cast<std::string>(py::repr(pose)));
   }
-  if (p.size() < kPoseFields.size() || p.size() > kPoseFields.size() + 2)
+  if (std::find(kFieldCounts.begin(), kFieldCounts.end(), p.size()) == kFieldCounts.end())
     throw std::invalid_argument(where +
                                 ": expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with "
-                                "extra_noise, 9 with radius), got " +
+                                "extra_noise, 9 with radius, 12 with box_x, box_y, box_z), got " +
                                 std::to_string(p.size()));
   for (std::size_t i = 0; i < kPoseFields.size(); ++i)
     require_finite(p[i], where + ", field '" + kPoseFields[i] + "'");
   // An eighth number: the detector's stated extra noise (m), as the log's extra_noise column; a
-  // ninth: the object's stated radius (m), as its radius column.
-  const auto require_length = [&](std::size_t i, const char* field, const char* what) {
-    if (p.size() > i && !(std::isfinite(p[i]) && p[i] >= 0.0))
+  // ninth: the object's stated radius (m), as its radius column; the tenth to twelfth: its box's
+  // full extents (m), as the box_x, box_y, box_z columns, all three or none.
+  const auto require_length = [&](std::size_t i, const char* field, const char* what,
+                                  bool positive = false) {
+    if (p.size() > i && !(std::isfinite(p[i]) && (positive ? p[i] > 0.0 : p[i] >= 0.0)))
       throw std::invalid_argument(where + ", field '" + field + "': expected " + what +
-                                  " >= 0, got " + csv::format_double(p[i]));
+                                  (positive ? " > 0" : " >= 0") + ", got " +
+                                  csv::format_double(p[i]));
   };
   require_length(7, "extra_noise", "a standard deviation");
   require_length(8, "radius", "a radius");
+  require_length(9, "box_x", "an extent", true);
+  require_length(10, "box_y", "an extent", true);
+  require_length(11, "box_z", "an extent", true);
   return p;
 }
 
@@ -73,9 +82,10 @@ Frame frame_from(double t, const std::map<std::string, py::object>& detections) 
                                   "', fields 'qx,qy,qz,qw': expected a unit quaternion (norm "
                                   "within 0.01 of 1), got norm " +
                                   csv::format_double(q.norm()));
-    frame.detections.push_back({object,
-                                make_pose(Eigen::Vector3d(p[0], p[1], p[2]), q.normalized()),
-                                p.size() > 7 ? p[7] : 0.0, p.size() > 8 ? p[8] : 0.0});
+    frame.detections.push_back(
+        {object, make_pose(Eigen::Vector3d(p[0], p[1], p[2]), q.normalized()),
+         p.size() > 7 ? p[7] : 0.0, p.size() > 8 ? p[8] : 0.0,
+         p.size() > 11 ? Eigen::Vector3d(p[9], p[10], p[11]) : Eigen::Vector3d::Zero()});
   }
   return frame;
 }

@@ -190,12 +190,22 @@ CUP = [0.1, 0.2, 0.3, 0.0, 0.0, 0.0, 1.0]
                                         "quaternion (norm within 0.01 of 1), got norm 0"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 1],
      "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
-     "radius), got 6"),
+     "radius, 12 with box_x, box_y, box_z), got 6"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, -0.05],
      "object 'cup', field 'radius': expected a radius >= 0, got -0.05"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 1.0],
      "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
-     "radius), got 10"),
+     "radius, 12 with box_x, box_y, box_z), got 10"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.1],
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
+     "radius, 12 with box_x, box_y, box_z), got 11"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.1, 0.1, 0.1],
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
+     "radius, 12 with box_x, box_y, box_z), got 13"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.0, 0.1],
+     "object 'cup', field 'box_y': expected an extent > 0, got 0"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.1, math.inf],
+     "object 'cup', field 'box_z': expected an extent > 0, got inf"),
     (NEXT, "0.1,0.2,0.3,0,0,0,1", "object 'cup': expected a pose [x, y, z, qx, qy, qz, qw] or "
                                   "None, got '0.1,0.2,0.3,0,0,0,1'"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, -0.01],
@@ -490,3 +500,51 @@ def test_a_tracker_takes_the_preset_and_the_camera_as_track_log_does():
         opf.Tracker("opf", preset="fast")
     with pytest.raises(ValueError, match="option 'camera'"):
         opf.Tracker("opf", camera=[0.0, 1.0])
+
+
+def test_a_stated_box_reaches_the_tracker_as_the_logs_box_columns_do(tmp_path):
+    # A cube at rest; a 14 cm square plate turned 45 degrees about z passes 10 cm above it at
+    # 0.2 m/s, hiding the cube while its centre is within 9.9 cm along x (a corner's reach). With
+    # the plate's box stated, the cube is left where it was throughout; with the disc of the
+    # plate's area alone (7.9 cm), the place looks clear under the departing corner and the
+    # carried hypothesis takes over. The box stated per step is the log's box columns'.
+    turned = [0.0, 0.0, math.sin(math.pi / 8), math.cos(math.pi / 8)]
+    radius, box = 0.079, [0.14, 0.14, 0.01]
+    frames = []
+    for k in range(75):
+        t = k / 30.0
+        plate = [-0.3 + 0.2 * t, 0.0, 0.1, *turned]
+        hidden = abs(plate[0]) < 0.099
+        frames.append((t, None if hidden else [0.0, 0.0, 0.0, 0, 0, 0, 1], plate))
+    assert sum(cube is None for _, cube, _ in frames) > 20
+
+    def cube_probabilities(stated):
+        tracker = opf.Tracker("opf", seed=6, particles=PARTICLES)
+        rows = []
+        for t, cube, plate in frames:
+            main = tracker.step(t, {"cube": cube, "plate": plate + stated})["cube"]
+            rows.append([(main.mode, main.probability)] +
+                        [(e.mode, e.probability) for e in tracker.hypotheses if e.object == "cube"])
+        return rows
+
+    with_box = cube_probabilities([0.0, radius, *box])
+    hidden = [row for row, (_, cube, _) in zip(with_box, frames) if cube is None]
+    assert all(row[0][0] == "left" for row in hidden)
+    disc_only = cube_probabilities([0.0, radius])
+    assert [row for row, (_, cube, _) in zip(disc_only, frames) if cube is None][-1][0][0] == \
+        "carried"
+    log = tmp_path / "plate.csv"
+    with open(log, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["t", "object", "x", "y", "z", "qx", "qy", "qz", "qw", "radius",
+                      "box_x", "box_y", "box_z"])
+        for t, cube, plate in frames:
+            out.writerow([repr(t), "cube", *(map(repr, cube) if cube else [""] * 7), "", "", "", ""])
+            out.writerow([repr(t), "plate", *map(repr, plate), repr(radius), *map(repr, box)])
+    columns = opf.track_log(log, estimator="opf", seed=6, particles=PARTICLES, dataframe=False)
+    from_log = {}
+    for t, name, mode, p in zip(columns["t"], columns["object"], columns["mode"],
+                                columns["probability"]):
+        if name == "cube":
+            from_log.setdefault(t, []).append((mode, p))
+    assert [from_log[t] for t, _, _ in frames] == with_box
