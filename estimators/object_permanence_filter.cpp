@@ -16,6 +16,7 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace opf {
 namespace {
@@ -433,18 +434,30 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
                              options_.particles.process_noise_translation, dt);
   };
   std::vector<ViewBlocker> blockers;
+  std::vector<std::string_view> blocking_objects;
   for (const Estimate& e : ensemble.previous_estimates) {
     if (e.object == object_) continue;
     blockers.push_back({translation_of(e.pose.mean), known(translation_covariance(e)),
                         stated_radius(ensemble, e.object), stated_box(ensemble, e.object),
                         orientation_of(e.pose.mean)});
+    blocking_objects.push_back(e.object);
   }
   const Eigen::Matrix3d place_covariance = known(place_covariance_);
   // p(no detection | the object at the place) = 1 - P(seen) (1 - P_miss).
   for (Hypothesis& h : hypotheses_) {
     const Eigen::Vector3d place = h.filter.translation_moments().mean;
+    // A carried hypothesis is that the object moves with its carrier: the carrier covers the
+    // place by the offset the carry keeps them at, wherever its estimate is and however unsure
+    // (hidden itself, or a frame old).
+    std::vector<ViewBlocker> around = blockers;
+    if (const auto offset = h.motion ? h.motion->carrier_offset() : std::nullopt)
+      for (std::size_t k = 0; k < around.size(); ++k)
+        if (blocking_objects[k] == h.motion->label()) {
+          around[k].mean = place + *offset;
+          around[k].carries_the_place = true;
+        }
     const double seen =
-        seen_probability(place, place_covariance, blockers, hiding_radius_, options_.occluder);
+        seen_probability(place, place_covariance, around, hiding_radius_, options_.occluder);
     if (std::isfinite(seen)) h.probability *= 1.0 - seen * (1.0 - kDetectorMissProbability);
   }
   normalise_probabilities();

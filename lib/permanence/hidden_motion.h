@@ -38,6 +38,9 @@ class HiddenMotion {
   virtual EstimateMode mode() const = 0;
   /// The model behind the motion, for the estimate file's `model` column ("" when none).
   virtual std::string label() const { return {}; }
+  /// Where the object's carrier (label()) is from the object, as the carry put it this step (the
+  /// carrier's position less the virtual measurement's). None when nothing carries it.
+  virtual std::optional<Eigen::Vector3d> carrier_offset() const { return std::nullopt; }
 };
 
 /// A source that feeds the filter a virtual measurement each hidden frame (paper Eq. 12-14): the

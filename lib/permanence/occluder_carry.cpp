@@ -107,6 +107,7 @@ std::optional<VirtualMeasurementMotion::Measurement> OccluderCarry::measure(
     double t, const EnsembleView& ensemble) {
   // The occluder's measurement this frame (the paper's y_k^j), or its estimate when it is hidden
   // itself (a chain of occlusions).
+  carrier_offset_.reset();
   const Estimate* occluder_estimate = find_estimate(ensemble, occluder_);
   const Detection* occluder_detection = ensemble.frame.find(occluder_);
   if (!occluder_estimate && !occluder_detection) return std::nullopt;
@@ -136,6 +137,7 @@ std::optional<VirtualMeasurementMotion::Measurement> OccluderCarry::measure(
       t, occluder_estimate ? translation_of(occluder_estimate->pose.mean) : occluder.position);
   last_carrier_position_ = occluder.position;
   last_carrier_orientation_ = occluder.orientation;
+  carrier_offset_ = occluder.position - z.position;
   return z;
 }
 

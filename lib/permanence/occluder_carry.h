@@ -29,6 +29,7 @@ class OccluderCarry final : public VirtualMeasurementMotion {
   EstimateMode mode() const override { return EstimateMode::kCarried; }
   /// The occluder that carries the object, by its name in the ensemble.
   std::string label() const override { return occluder_; }
+  std::optional<Eigen::Vector3d> carrier_offset() const override { return carrier_offset_; }
 
  private:
   std::optional<Measurement> measure(double t, const EnsembleView& ensemble) override;
@@ -50,6 +51,8 @@ class OccluderCarry final : public VirtualMeasurementMotion {
   bool waits_ = false;           ///< a cover: carries only once it departs
   double closest_distance_ = 0;  ///< its closest horizontal distance so far
   bool at_offset_ = false;       ///< carried at its whole offset, turned about the occluder
+  /// The carrier from the object in the last step's carry; none while a cover closes in.
+  std::optional<Eigen::Vector3d> carrier_offset_;
   Eigen::Vector3d last_carrier_position_;
   Eigen::Quaterniond last_carrier_orientation_;
   // Recent (t, position) of the occluder's estimate, spanning the speed window.

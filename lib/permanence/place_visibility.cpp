@@ -113,10 +113,9 @@ double seen_probability(const Eigen::Vector3d& place, const Eigen::Matrix3d& cov
     const Eigen::Vector3d offset = b.mean - place;
     if (ray && offset.dot(*ray) > radius) continue;       // behind the place
     const bool box = ray && (b.box.array() > 0.0).all();  // a silhouette in the occlusion plane
-    seen *= 1.0 - (box ? box_covering_probability(p, offset, covariance + b.covariance, b.box,
-                                                  b.orientation)
-                       : covering_probability(
-                             p * offset, p * (covariance + b.covariance) * p.transpose(), radius));
+    const Eigen::Matrix3d spread = b.carries_the_place ? covariance : covariance + b.covariance;
+    seen *= 1.0 - (box ? box_covering_probability(p, offset, spread, b.box, b.orientation)
+                       : covering_probability(p * offset, p * spread * p.transpose(), radius));
   }
   return seen;
 }

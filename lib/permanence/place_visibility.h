@@ -51,6 +51,10 @@ struct ViewBlocker {
   /// `orientation`, in place of the radius's disc.
   Eigen::Vector3d box = Eigen::Vector3d::Zero();
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  /// The place is carried by this object (the hypothesis being weighed is that the object moves
+  /// with it): it covers the place as far as their offset says, the place's own spread about it,
+  /// wherever the carrier itself is; its own covariance does not enter.
+  bool carries_the_place = false;
 };
 
 /// The probability that the camera sees a place (a position estimate `place` +- `covariance`):

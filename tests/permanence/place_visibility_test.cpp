@@ -74,6 +74,26 @@ TEST(PlaceVisibility, AStatedRadiusCoversInPlaceOfTheFallback) {
   EXPECT_EQ(seen({Eigen::Vector3d(0.5, 0.0, -0.2), kTight, 0.1}), 1.0);
 }
 
+// A cup hidden itself (under the hand that moves it), its estimate 5 cm off either way (its own
+// motion extrapolated): over a place 2 cm from its centre, its 4.5 cm silhouette covers it only at
+// Phi(2.5 / 5.0) = 0.69 as a stranger standing in the way. For the hypothesis that the place is
+// carried by that cup, where the cup is does not matter, only their offset, known to 1 mm: it is
+// covered (Phi(25)). Another object blocking the same place still counts with its spread.
+TEST(PlaceVisibility, ACarrierCoversThePlaceItCarriesByTheirOffsetAlone) {
+  const OccluderOptions top_down;
+  const Eigen::Matrix3d lost = Eigen::Matrix3d::Identity() * 2.5e-3;  // 5 cm std per axis
+  ViewBlocker cup{kPlace + Eigen::Vector3d(0.02, 0.0, 0.05), lost, 0.045};
+  const double across = std::sqrt(2.5e-3 + 1e-6);  // the spreads combined
+  EXPECT_NEAR(seen_probability(kPlace, kTight, std::vector{cup}, 0.08, top_down),
+              1.0 - phi(0.025 / across), 1e-12);
+  cup.carries_the_place = true;
+  EXPECT_NEAR(seen_probability(kPlace, kTight, std::vector{cup}, 0.08, top_down),
+              1.0 - phi(0.025 / 1e-3), 1e-12);
+  const ViewBlocker stranger{kPlace + Eigen::Vector3d(-0.02, 0.0, 0.05), lost, 0.045};
+  EXPECT_NEAR(seen_probability(kPlace, kTight, std::vector{cup, stranger}, 0.08, top_down),
+              (1.0 - phi(0.025 / 1e-3)) * (1.0 - phi(0.025 / across)), 1e-12);
+}
+
 // A 14 cm square plate turned 45 degrees about the vertical, 12 cm above the place: its corners
 // reach 9.9 cm from its centre along x and y, its sides 7 cm along the diagonals. Its stated box
 // covers what its corners do and clears what lies past its sides, where the disc of its area
