@@ -24,8 +24,12 @@ Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and h
 scene that no window of its recording fits from --window-start on is not run: it is named, with
 the reason, on stderr and under the table in hand_scenes.md.
 
+With --unseen it runs instead the scenes on motion they were not built on: every room and two
+EuRoC flights' paths (MH_01, V1_01) as the hands', from 2, 6 and 12 s, leaving out any scene
+identical to a shipped one or to one already run; rows are named recording@start.
+
 Usage: hand_scenes.py OUT_DIR [--opf build/bin/opf] [--seeds 5] [--recordings N]
-                       [--window-start S]
+                       [--window-start S | --unseen]
 """
 
 import argparse
@@ -46,6 +50,11 @@ RECORDINGS = (("tumvi_room1", convert.read_euroc, "raw/handheld/tumvi_room1.csv"
               ("tumvi_room2", convert.read_tum, "raw/handheld/tumvi_room2.txt"),
               ("tumvi_room4", convert.read_euroc, "raw/handheld/tumvi_room4.csv"),
               ("tumvi_room5", convert.read_tum, "raw/handheld/tumvi_room5.txt"))
+# --unseen: two EuRoC flights' paths as the hands' as well, every recording from each of these
+# starts (s): motion the shipped scenes (the rooms from WINDOW_START) were not built on.
+FLIGHTS = (("euroc_mh01", convert.read_tum, "raw/flying/euroc_mh01.txt"),
+           ("euroc_v101", convert.read_euroc, "raw/flying/euroc_v101.csv"))
+UNSEEN_STARTS = (2.0, 6.0, 12.0)
 RATE = 30.0
 DURATION = 10.0        # s of each scene
 WINDOW_START = 2.0     # s into the recording: the earliest window's start (--window-start)
@@ -261,23 +270,56 @@ def main():
     parser.add_argument("out")
     parser.add_argument("--opf", default=os.path.join(REPO, "build", "bin", "opf"))
     parser.add_argument("--seeds", type=int, default=5)
-    parser.add_argument("--recordings", type=int, default=len(RECORDINGS))
-    parser.add_argument("--window-start", type=float, default=WINDOW_START,
+    parser.add_argument("--recordings", type=int, default=None)
+    parser.add_argument("--window-start", type=float, default=None,
                         help="s into each recording where the windows begin (default 2): other "
                         "stretches of the same recordings, motion the scenes were not built on")
+    parser.add_argument("--unseen", action="store_true",
+                        help="the scenes on motion the shipped ones were not built on: the rooms "
+                        "and two EuRoC flights as the hands' paths, from 2, 6 and 12 s, each "
+                        "scene not already shipped once (rows recording@start)")
     args = parser.parse_args()
-    if not args.window_start >= 0.0:
-        parser.error(f"--window-start: {args.window_start} is not a time >= 0 s")
+    if args.unseen and (args.window_start is not None or args.recordings is not None):
+        parser.error("--unseen takes its own recordings and starts: not with --window-start or "
+                     "--recordings")
+    start = WINDOW_START if args.window_start is None else args.window_start
+    if not start >= 0.0:
+        parser.error(f"--window-start: {start} is not a time >= 0 s")
     os.makedirs(args.out, exist_ok=True)
-    built, skipped = build_scenes(RECORDINGS, args.window_start, args.recordings)
+    if args.unseen:
+        built, skipped = unseen_scenes()
+    else:
+        built, skipped = build_scenes(RECORDINGS, start, args.recordings)
+        built = [(name, start, *rest) for name, *rest in built]
     for name, kind, reason in skipped:
         print(f"hand_scenes: {name} {kind} not run: {reason}", file=sys.stderr)
     if not built:
-        sys.exit(f"hand_scenes: no scene can be built from {args.window_start:g} s into the "
-                 "recordings")
-    table = [(name, kind, *run_scene(args, f"{name}_{kind}", text, target, carriers))
-             for name, kind, text, target, carriers in built]
+        sys.exit(f"hand_scenes: no scene can be built from {start:g} s into the recordings")
+    table = []
+    for name, begins, kind, text, target, carriers in built:
+        # Each start's scenes in a folder of their own: they share names.
+        out = os.path.join(args.out, f"from_{begins:g}s") if args.unseen else args.out
+        table.append((f"{name}@{begins:g}" if args.unseen else name, kind,
+                      *run_scene(args, f"{name}_{kind}", text, target, carriers, out)))
     write_results(args.out, table, skipped)
+
+
+def unseen_scenes():
+    """The scenes of every recording, FLIGHTS then RECORDINGS (the cups game's cup A from the next
+    in that order), from each of UNSEEN_STARTS, as (recording, start, scene, experiment file's
+    text, object of interest, its carriers), leaving out any scene identical to a shipped one
+    (RECORDINGS from WINDOW_START) or to one already listed; and those no window fits, as
+    (recording@start, scene, why)."""
+    seen = {text for _, _, text, _, _ in build_scenes(RECORDINGS, WINDOW_START)[0]}
+    built, skipped = [], []
+    for start in UNSEEN_STARTS:
+        scenes, missing = build_scenes(FLIGHTS + RECORDINGS, start)
+        for name, kind, text, target, carriers in scenes:
+            if text not in seen:
+                seen.add(text)
+                built.append((name, start, kind, text, target, carriers))
+        skipped += [(f"{name}@{start:g}", kind, why) for name, kind, why in missing]
+    return built, skipped
 
 
 def build_scenes(recordings, start, count=None):
@@ -303,18 +345,34 @@ def build_scenes(recordings, start, count=None):
     return built, skipped
 
 
-def run_scene(args, experiment, text, target, carriers=None):
-    """Writes the experiment file, runs every estimator on it and returns the target's hidden
-    errors (hidden_errors) and the OPF's reveals (reveals)."""
-    scene = os.path.join(args.out, f"{experiment}.yaml")
+def run_scene(args, experiment, text, target, carriers=None, out=None):
+    """Writes the experiment file into `out` (args.out by default), runs every estimator on it
+    and returns the target's hidden errors (hidden_errors) and the OPF's reveals (reveals)."""
+    out = out or args.out
+    os.makedirs(out, exist_ok=True)
+    scene = os.path.join(out, f"{experiment}.yaml")
     with open(scene, "w") as f:
         f.write(text)
-    run_dir = os.path.join(args.out, experiment)
+    run_dir = os.path.join(out, experiment)
     subprocess.run([args.opf, "run", scene, "--estimators", ESTIMATORS, "--seeds",
                     str(args.seeds), "--quiet", "--out", run_dir], check=True,
                    stdout=subprocess.DEVNULL)
     return (hidden_errors(os.path.join(run_dir, "summary.json"), experiment),
             reveals(os.path.join(run_dir, f"{experiment}_frames.csv"), target, carriers))
+
+
+def reveal_totals(table):
+    """The line under the table: per scene kind, at how many of its reveals the OPF's most
+    probable hypothesis was the right one ("" for no rows)."""
+    counts = {}
+    for _, kind, _, (_, likeliest, total) in table:
+        right, all_ = counts.get(kind, (0, 0))
+        counts[kind] = (right + likeliest, all_ + total)
+    if not counts:
+        return ""
+    return ("\nThe most probable hypothesis right at reveal: " +
+            "; ".join(f"{kind} {right} of {all_}" for kind, (right, all_) in counts.items()) +
+            ".\n")
 
 
 def write_results(out, table, skipped=()):
@@ -346,6 +404,7 @@ def write_results(out, table, skipped=()):
             "in the last hidden frame was the right one (carried, in the cups game by cup B or "
             "its hand, if the object moved while hidden; left otherwise).\n\n" +
             "\n".join(lines) + "\n")
+    text += reveal_totals(table)
     if skipped:
         text += ("\nNot run, no window of the recording fits:\n\n" +
                  "".join(f"- {name} {kind}: {reason}\n" for name, kind, reason in skipped))

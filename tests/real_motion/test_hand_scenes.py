@@ -172,3 +172,43 @@ def test_a_scene_no_window_fits_is_reported_and_the_others_are_built(tmp_path):
     hand_scenes.write_results(str(tmp_path), [], skipped)
     written = (tmp_path / "hand_scenes.md").read_text()
     assert "- circling cups: no window of drifting.csv" in written
+
+
+def test_the_unseen_scenes_leave_out_what_was_run_already(monkeypatch):
+    # The shipped recording circles once in 8 s, a flight once in 11 s, and a still hand never
+    # leaves where the cube lies (no window fits it as the one carrying or passing). From 2 s the
+    # room's scenes are the shipped ones (left out; its cups game's cup A follows the still hand
+    # as when shipped); from 6 and 12 s they are other stretches, and the flight's are new from
+    # every start. The still hand's are named as not run, each time.
+    t = np.arange(0.0, 30.0, 0.01)
+
+    def circle(period):
+        path = np.stack([1.2 * np.cos(2 * np.pi * t / period),
+                         1.2 * np.sin(2 * np.pi * t / period), np.zeros_like(t)], axis=1)
+        return lambda _: (t, path, np.tile([0.0, 0.0, 0.0, 1.0], (len(t), 1)))
+
+    still = np.zeros((len(t), 3))
+    monkeypatch.setattr(hand_scenes, "RECORDINGS", (
+        ("room", circle(8.0), "room.csv"),
+        ("still", lambda _: (t, still, np.tile([0.0, 0.0, 0.0, 1.0], (len(t), 1))),
+         "still.csv")))
+    monkeypatch.setattr(hand_scenes, "FLIGHTS", (("flight", circle(11.0), "flight.csv"),))
+
+    built, skipped = hand_scenes.unseen_scenes()
+
+    scenes = [(name, start, kind) for name, start, kind, *_ in built]
+    kinds = ("carry", "pass", "cups")
+    assert [s for s in scenes if s[0] == "room"] == [
+        ("room", start, kind) for start in (6.0, 12.0) for kind in kinds]
+    assert [s for s in scenes if s[0] == "flight"] == [
+        ("flight", start, kind) for start in (2.0, 6.0, 12.0) for kind in kinds]
+    assert len({text for _, _, _, text, _, _ in built}) == len(built)  # none twice
+    assert [(name, kind) for name, kind, _ in skipped] == [
+        (f"still@{start:g}", kind) for start in (2.0, 6.0, 12.0) for kind in kinds]
+    assert all("still.csv" in why for _, _, why in skipped)
+    # The table's line under it: the most probable hypothesis right at reveal, per scene kind.
+    table = [("room@6", "carry", {}, (5, 5, 5)), ("room@6", "pass", {}, (4, 3, 5)),
+             ("flight@2", "pass", {}, (5, 5, 5))]
+    assert hand_scenes.reveal_totals(table) == (
+        "\nThe most probable hypothesis right at reveal: carry 5 of 5; pass 8 of 10.\n")
+    assert hand_scenes.reveal_totals([]) == ""
