@@ -276,8 +276,8 @@ def main():
                         "stretches of the same recordings, motion the scenes were not built on")
     parser.add_argument("--unseen", action="store_true",
                         help="the scenes on motion the shipped ones were not built on: the rooms "
-                        "and two EuRoC flights as the hands' paths, from 2, 6 and 12 s, each "
-                        "scene not already shipped once (rows recording@start)")
+                        "and two EuRoC flights as the hands' paths, from 2, 6 and 12 s, any "
+                        "scene already run left out (rows recording@start)")
     args = parser.parse_args()
     if args.unseen and (args.window_start is not None or args.recordings is not None):
         parser.error("--unseen takes its own recordings and starts: not with --window-start or "

@@ -212,3 +212,13 @@ def test_the_unseen_scenes_leave_out_what_was_run_already(monkeypatch):
     assert hand_scenes.reveal_totals(table) == (
         "\nThe most probable hypothesis right at reveal: carry 5 of 5; pass 8 of 10.\n")
     assert hand_scenes.reveal_totals([]) == ""
+
+
+def test_unseen_takes_its_own_starts_and_recordings(tmp_path):
+    script = str(ROOT / "experiments" / "real_motion" / "hand_scenes.py")
+    for extra in (["--window-start", "6"], ["--recordings", "1"]):
+        run = subprocess.run([sys.executable, script, str(tmp_path / "out"), "--unseen", *extra],
+                             capture_output=True, text=True)
+        assert run.returncode == 2
+        assert ("--unseen takes its own recordings and starts: not with --window-start or "
+                "--recordings") in run.stderr
