@@ -16,8 +16,9 @@ namespace opf::cli {
 std::vector<OptionSpec> estimator_option_specs() {
   return {
       {"preset", "NAME",
-       "default (the toolkit's best settings) or paper (the paper's literal rules, "
-       "experiments/configs/paper.yaml); --config is applied on top"},
+       "default (the toolkit's one set of settings for every run) or paper (the paper's literal "
+       "rules, experiments/configs/paper.yaml, then an experiment's paper_preset_config); "
+       "--config is applied on top"},
       {"config", "FILE.yaml", "estimator options (see experiments/configs/estimators.yaml)"},
       {"camera", "X,Y,Z",
        "the camera's position in the world frame (m): the occluder module's line of sight runs "
@@ -30,12 +31,15 @@ std::vector<OptionSpec> estimator_option_specs() {
   };
 }
 
-EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base) {
-  EstimatorSettings settings = base;
+EstimatorSettings settings_from(const Arguments& args,
+                                const std::filesystem::path& paper_preset_config) {
+  EstimatorSettings settings;
   if (const auto preset = args.get("preset")) {
-    if (*preset == "paper")
+    if (*preset == "paper") {
       settings = parse_estimator_settings(kPaperPresetYaml, "preset paper", settings);
-    else if (*preset != "default")
+      if (!paper_preset_config.empty())
+        settings = load_estimator_settings(paper_preset_config, settings);
+    } else if (*preset != "default")
       throw UsageError{"option '--preset': expected default or paper, got \"" + *preset + "\""};
   }
   if (const auto path = args.get("config")) settings = load_estimator_settings(*path, settings);

@@ -6,6 +6,7 @@
 #include "opf/estimators/estimator_settings.h"
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -17,9 +18,11 @@ std::vector<OptionSpec> estimator_option_specs();
 /// a camera position is a usage error, not a silent top-down camera.
 void require_camera_for_line_of_sight(const EstimatorSettings& settings);
 
-/// `base` (the defaults unless given), then the YAML file of --config, then --particles (both
-/// portions).
-EstimatorSettings settings_from(const Arguments& args, const EstimatorSettings& base = {});
+/// The defaults, then --preset (`paper`: its settings, then `paper_preset_config` when given, an
+/// experiment's own under that preset), then the YAML file of --config, then --camera and
+/// --particles (both portions).
+EstimatorSettings settings_from(const Arguments& args,
+                                const std::filesystem::path& paper_preset_config = {});
 
 /// The most threads --threads takes.
 constexpr std::size_t kMaxThreads = 256;

@@ -74,9 +74,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
                          " frames"};
       config.frames = static_cast<int>(*frames);
     }
-    EstimatorSettings settings = settings_from(
-        args, config.estimator_config.empty() ? EstimatorSettings{}
-                                              : load_estimator_settings(config.estimator_config));
+    EstimatorSettings settings = settings_from(args, config.paper_preset_config);
     // The occluder module's line of sight starts at the experiment's camera, unless the settings
     // place one themselves.
     if (!settings.opf.occluder.camera_position)

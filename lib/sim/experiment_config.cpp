@@ -125,12 +125,17 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
       "a fraction in [0, 1]");
   measurement.get_positive("min_area_pixels", config.measurement.min_area_pixels);
 
-  std::string estimator_config;
-  yaml.get("estimator_config", estimator_config);
-  if (!estimator_config.empty()) {
-    config.estimator_config = std::filesystem::path(source).parent_path() / estimator_config;
-    if (!std::filesystem::exists(config.estimator_config))
-      yaml.fail("estimator_config", "no file " + config.estimator_config.string());
+  if (yaml.has_key("estimator_config"))
+    yaml.fail("estimator_config",
+              "an experiment runs the default preset's one set of settings: pass your own to "
+              "the command (--config FILE.yaml), or name the paper preset's settings for this "
+              "experiment as paper_preset_config");
+  std::string paper_preset_config;
+  yaml.get("paper_preset_config", paper_preset_config);
+  if (!paper_preset_config.empty()) {
+    config.paper_preset_config = std::filesystem::path(source).parent_path() / paper_preset_config;
+    if (!std::filesystem::exists(config.paper_preset_config))
+      yaml.fail("paper_preset_config", "no file " + config.paper_preset_config.string());
   }
 
   for (YamlReader* b : yaml.sequence("bodies")) config.bodies.push_back(body(*b));

@@ -58,6 +58,35 @@ TEST_F(OpfProgram, SummaryJsonRecordsTheVersionCommandAndEverySetting) {
   EXPECT_TRUE(summary["experiments"]["general_op"]["pf"].IsMap());
 }
 
+// The baseball throw runs the default preset as every experiment does; under the paper preset its
+// own settings (the order-2 fit, a wider random walk) come on the preset, and --config on both.
+TEST_F(OpfProgram, AnExperimentsOwnSettingsApplyUnderThePaperPresetOnly) {
+  const auto settings_of = [&](const std::string& options) {
+    const std::filesystem::path out = dir_ / "baseball";
+    EXPECT_EQ(
+        run("run " + kSource + "/experiments/baseball.yaml --frames 3 --seeds 1 " +
+            "--estimators pf --particles 50 --no-figures --out " + out.string() + " " + options),
+        0)
+        << err();
+    return YAML::LoadFile((out / "summary.json").string())["provenance"]["settings"]["baseball"];
+  };
+  YAML::Node settings = settings_of("");
+  EXPECT_EQ(settings["opf"]["trajectory"]["translation_order"].as<int>(), 1);
+  EXPECT_EQ(settings["pf"]["process_noise"]["translation"].as<double>(), 0.05);
+  EXPECT_EQ(settings["opf"]["dynamics"]["predictor"].as<std::string>(), "bank");
+
+  settings = settings_of("--preset paper");
+  EXPECT_EQ(settings["opf"]["trajectory"]["translation_order"].as<int>(), 2);
+  EXPECT_EQ(settings["pf"]["process_noise"]["translation"].as<double>(), 0.2);
+  EXPECT_EQ(settings["opf"]["dynamics"]["predictor"].as<std::string>(), "paper");
+  EXPECT_EQ(settings["pf"]["reset_gate"].as<double>(), 0.0);  // the preset's own, kept
+
+  std::ofstream(dir_ / "third_order.yaml") << "opf:\n  trajectory:\n    translation_order: 3\n";
+  settings = settings_of("--preset paper --config " + (dir_ / "third_order.yaml").string());
+  EXPECT_EQ(settings["opf"]["trajectory"]["translation_order"].as<int>(), 3);
+  EXPECT_EQ(settings["pf"]["process_noise"]["translation"].as<double>(), 0.2);
+}
+
 TEST_F(OpfProgram, EvaluateWritesItsTablesAsCsvOrJson) {
   const std::string common = "evaluate --seeds 2 --particles 200 --estimators cvkf,pf --out ";
   ASSERT_EQ(run(common + (dir_ / "table.csv").string()), 0) << err();

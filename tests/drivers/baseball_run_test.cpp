@@ -1,7 +1,6 @@
 #include "drivers/experiment_run.h"
 
 #include "drivers/observe_experiment.h"
-#include "opf/io/estimator_settings_yaml.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +8,8 @@ namespace opf::experiments {
 namespace {
 
 // The baseball throw with motion capture at 100 Hz, disabled from 0.3 to 0.8 s; 1000 + 1000
-// particles, two seeds, with the experiment's own estimator settings (order-2 fit).
+// particles, two seeds, with the defaults (as `opf run` runs it): the dynamics module's ballistic
+// members find the parabola.
 TEST(BaseballThrow, TheOpfFollowsTheParabolaThroughTheDropout) {
   const sim::ExperimentConfig config =
       sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/baseball.yaml");
@@ -23,17 +23,16 @@ TEST(BaseballThrow, TheOpfFollowsTheParabolaThroughTheDropout) {
   // The truth is the parabola: z(0.5) = 1 + 3 * 0.5 - 9.81 / 2 * 0.25.
   EXPECT_NEAR(observation.truth[50].poses[0].position.z(), 1.27375, 1e-9);
 
-  EstimatorSettings settings =
-      (config.estimator_config.empty() ? EstimatorSettings{}
-                                       : load_estimator_settings(config.estimator_config));
+  EstimatorSettings settings;
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
   const ExperimentResults r =
       run_open_loop(config, observation, {"opf", "pf", "cvkf"}, settings, 2, 5);
   for (std::size_t s = 0; s < 2; ++s) {
-    // Over the 50 hidden frames: the order-2 fit of 30 samples with 1 mm noise extrapolates to
-    // within ~1 cm (the ObjectPermanenceFilter ballistic test bounds it by 2 cm); standing still
-    // misses by up to 1.2 m; a constant velocity misses the 1.2 m drop g t^2 / 2 by half.
-    EXPECT_LT(r.runs.at("opf")[s].translation_unobserved, 0.02);
+    // Over the 50 hidden frames: the bank's ballistic members, fed 30 frames with 1 mm noise,
+    // extrapolate to within ~1 cm (measured 8.0 and 10.7 mm; the paper's OPF errs 11.4 mm on
+    // general_op); standing still misses by up to 1.2 m; a constant velocity misses the 1.2 m
+    // drop g t^2 / 2 by half.
+    EXPECT_LT(r.runs.at("opf")[s].translation_unobserved, 0.015);
     EXPECT_GT(r.runs.at("pf")[s].translation_unobserved, 0.4);
     EXPECT_GT(r.runs.at("cvkf")[s].translation_unobserved, 0.3);
   }

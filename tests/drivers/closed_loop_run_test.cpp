@@ -1,5 +1,4 @@
 #include "drivers/closed_loop_run.h"
-#include "opf/io/estimator_settings_yaml.h"
 
 #include "opf/core/pose_conversion.h"
 
@@ -16,10 +15,7 @@ class SugarDropStart : public ::testing::Test {
     sim::ExperimentConfig config =
         sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
     config.frames = 90;
-    // The experiment's own estimator settings, as `opf run` applies them.
-    EstimatorSettings settings =
-        (config.estimator_config.empty() ? EstimatorSettings{}
-                                         : load_estimator_settings(config.estimator_config));
+    EstimatorSettings settings;  // the defaults, as `opf run` runs every experiment
     settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
     results_ = new ExperimentResults(run_closed_loop(config, {"opf"}, settings, 1, 3));
   }
@@ -61,9 +57,7 @@ TEST_F(SugarDropStart, TheSameSeedGivesTheSameRun) {
   sim::ExperimentConfig config =
       sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
   config.frames = 90;
-  EstimatorSettings settings =
-      (config.estimator_config.empty() ? EstimatorSettings{}
-                                       : load_estimator_settings(config.estimator_config));
+  EstimatorSettings settings;
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
   const ExperimentResults again = run_closed_loop(config, {"opf"}, settings, 1, 3);
   ASSERT_EQ(again.records.size(), results_->records.size());

@@ -1,7 +1,6 @@
 #include "drivers/experiment_run.h"
 
 #include "drivers/observe_experiment.h"
-#include "opf/io/estimator_settings_yaml.h"
 
 #include <gtest/gtest.h>
 
@@ -17,9 +16,7 @@ class GeneralOpStepOne : public ::testing::Test {
         sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml"));
     config_->frames = 160;
     observation_ = new Observation(observe_experiment(*config_));
-    settings_ = new EstimatorSettings((config_->estimator_config.empty()
-                                           ? EstimatorSettings{}
-                                           : load_estimator_settings(config_->estimator_config)));
+    settings_ = new EstimatorSettings();  // the defaults, as `opf run` runs every experiment
     settings_->pf.translation_particles = settings_->pf.rotation_particles = 1000;
   }
   static void TearDownTestSuite() {

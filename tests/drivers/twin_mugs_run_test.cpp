@@ -2,7 +2,6 @@
 
 #include "drivers/observe_experiment.h"
 #include "drivers/results_files.h"
-#include "opf/io/estimator_settings_yaml.h"
 
 #include "opf/core/pose_conversion.h"
 
@@ -29,9 +28,7 @@ class TwinMugs : public ::testing::Test {
     return run_open_loop(config_, observation_, {"opf"}, settings, 3, 5);
   }
   static EstimatorSettings settings() {
-    EstimatorSettings s =
-        (config_.estimator_config.empty() ? EstimatorSettings{}
-                                          : load_estimator_settings(config_.estimator_config));
+    EstimatorSettings s;  // the defaults, as `opf run` runs every experiment
     s.pf.translation_particles = s.pf.rotation_particles = 1000;
     s.opf.occluder.camera_position = config_.camera.position;  // as `opf run` passes it
     return s;

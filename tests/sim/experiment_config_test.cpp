@@ -64,6 +64,8 @@ TEST(ExperimentConfig, TheBundledBaseballUsesMotionCaptureWithADropout) {
   EXPECT_EQ(c.dropouts[0].to - c.dropouts[0].from, 0.5);  // paper: capture disabled for 0.5 s
   ASSERT_TRUE(c.bodies[0].flight.has_value());
   EXPECT_EQ(c.rate, 100.0);
+  // Its own settings (the order-2 fit) under the paper preset only.
+  EXPECT_EQ(c.paper_preset_config.filename(), "baseball_paper.yaml");
 }
 
 TEST(ExperimentConfig, EveryBundledExperimentLoads) {
@@ -120,6 +122,23 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
   e = error_of(bad);
   EXPECT_EQ(e.field(), "camera.fov");
   EXPECT_NE(std::string(e.what()).find("vertical_fov_deg"), std::string::npos) << e.what();
+
+  bad = kMinimal + "paper_preset_config: nowhere.yaml\n";
+  e = error_of(bad);
+  EXPECT_EQ(e.field(), "paper_preset_config");
+  EXPECT_EQ(e.line(), 10u);
+  EXPECT_NE(std::string(e.what()).find("no file nowhere.yaml"), std::string::npos) << e.what();
+}
+
+// The default preset is one set of settings for every experiment: a file that would change it
+// for itself is refused, with where its settings can go instead.
+TEST(ExperimentConfig, AnExperimentCannotChangeTheDefaultSettings) {
+  const InputError e = error_of(kMinimal + "estimator_config: configs/estimators.yaml\n");
+  EXPECT_EQ(e.field(), "estimator_config");
+  EXPECT_EQ(e.line(), 10u);
+  const std::string message = e.what();
+  EXPECT_NE(message.find("--config FILE.yaml"), std::string::npos) << message;
+  EXPECT_NE(message.find("paper_preset_config"), std::string::npos) << message;
 }
 
 }  // namespace
