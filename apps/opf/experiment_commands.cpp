@@ -9,7 +9,6 @@
 #include "drivers/results_files.h"
 #include "estimator_arguments.h"
 #include "opf/estimators/registry.h"
-#include "opf/io/estimator_settings_yaml.h"
 #include "provenance.h"
 
 #include <unistd.h>
