@@ -29,9 +29,8 @@ TEST(BaseballThrow, TheOpfFollowsTheParabolaThroughTheDropout) {
       run_open_loop(config, observation, {"opf", "pf", "cvkf"}, settings, 2, 5);
   for (std::size_t s = 0; s < 2; ++s) {
     // Over the 50 hidden frames: the bank's ballistic members, fed 30 frames with 1 mm noise,
-    // extrapolate to within ~1 cm (measured 8.0 and 10.7 mm; the paper's OPF errs 11.4 mm on
-    // general_op); standing still misses by up to 1.2 m; a constant velocity misses the 1.2 m
-    // drop g t^2 / 2 by half.
+    // extrapolate to within ~1 cm (measured 8.0 and 10.7 mm); standing still misses by up to
+    // 1.2 m; a constant velocity misses the 1.2 m drop g t^2 / 2 by half.
     EXPECT_LT(r.runs.at("opf")[s].translation_unobserved, 0.015);
     EXPECT_GT(r.runs.at("pf")[s].translation_unobserved, 0.4);
     EXPECT_GT(r.runs.at("cvkf")[s].translation_unobserved, 0.3);
