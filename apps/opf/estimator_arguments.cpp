@@ -31,17 +31,21 @@ std::vector<OptionSpec> estimator_option_specs() {
   };
 }
 
+EstimatorSettings preset_settings(const std::string& preset,
+                                  const std::filesystem::path& paper_preset_config) {
+  if (preset == "default") return {};
+  if (preset != "paper")
+    throw UsageError{"option '--preset': expected default or paper, got \"" + preset + "\""};
+  EstimatorSettings settings = parse_estimator_settings(kPaperPresetYaml, "preset paper");
+  if (!paper_preset_config.empty())
+    settings = load_estimator_settings(paper_preset_config, settings);
+  return settings;
+}
+
 EstimatorSettings settings_from(const Arguments& args,
                                 const std::filesystem::path& paper_preset_config) {
-  EstimatorSettings settings;
-  if (const auto preset = args.get("preset")) {
-    if (*preset == "paper") {
-      settings = parse_estimator_settings(kPaperPresetYaml, "preset paper", settings);
-      if (!paper_preset_config.empty())
-        settings = load_estimator_settings(paper_preset_config, settings);
-    } else if (*preset != "default")
-      throw UsageError{"option '--preset': expected default or paper, got \"" + *preset + "\""};
-  }
+  EstimatorSettings settings =
+      preset_settings(args.get("preset").value_or("default"), paper_preset_config);
   if (const auto path = args.get("config")) settings = load_estimator_settings(*path, settings);
   if (const auto camera = args.get("camera")) {
     const std::vector<std::string> parts = split_list(*camera);

@@ -18,9 +18,14 @@ std::vector<OptionSpec> estimator_option_specs();
 /// a camera position is a usage error, not a silent top-down camera.
 void require_camera_for_line_of_sight(const EstimatorSettings& settings);
 
-/// The defaults, then --preset (`paper`: its settings, then `paper_preset_config` when given, an
-/// experiment's own under that preset), then the YAML file of --config, then --camera and
-/// --particles (both portions).
+/// The settings a preset starts from: `default`, the defaults; `paper`, its settings, then
+/// `paper_preset_config` when given (an experiment's own under that preset). UsageError for any
+/// other name.
+EstimatorSettings preset_settings(const std::string& preset,
+                                  const std::filesystem::path& paper_preset_config = {});
+
+/// preset_settings(--preset, paper_preset_config), then the YAML file of --config, then --camera
+/// and --particles (both portions).
 EstimatorSettings settings_from(const Arguments& args,
                                 const std::filesystem::path& paper_preset_config = {});
 

@@ -1,13 +1,14 @@
 #include "sweep_command.h"
 
 #include "arguments.h"
-#include "cli/presets.h"
 #include "command_help.h"
 #include "drivers/sweep_executor.h"
 #include "drivers/sweep_plan.h"
 #include "drivers/sweep_table.h"
+#include "estimator_arguments.h"
 #include "opf/io/atomic_file.h"
 #include "opf/io/estimator_settings_yaml.h"
+#include "opf/sim/experiment_config.h"
 #include "provenance.h"
 
 #include <unistd.h>
@@ -45,6 +46,23 @@ constexpr const char* kSummary =
     "Exits 1 when a run failed (its log is named). --plan prints the runs as JSON\n"
     "for workflow engines (workflow/Snakefile runs the same sweep on Snakemake).";
 
+// Per experiment, what `opf run --preset P --config <the run's settings.yaml>` starts from before
+// the run's variant and grid point: the preset (under `paper`, then the experiment's
+// paper_preset_config), the sweep's config, and the experiment's camera where those place none.
+std::vector<std::pair<std::string, EstimatorSettings>> starting_settings(
+    const experiments::SweepSpec& spec, const std::string& preset) {
+  std::vector<std::pair<std::string, EstimatorSettings>> settings;
+  for (const std::filesystem::path& file : spec.experiments) {
+    const sim::ExperimentConfig config = sim::load_experiment(file);
+    EstimatorSettings each = preset_settings(preset, config.paper_preset_config);
+    if (spec.config) each = load_estimator_settings(*spec.config, each);
+    if (!each.opf.occluder.camera_position)
+      each.opf.occluder.camera_position = config.camera.position;
+    settings.emplace_back(config.name, each);
+  }
+  return settings;
+}
+
 // The runs execute this very program, even when its file is rebuilt or deleted during the sweep
 // (the kernel keeps the running binary's inode for /proc/self/exe).
 const std::filesystem::path kThisProgram = "/proc/self/exe";
@@ -65,8 +83,7 @@ int sweep_command(const std::vector<std::string>& raw) {
   }
   if (positional.size() != 1) throw UsageError{"expected one sweep file"};
   const std::string preset = args.get("preset").value_or("default");
-  if (preset != "default" && preset != "paper")
-    throw UsageError{"option '--preset': expected default or paper, got \"" + preset + "\""};
+  preset_settings(preset);  // an unknown preset fails before anything runs
   const experiments::SweepSpec spec = experiments::load_sweep(positional[0]);
   // A preset's runs go to their own directory: resuming must not mix them with the defaults'.
   const std::string default_name = preset == "default" ? spec.name : spec.name + "-" + preset;
@@ -102,12 +119,10 @@ int sweep_command(const std::vector<std::string>& raw) {
   }
   const std::filesystem::path table = out / (spec.name + ".csv");
   const std::size_t ok = experiments::write_sweep_table(spec, runs, out, table);
-  // Beside the table, how it was made: each run's own summary.json carries its full settings
-  // (the preset's, the experiment's, the run's settings.yaml); these are the preset's.
-  EstimatorSettings base;
-  if (preset == "paper") base = parse_estimator_settings(kPaperPresetYaml, "preset paper");
+  // Beside the table, how it was made: the settings each experiment's runs start from, before
+  // their variant and grid point (each run's own summary.json carries its full settings).
   write_file_atomically(out / (spec.name + ".provenance.json"), [&](std::ostream& os) {
-    os << provenance_json(command_line("sweep", raw), {{"", base}}) << "\n";
+    os << provenance_json(command_line("sweep", raw), starting_settings(spec, preset)) << "\n";
   });
   experiments::print_sweep_summary(std::cout, table);
   std::cout << "\n"

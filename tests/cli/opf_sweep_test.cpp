@@ -4,6 +4,7 @@
 #include "cli/opf_program.h"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -174,6 +175,37 @@ TEST_F(OpfSweep, APresetIsPassedToEveryRun) {
   EXPECT_NE(out().find("results/sweeps/tiny-paper"), std::string::npos) << out();
   EXPECT_EQ(run("sweep " + sweep.string() + " --list --preset literal"), 2);
   EXPECT_NE(err().find("expected default or paper, got \"literal\""), std::string::npos) << err();
+}
+
+// The sweep's provenance gives, per experiment, the settings its runs start from: the preset,
+// under `paper` the experiment's own paper settings (the throw's order-2 fit), the sweep's config.
+TEST_F(OpfSweep, ItsProvenanceGivesEachExperimentsStartingSettings) {
+  std::ofstream(dir_ / "base.yaml") << "opf:\n  uncertainty:\n    kappa: 1.2\n";
+  const fs::path sweep = write_sweep(
+      "name: tiny\nexperiments: [general_op, baseball]\nestimators: [opf]\n"
+      "config: " +
+      (dir_ / "base.yaml").string() + "\n");
+  const auto settings_under = [&](const std::string& preset) {
+    const fs::path out = dir_ / preset;
+    fs::create_directories(out);
+    EXPECT_EQ(run("sweep " + sweep.string() + " --table-only --preset " + preset + " --out " +
+                  out.string()),
+              1)  // no run is done yet
+        << err();
+    return YAML::LoadFile((out / "tiny.provenance.json").string())["settings"];
+  };
+  const YAML::Node paper = settings_under("paper");
+  EXPECT_EQ(paper["baseball"]["opf"]["trajectory"]["translation_order"].as<int>(), 2);
+  EXPECT_EQ(paper["general_op"]["opf"]["trajectory"]["translation_order"].as<int>(), 1);
+  EXPECT_EQ(paper["general_op"]["opf"]["dynamics"]["predictor"].as<std::string>(), "paper");
+  const YAML::Node defaults = settings_under("default");
+  for (const char* experiment : {"general_op", "baseball"}) {
+    const YAML::Node opf = defaults[experiment]["opf"];
+    EXPECT_EQ(opf["trajectory"]["translation_order"].as<int>(), 1) << experiment;
+    EXPECT_EQ(opf["dynamics"]["predictor"].as<std::string>(), "bank") << experiment;
+    EXPECT_DOUBLE_EQ(opf["uncertainty"]["kappa"].as<double>(), 1.2) << experiment;
+    EXPECT_TRUE(opf["occluder"]["camera_position"].IsSequence()) << experiment;
+  }
 }
 
 TEST_F(OpfSweep, RejectsABadSweepFileBeforeRunningAnything) {
