@@ -109,6 +109,9 @@ int sweep_command(const std::vector<std::string>& raw) {
   }
   experiments::SweepExecution execution;
   if (args.has("table-only")) {
+    if (!std::filesystem::is_directory(out))
+      throw UsageError{"option '--table-only': no sweep has run in " + out.string() +
+                       " (no such directory): run the sweep first, or name its --out"};
     for (const auto& run : runs)
       execution.skipped += std::filesystem::exists(out / run.result_file());
   } else {

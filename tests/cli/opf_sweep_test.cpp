@@ -194,6 +194,10 @@ TEST_F(OpfSweep, ItsProvenanceGivesEachExperimentsStartingSettings) {
         << err();
     return YAML::LoadFile((out / "tiny.provenance.json").string())["settings"];
   };
+  // A table of runs from a directory where none has run is refused, naming it.
+  EXPECT_EQ(run("sweep " + sweep.string() + " --table-only --out " + (dir_ / "none").string()), 2);
+  EXPECT_NE(err().find("no sweep has run in " + (dir_ / "none").string()), std::string::npos)
+      << err();
   const YAML::Node paper = settings_under("paper");
   EXPECT_EQ(paper["baseball"]["opf"]["trajectory"]["translation_order"].as<int>(), 2);
   EXPECT_EQ(paper["general_op"]["opf"]["trajectory"]["translation_order"].as<int>(), 1);
