@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace opf::experiments {
@@ -19,6 +20,89 @@ namespace {
 const sim::Body& body_named(const sim::ScriptedScene& scene, const std::string& name) {
   return scene.bodies()[scene.index_of(name)].body;
 }
+
+// One run of the loop: the robot carries the payload towards where the target is estimated, by
+// the cautious controller, and releases it over the target once the uncertainty is low; the
+// payload then falls with the robot's velocity at release until it reaches the table.
+class Episode {
+ public:
+  Episode(const sim::ClosedLoopSettings& loop, sim::ScriptedScene& scene)
+      : loop_(loop),
+        scene_(scene),
+        robot_start_(scene.pose_of(loop.robot, 0.0)),
+        payload_offset_(scene.pose_of(loop.payload, 0.0).position - robot_start_.position),
+        target_(body_named(scene, loop.target)),
+        payload_(body_named(scene, loop.payload)),
+        robot_(robot_start_.position) {}
+
+  /// Places the robot, and the payload it holds or that falls, at t.
+  void move_bodies(double t) {
+    scene_.drive(loop_.robot, {robot_, robot_start_.orientation});
+    if (!drop_.released) {
+      scene_.drive(loop_.payload, {robot_ + payload_offset_, Eigen::Quaterniond::Identity()});
+      return;
+    }
+    const double fall = t - drop_.release_t;
+    Eigen::Vector3d p = release_position_ + robot_velocity_ * fall;
+    p.z() = std::max(payload_.size.z() / 2.0,
+                     release_position_.z() - 0.5 * loop_.gravity * fall * fall);
+    scene_.drive(loop_.payload, {p, Eigen::Quaterniond::Identity()});
+  }
+
+  /// The controller's command from the target's estimate and its uncertainty (never the truth),
+  /// and the release when the robot is over it and sure enough. `target` (the truth) only scores
+  /// where the payload lands.
+  void act_on(const Estimate& estimate, const sim::BodyPose& target, double t, double dt) {
+    const Eigen::Vector3d estimated = translation_of(estimate.pose.mean);
+    if (!nominal_trace_) nominal_trace_ = estimate.observation_trace;
+    const Eigen::Vector3d velocity = previous_estimate_
+                                         ? Eigen::Vector3d((estimated - *previous_estimate_) / dt)
+                                         : Eigen::Vector3d::Zero();
+    previous_estimate_ = estimated;
+    if (!tracking_ && estimated.y() < loop_.start_below_y) tracking_ = true;
+    if (!tracking_) return;
+    const Eigen::Vector3d goal = estimated + Eigen::Vector3d(0, 0, loop_.hover_height);
+    robot_velocity_ = cautious_velocity_command(robot_, goal, velocity, estimate.observation_trace,
+                                                loop_.controller);
+    if (!drop_.released && (robot_ - goal).head<2>().norm() < loop_.release_distance &&
+        estimate.observation_trace <= loop_.release_trace_ratio * *nominal_trace_)
+      release(target, t);
+  }
+
+  /// The robot moves by its last command.
+  void advance(double dt) { robot_ += robot_velocity_ * dt; }
+
+  const DropOutcome& drop() const { return drop_; }
+
+ private:
+  void release(const sim::BodyPose& target, double t) {
+    drop_.released = true;
+    drop_.release_t = t;
+    release_position_ = robot_ + payload_offset_;
+    // Where it comes down: the rim's height, reached after the free fall.
+    const double rim = target.position.z() + target_.size.z() / 2.0;
+    const double height = std::max(0.0, release_position_.z() - rim);
+    const double fall = std::sqrt(2.0 * height / loop_.gravity);
+    const Eigen::Vector3d landing = release_position_ + robot_velocity_ * fall;
+    const Eigen::Vector3d mug = scene_.pose_of(loop_.target, t + fall).position;
+    drop_.miss_distance = (landing - mug).head<2>().norm();
+    drop_.landed = drop_.miss_distance < target_.size.x() - payload_.size.x() / 2.0;
+  }
+
+  const sim::ClosedLoopSettings& loop_;
+  sim::ScriptedScene& scene_;
+  const sim::BodyPose robot_start_;
+  const Eigen::Vector3d payload_offset_;
+  const sim::Body& target_;
+  const sim::Body& payload_;
+  Eigen::Vector3d robot_;
+  Eigen::Vector3d robot_velocity_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d release_position_ = Eigen::Vector3d::Zero();
+  DropOutcome drop_;
+  bool tracking_ = false;
+  std::optional<Eigen::Vector3d> previous_estimate_;
+  std::optional<double> nominal_trace_;
+};
 
 }  // namespace
 
@@ -41,85 +125,32 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
     for (const std::string& name : estimators) {
       report_progress(progress, config, name, s - first_seed, seeds);
       sim::ScriptedScene scene(config.bodies);
-      const sim::BodyPose robot_start = scene.pose_of(loop.robot, 0.0);
-      const Eigen::Vector3d payload_offset =
-          scene.pose_of(loop.payload, 0.0).position - robot_start.position;
-      const sim::Body& target = body_named(scene, loop.target);
-      const sim::Body& payload = body_named(scene, loop.payload);
-      Eigen::Vector3d robot = robot_start.position;
-      Eigen::Vector3d robot_velocity = Eigen::Vector3d::Zero();
-
+      Episode episode(loop, scene);
       Random noise = measurement_noise(seed);
       Tracker tracker(make_estimator_factory(name, settings), seed, threads);
       ErrorAccumulator errors;
-      DropOutcome drop;
-      Eigen::Vector3d release_position = Eigen::Vector3d::Zero();
-      bool tracking = false;
-      std::optional<Eigen::Vector3d> previous_estimate;
-      std::optional<double> nominal_trace;
-
       for (int k = 0; k < config.frames; ++k) {
         const double t = k * dt;
-        scene.drive(loop.robot, {robot, robot_start.orientation});
-        if (!drop.released) {
-          scene.drive(loop.payload, {robot + payload_offset, Eigen::Quaterniond::Identity()});
-        } else {
-          // Falling: the payload keeps the robot's velocity at release, under gravity, until it
-          // reaches the table.
-          const double fall = t - drop.release_t;
-          Eigen::Vector3d p = release_position + robot_velocity * fall;
-          p.z() = std::max(payload.size.z() / 2.0,
-                           release_position.z() - 0.5 * loop.gravity * fall * fall);
-          scene.drive(loop.payload, {p, Eigen::Quaterniond::Identity()});
-        }
+        episode.move_bodies(t);
         const sim::SceneSnapshot truth = scene.at(t);
         const Frame frame =
             sim::noisy_measurement(sensor.observe(truth), truth, config.measurement, noise);
-
         for (const Estimate& estimate : tracker.step(frame)) {
-          const std::size_t index = scene.index_of(estimate.object);
-          const sim::BodyPose& pose = truth.poses[index];
+          const sim::BodyPose& pose = truth.poses[scene.index_of(estimate.object)];
           if (config.is_of_interest(estimate.object))
             errors.add(estimate, make_pose(pose.position, pose.orientation));
           results.records.push_back(
               {k, name, s, pose, estimate, frame.find(estimate.object) != nullptr});
-          if (estimate.object != loop.target) continue;
-
-          // The controller acts on the estimate and its uncertainty, never on the truth.
-          const Eigen::Vector3d estimated = translation_of(estimate.pose.mean);
-          if (!nominal_trace) nominal_trace = estimate.observation_trace;
-          const Eigen::Vector3d velocity =
-              previous_estimate ? Eigen::Vector3d((estimated - *previous_estimate) / dt)
-                                : Eigen::Vector3d::Zero();
-          previous_estimate = estimated;
-          if (!tracking && estimated.y() < loop.start_below_y) tracking = true;
-          if (!tracking) continue;
-          const Eigen::Vector3d goal = estimated + Eigen::Vector3d(0, 0, loop.hover_height);
-          robot_velocity = cautious_velocity_command(robot, goal, velocity,
-                                                     estimate.observation_trace, loop.controller);
-          if (!drop.released && (robot - goal).head<2>().norm() < loop.release_distance &&
-              estimate.observation_trace <= loop.release_trace_ratio * *nominal_trace) {
-            drop.released = true;
-            drop.release_t = t;
-            release_position = robot + payload_offset;
-            // Where it comes down: the rim's height, reached after the free fall.
-            const double rim = pose.position.z() + target.size.z() / 2.0;
-            const double height = std::max(0.0, release_position.z() - rim);
-            const double fall = std::sqrt(2.0 * height / loop.gravity);
-            const Eigen::Vector3d landing = release_position + robot_velocity * fall;
-            const Eigen::Vector3d mug = scene.pose_of(loop.target, t + fall).position;
-            drop.miss_distance = (landing - mug).head<2>().norm();
-            drop.landed = drop.miss_distance < target.size.x() - payload.size.x() / 2.0;
-          }
+          if (estimate.object == loop.target) episode.act_on(estimate, pose, t, dt);
         }
         // Further hypotheses are recorded, not scored (the main hypothesis drives the robot).
         for (const Estimate& extra : tracker.hypotheses())
           results.records.push_back(
               {k, name, s, truth.poses[scene.index_of(extra.object)], extra, false});
-        robot += robot_velocity * dt;
+        episode.advance(dt);
       }
       results.runs[name].push_back(errors.result());
-      results.drops[name].push_back(drop);
+      results.drops[name].push_back(episode.drop());
     }
   }
   return results;
