@@ -50,9 +50,9 @@ class Episode {
   }
 
   /// The controller's command from the target's estimate and its uncertainty (never the truth),
-  /// and the release when the robot is over it and sure enough. `target` (the truth) only scores
-  /// where the payload lands.
-  void act_on(const Estimate& estimate, const sim::BodyPose& target, double t, double dt) {
+  /// and the release when the robot is over it and sure enough. `target_truth` only scores where
+  /// the payload lands.
+  void act_on(const Estimate& estimate, const sim::BodyPose& target_truth, double t, double dt) {
     const Eigen::Vector3d estimated = translation_of(estimate.pose.mean);
     if (!nominal_trace_) nominal_trace_ = estimate.observation_trace;
     const Eigen::Vector3d velocity = previous_estimate_
@@ -66,7 +66,7 @@ class Episode {
                                                 loop_.controller);
     if (!drop_.released && (robot_ - goal).head<2>().norm() < loop_.release_distance &&
         estimate.observation_trace <= loop_.release_trace_ratio * *nominal_trace_)
-      release(target, t);
+      release(target_truth, t);
   }
 
   /// The robot moves by its last command.
@@ -75,12 +75,12 @@ class Episode {
   const DropOutcome& drop() const { return drop_; }
 
  private:
-  void release(const sim::BodyPose& target, double t) {
+  void release(const sim::BodyPose& target_truth, double t) {
     drop_.released = true;
     drop_.release_t = t;
     release_position_ = robot_ + payload_offset_;
     // Where it comes down: the rim's height, reached after the free fall.
-    const double rim = target.position.z() + target_.size.z() / 2.0;
+    const double rim = target_truth.position.z() + target_.size.z() / 2.0;
     const double height = std::max(0.0, release_position_.z() - rim);
     const double fall = std::sqrt(2.0 * height / loop_.gravity);
     const Eigen::Vector3d landing = release_position_ + robot_velocity_ * fall;
