@@ -73,11 +73,8 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
                          " frames"};
       config.frames = static_cast<int>(*frames);
     }
-    EstimatorSettings settings = settings_from(args, config.paper_preset_config);
-    // The occluder module's line of sight starts at the experiment's camera, unless the settings
-    // place one themselves.
-    if (!settings.opf.occluder.camera_position)
-      settings.opf.occluder.camera_position = config.camera.position;
+    const EstimatorSettings settings =
+        with_experiment_camera(settings_from(args, config.paper_preset_config), config);
     effective.emplace_back(config.name, settings);
     if (config.closed_loop) {
       all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
@@ -124,6 +121,13 @@ constexpr const char* kReproduceSummary =
     "per-frame CSVs and summary.json.";
 
 }  // namespace
+
+EstimatorSettings with_experiment_camera(EstimatorSettings settings,
+                                         const sim::ExperimentConfig& config) {
+  if (!settings.opf.occluder.camera_position)
+    settings.opf.occluder.camera_position = config.camera.position;
+  return settings;
+}
 
 CommandHelp run_help() {
   return {"run EXPERIMENT.yaml", kRunSummary, specs(false)};

@@ -6,6 +6,7 @@
 #include "drivers/sweep_plan.h"
 #include "drivers/sweep_table.h"
 #include "estimator_arguments.h"
+#include "experiment_commands.h"
 #include "opf/io/atomic_file.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/sim/experiment_config.h"
@@ -56,9 +57,7 @@ std::vector<std::pair<std::string, EstimatorSettings>> starting_settings(
     const sim::ExperimentConfig config = sim::load_experiment(file);
     EstimatorSettings each = preset_settings(preset, config.paper_preset_config);
     if (spec.config) each = load_estimator_settings(*spec.config, each);
-    if (!each.opf.occluder.camera_position)
-      each.opf.occluder.camera_position = config.camera.position;
-    settings.emplace_back(config.name, each);
+    settings.emplace_back(config.name, with_experiment_camera(each, config));
   }
   return settings;
 }
