@@ -279,6 +279,13 @@ def main():
                         "and two EuRoC flights as the hands' paths, from 2, 6 and 12 s, any "
                         "scene already run left out (rows recording@start)")
     args = parser.parse_args()
+    if args.seeds < 1:
+        parser.error(f"--seeds: {args.seeds} is not a number of seeds >= 1")
+    if args.recordings is not None and not 1 <= args.recordings <= len(RECORDINGS):
+        parser.error(f"--recordings: {args.recordings} is not between 1 and {len(RECORDINGS)}, "
+                     "the recordings there are")
+    if not os.access(args.opf, os.X_OK):
+        parser.error(f"no opf program at {args.opf} (build it, or pass --opf)")
     if args.unseen and (args.window_start is not None or args.recordings is not None):
         parser.error("--unseen takes its own recordings and starts: not with --window-start or "
                      "--recordings")
@@ -354,9 +361,12 @@ def run_scene(args, experiment, text, target, carriers=None, out=None):
     with open(scene, "w") as f:
         f.write(text)
     run_dir = os.path.join(out, experiment)
-    subprocess.run([args.opf, "run", scene, "--estimators", ESTIMATORS, "--seeds",
-                    str(args.seeds), "--quiet", "--out", run_dir], check=True,
-                   stdout=subprocess.DEVNULL)
+    command = [args.opf, "run", scene, "--estimators", ESTIMATORS, "--seeds", str(args.seeds),
+               "--quiet", "--out", run_dir]
+    done = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if done.returncode != 0:
+        sys.exit(f"hand_scenes: {' '.join(command)} failed ({done.returncode}):\n"
+                 f"{done.stderr.strip() or '(it wrote no message)'}")
     return (hidden_errors(os.path.join(run_dir, "summary.json"), experiment),
             reveals(os.path.join(run_dir, f"{experiment}_frames.csv"), target, carriers))
 

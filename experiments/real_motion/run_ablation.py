@@ -51,6 +51,10 @@ def parse_arguments():
     args = parser.parse_args()
     if args.seeds is None:
         args.seeds = 1 if args.subset else 3
+    if args.seeds < 1 or args.jobs < 1:
+        parser.error("--seeds and --jobs must be at least 1")
+    if not os.access(args.opf, os.X_OK):
+        parser.error(f"no opf program at {args.opf} (build it, or pass --opf)")
     return args
 
 

@@ -47,13 +47,13 @@ class YamlOptionReader {
     std::vector<std::string> words;
     for (const Enum value : out) words.emplace_back(name_of(names, value));
     yaml().get(key, words);
+    // One expectation for an unknown name and a repeated one: the message shows the list.
+    const std::string expectation = "a list of distinct names, each " + name_list(names);
     std::vector<Enum> values;
     for (const std::string& word : words) {
       const auto value = parse_name(names, word);
-      yaml().require(key, value.has_value(),
-                     "a list of " + name_list(names) + ", got \"" + word + "\"");
-      yaml().require(key, std::find(values.begin(), values.end(), *value) == values.end(),
-                     "a list of distinct names, got \"" + word + "\" twice");
+      yaml().require(key, value && std::find(values.begin(), values.end(), *value) == values.end(),
+                     expectation);
       values.push_back(*value);
     }
     out = std::move(values);

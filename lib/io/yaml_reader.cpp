@@ -22,12 +22,20 @@ std::size_t line_of(const YAML::Node& node) {
   return mark.is_null() || mark.line < 0 ? 0 : static_cast<std::size_t>(mark.line) + 1;
 }
 
-/// How the value reads in a message: the scalar as written, or what kind of node it is.
+/// How the value reads in a message: the scalar as written, a short list of scalars as written
+/// (so that a message shows which entry is wrong), or what kind of node it is.
 std::string describe(const YAML::Node& node) {
   if (node.IsScalar()) return "\"" + node.Scalar() + "\"";
   if (node.IsMap()) return "a mapping";
-  if (node.IsSequence()) return "a sequence";
-  return "nothing";
+  if (!node.IsSequence()) return "nothing";
+  if (node.size() == 0) return "an empty list";
+  constexpr std::size_t kShown = 8;
+  const bool flat =
+      std::all_of(node.begin(), node.end(), [](const YAML::Node& item) { return item.IsScalar(); });
+  if (!flat || node.size() > kShown) return "a list of " + std::to_string(node.size()) + " entries";
+  std::string text = "[";
+  for (const YAML::Node& item : node) text += (text.size() > 1 ? ", " : "") + item.Scalar();
+  return text + "]";
 }
 
 std::string_view without_plus(std::string_view text) {
@@ -207,9 +215,7 @@ void YamlReader::get(std::string_view key, std::vector<std::string>& out) {
     return;
   }
   if (!entry->value.IsSequence() || entry->value.size() == 0)
-    fail(key,
-         "expected " + expectation + ", got " +
-             (entry->value.IsSequence() ? std::string("an empty list") : describe(entry->value)));
+    fail(key, "expected " + expectation + ", got " + describe(entry->value));
   std::vector<std::string> values;
   for (const YAML::Node& item : entry->value) {
     if (!item.IsScalar())

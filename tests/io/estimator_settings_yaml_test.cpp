@@ -227,11 +227,21 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   EXPECT_EQ(o.dynamics.memory, 0.5);
   EXPECT_EQ(o.dynamics.up, Eigen::Vector3d(0, 1, 0));
   EXPECT_EQ(error_of("opf:\n  dynamics:\n    memory: -1\n").field(), "opf.dynamics.memory");
-  EXPECT_EQ(error_of("opf:\n  dynamics:\n    models: [velocity, walk]\n").field(),
-            "opf.dynamics.models");
-  EXPECT_EQ(error_of("opf:\n  dynamics:\n    models: [velocity, velocity]\n").field(),
-            "opf.dynamics.models");
-  EXPECT_EQ(error_of("opf:\n  dynamics:\n    models: []\n").field(), "opf.dynamics.models");
+  // The message shows the list as written: which name is unknown or repeated.
+  const std::string names =
+      "expected a list of distinct names, each position, velocity, damped "
+      "or ballistic, got ";
+  const InputError unknown = error_of("opf:\n  dynamics:\n    models: [velocity, walk]\n");
+  EXPECT_EQ(unknown.field(), "opf.dynamics.models");
+  EXPECT_EQ(unknown.message(), names + "[velocity, walk]");
+  const InputError repeated = error_of("opf:\n  dynamics:\n    models: [velocity, velocity]\n");
+  EXPECT_EQ(repeated.field(), "opf.dynamics.models");
+  EXPECT_EQ(repeated.message(), names + "[velocity, velocity]");
+  const InputError empty = error_of("opf:\n  dynamics:\n    models: []\n");
+  EXPECT_EQ(empty.field(), "opf.dynamics.models");
+  EXPECT_EQ(empty.message(), "expected a list of names or values, got an empty list");
+  EXPECT_EQ(error_of("opf:\n  dynamics:\n    up: [0, 0, 0]\n").message(),
+            "expected a non-zero vector, got [0, 0, 0]");
 }
 
 TEST(EstimatorSettingsYaml, ParticleOptionsAreSharedNotPerEstimator) {

@@ -222,3 +222,32 @@ def test_unseen_takes_its_own_starts_and_recordings(tmp_path):
         assert run.returncode == 2
         assert ("--unseen takes its own recordings and starts: not with --window-start or "
                 "--recordings") in run.stderr
+
+
+def test_bad_arguments_are_refused_by_name(tmp_path):
+    script = str(ROOT / "experiments" / "real_motion" / "hand_scenes.py")
+    opf = str(ROOT / "build" / "bin" / "opf")
+    for extra, message in ((["--seeds", "0"], "--seeds: 0 is not a number of seeds >= 1"),
+                           (["--recordings", "0"], "--recordings: 0 is not between 1 and 4"),
+                           (["--recordings", "5"], "--recordings: 5 is not between 1 and 4"),
+                           (["--opf", str(tmp_path / "none")],
+                            f"no opf program at {tmp_path / 'none'}")):
+        run = subprocess.run([sys.executable, script, str(tmp_path / "out"), "--opf", opf,
+                              *extra], capture_output=True, text=True)
+        assert run.returncode == 2, extra
+        assert message in run.stderr, (extra, run.stderr)
+        assert not (tmp_path / "out").exists()
+
+
+def test_a_failing_run_stops_with_its_command_and_its_words(tmp_path):
+    failing = tmp_path / "opf"
+    failing.write_text("#!/bin/sh\necho 'opf run: error: the scene is bad' >&2\nexit 3\n")
+    failing.chmod(0o755)
+    script = str(ROOT / "experiments" / "real_motion" / "hand_scenes.py")
+    run = subprocess.run([sys.executable, script, str(tmp_path / "out"), "--opf", str(failing),
+                          "--recordings", "1", "--seeds", "1"], capture_output=True, text=True)
+    assert run.returncode == 1
+    assert f"hand_scenes: {failing} run {tmp_path / 'out' / 'tumvi_room1_carry.yaml'}" in run.stderr
+    assert "failed (3):\nopf run: error: the scene is bad" in run.stderr
+    assert "Traceback" not in run.stderr
+    assert not (tmp_path / "out" / "hand_scenes.md").exists()
