@@ -187,7 +187,7 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
 
   if (measurement) {
     return update(t, dt, *measurement,
-                  options_.stated_noise ? stated_extra_noise(ensemble, measurement) : 0.0,
+                  options_.detector_noise ? stated_extra_noise(ensemble, measurement) : 0.0,
                   ensemble);
   }
   if (!hidden_) {
@@ -220,7 +220,7 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
   keep_hypothesis_explaining(position);
   Hypothesis& h = hypotheses_[0];
   const EstimateMode hidden_by = h.motion ? h.motion->mode() : EstimateMode::kMeasured;
-  if (options_.adaptive_rotation_noise) adapt_rotation_noise(h);
+  if (options_.detector_noise) adapt_rotation_noise(h);
   // A partial view is off towards its visible part: the known part of that is taken off the
   // detection (partial_view.h); the rest, extra noise times the bias s shared by the stretch of
   // partial views, has its mean estimated by the banks and its spread counts as the detection's
@@ -330,7 +330,7 @@ std::unique_ptr<HiddenMotion> ObjectPermanenceFilter::bank_mixture(PoseParticleF
 
 VirtualMeasurementMotion::Settings ObjectPermanenceFilter::virtual_measurement_settings() const {
   return {options_.uncertainty, options_.modules.uncertainty, options_.carry_particles,
-          options_.stated_noise};
+          options_.detector_noise};
 }
 
 bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool beside_own_motion) {

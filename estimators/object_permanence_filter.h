@@ -76,7 +76,7 @@ class ObjectPermanenceFilter final : public Estimator {
   VirtualMeasurementMotion::Settings virtual_measurement_settings() const;
   /// The random walk, after a drift by the banks' velocity (one pass).
   void predict_with_bank_velocity(Hypothesis& hypothesis, double dt);
-  /// The rotation likelihood's spread from the detector's own jitter (adaptive_rotation_noise).
+  /// The rotation likelihood's spread from the detector's own jitter (detector_noise).
   void adapt_rotation_noise(Hypothesis& hypothesis);
   void remember(double t, const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
                 const Estimate& estimate, double extra_noise,

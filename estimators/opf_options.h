@@ -94,15 +94,16 @@ struct OpfOptions {
   /// motion model is the bank's, so a fast object is followed without lag. false: the paper's
   /// pure random walk.
   bool velocity_drift = true;
-  /// While the object is visible, its rotation's observation noise is the detector's own jitter
-  /// (permanence/detector_jitter.h) over the last 2 s of measurements, between a tenth of the
-  /// configured observation_noise.rotation and that value: a likelihood wider than the detector's
-  /// noise trails every turn by a share of it. false: the configured value, always (the paper's).
-  bool adaptive_rotation_noise = true;
-  /// A detection's stated extra noise (Detection::extra_noise: a partial view's, the log's
-  /// `extra_noise` column) adds in variance to the translation's observation noise, in the
-  /// likelihood and the banks (observation_sigma). false: the configured Q alone (paper Eq. 5).
-  bool stated_noise = true;
+  /// The observation noise is the detector's own, as it states and shows it (false: Q of paper
+  /// Eq. 5 as configured, always: the paper's):
+  /// - a detection's stated extra noise (Detection::extra_noise: a partial view's, the log's
+  ///   `extra_noise` column) adds in variance to the translation's, in the likelihood and the
+  ///   banks (observation_sigma), and a carrier's partial view is read as one;
+  /// - while the object is visible, its rotation's is the detector's own jitter
+  ///   (permanence/detector_jitter.h) over the last 2 s of measurements, between a tenth of the
+  ///   configured observation_noise.rotation and that value: a likelihood wider than the
+  ///   detector's noise trails every turn by a share of it.
+  bool detector_noise = true;
   /// At the first measurement after a gap, where the translation likelihood would leave fewer
   /// than this share of the particles effective (the object turns up in the far tail of the
   /// cloud the gap left), the translation takes the Gaussian posterior of the cloud's moments and
@@ -130,8 +131,7 @@ void describe_options(Visitor& v, OpfOptions& o) {
   v.integer("history_length", o.history_length, at_least(2, "an integer H >= 2"));
   v.flag("carry_particles", o.carry_particles);
   v.flag("velocity_drift", o.velocity_drift);
-  v.flag("adaptive_rotation_noise", o.adaptive_rotation_noise);
-  v.flag("stated_noise", o.stated_noise);
+  v.flag("detector_noise", o.detector_noise);
   v.number("reacquisition_gaussian_share", o.reacquisition_gaussian_share,
            between(0.0, 1.0, "a share from 0 to 1"));
   v.section("dynamics", [&] {

@@ -26,7 +26,7 @@ TEST_F(OpfProgram, ConfigDumpPrintsTheEffectiveSettingsAsASettingsFile) {
   EXPECT_EQ(dump["pf"]["translation_particles"].as<int>(), 321);
   EXPECT_EQ(dump["opf"]["dynamics"]["predictor"].as<std::string>(), "paper");
   EXPECT_FALSE(dump["opf"]["velocity_drift"].as<bool>());
-  EXPECT_FALSE(dump["opf"]["adaptive_rotation_noise"].as<bool>());
+  EXPECT_FALSE(dump["opf"]["detector_noise"].as<bool>());
   // Taken back with --config, the same dump.
   const std::string first = out();
   std::ofstream(dir_ / "dumped.yaml") << first;

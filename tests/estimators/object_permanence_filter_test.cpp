@@ -698,7 +698,7 @@ TEST(ObjectPermanenceFilter, VelocityDriftFollowsAFastTurnWithoutLag) {
   scene.objects.push_back({"cup", [](double t) { return Eigen::Vector3d(0.4 + 0.1 * t, 0.0, 0.0); },
                            [=](double t) { return so3::exp(2.7 * t * axis); }});
   OpfOptions options;
-  options.adaptive_rotation_noise = false;  // the drift alone
+  options.detector_noise = false;  // the drift alone
   const SceneRun drifted = run(scene, opf_factory(options));
   options.velocity_drift = false;
   const SceneRun walked = run(scene, opf_factory(options));
@@ -741,7 +741,7 @@ TEST(ObjectPermanenceFilter, APreciseDetectorIsFollowedAsPreciselyAsItMeasures) 
     return scene;
   };
   OpfOptions adapted, configured;
-  configured.adaptive_rotation_noise = false;
+  configured.detector_noise = false;
   const Scene tilted = scene_turning([](double t) { return std::sin(4.0 * t); });
   EXPECT_LT(mean_rotation_error(tilted, adapted), 0.010);
   EXPECT_GT(mean_rotation_error(tilted, configured), 0.03);
@@ -1217,8 +1217,8 @@ TEST(ObjectPermanenceFilter, AllModulesOffIsTheStandardPf) {
   const Scene scene = carried_ball_scene();
   OpfOptions options;
   options.modules = {false, false, false};
-  options.velocity_drift = false;           // the paper's random walk, as the standard PF's
-  options.adaptive_rotation_noise = false;  // and its configured likelihood
+  options.velocity_drift = false;  // the paper's random walk, as the standard PF's
+  options.detector_noise = false;  // and its configured likelihood
   const SceneRun opf = run(scene, opf_factory(options));
   const SceneRun pf = run(scene, pf_factory(options.particles));
   for (int k = 0; k < scene.frames; ++k)

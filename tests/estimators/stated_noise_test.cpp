@@ -57,10 +57,10 @@ TEST(StatedNoise, EveryEstimatorMovesLessForADetectionStatingItsNoise) {
 }
 
 TEST(StatedNoise, ThePaperRuleKeepsTheConfiguredNoise) {
-  // opf.stated_noise: false (the `paper` preset): the same seed gives the same estimate whatever
+  // opf.detector_noise: false (the `paper` preset): the same seed gives the same estimate whatever
   // the detection states.
   EstimatorSettings settings = few_particles();
-  settings.opf.stated_noise = false;
+  settings.opf.detector_noise = false;
   EXPECT_EQ(x_after_jump("opf", settings, kExtraNoise), x_after_jump("opf", settings, 0.0));
 }
 
@@ -69,7 +69,7 @@ TEST(StatedNoise, NoneStatedIsTheConfiguredNoise) {
   // switch on and off.
   EstimatorSettings on = few_particles();
   EstimatorSettings off = on;
-  off.opf.stated_noise = false;
+  off.opf.detector_noise = false;
   EXPECT_EQ(x_after_jump("opf", on, 0.0), x_after_jump("opf", off, 0.0));
 }
 

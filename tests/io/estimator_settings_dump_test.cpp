@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include <filesystem>
 #include <set>
 #include <string>
 
@@ -53,8 +54,8 @@ TEST(EstimatorSettingsDump, ReadsBackToTheSameSettings) {
 }
 
 TEST(EstimatorSettingsDump, HoldsEveryOptionOfTheShippedSettingsFile) {
-  const YAML::Node shipped =
-      YAML::LoadFile(std::string(OPF_SOURCE_DIR) + "/experiments/configs/estimators.yaml");
+  const YAML::Node shipped = YAML::LoadFile(
+      (std::filesystem::path(OPF_SOURCE_DIR) / "experiments/configs/estimators.yaml").string());
   std::set<std::string> documented, dumped;
   key_paths(shipped, "", documented);
   key_paths(YAML::Load(dump_estimator_settings(EstimatorSettings{})), "", dumped);
@@ -65,6 +66,20 @@ TEST(EstimatorSettingsDump, HoldsEveryOptionOfTheShippedSettingsFile) {
   const EstimatorSettings from_file =
       parse_estimator_settings(YAML::Dump(shipped), "estimators.yaml");
   EXPECT_EQ(dump_estimator_settings(from_file), dump_estimator_settings(EstimatorSettings{}));
+}
+
+TEST(EstimatorSettingsDump, TheOpfHasAtMostThirtySettingsAndTheDynamicsSix) {
+  // Few, stated knobs: a key added to `opf:` must replace one (or the limit be argued anew).
+  EstimatorSettings s;
+  s.opf.occluder.camera_position = Eigen::Vector3d(0.5, 0.0, 1.0);  // the optional key too
+  const YAML::Node opf = YAML::Load(dump_estimator_settings(s))["opf"];
+  std::set<std::string> keys, dynamics;
+  key_paths(opf, "", keys);
+  key_paths(opf["dynamics"], "", dynamics);
+  EXPECT_LE(keys.size(), 30u);
+  EXPECT_GE(keys.size(), 20u);  // the walk found the section at all
+  EXPECT_LE(dynamics.size(), 6u);
+  EXPECT_TRUE(opf["occluder"]["camera_position"].IsSequence());
 }
 
 }  // namespace

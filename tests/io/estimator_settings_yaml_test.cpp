@@ -208,7 +208,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   const EstimatorSettings s = parse_estimator_settings(
       "opf:\n"
       "  velocity_drift: false\n"
-      "  adaptive_rotation_noise: false\n"
+      "  detector_noise: false\n"
       "  dynamics:\n"
       "    predictor: paper\n"
       "    models: [velocity, ballistic]\n"
@@ -218,7 +218,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
       "settings.yaml");
   const OpfOptions& o = s.opf;
   EXPECT_FALSE(o.velocity_drift);
-  EXPECT_FALSE(o.adaptive_rotation_noise);
+  EXPECT_FALSE(o.detector_noise);
   EXPECT_EQ(o.dynamics.predictor, DynamicsPredictor::kPaper);
   EXPECT_EQ(o.dynamics.models,
             (std::vector<MotionModel>{MotionModel::kConstantVelocity, MotionModel::kBallistic}));
