@@ -186,7 +186,7 @@ void BM_OccluderSearch(benchmark::State& state) {
     candidates.push_back({"object" + std::to_string(i), mean, covariance});
   }
   OccluderOptions options;
-  options.camera_position = Eigen::Vector3d(0.5, -0.5, 1.0);
+  options.camera_position = Eigen::Vector4d(0.5, -0.5, 1.0, 1.0);
   const Eigen::Vector3d hidden(0.5, 0.5, 0.02);
   const Eigen::Matrix3d hidden_covariance = 1e-4 * Eigen::Matrix3d::Identity();
   for (auto _ : state)

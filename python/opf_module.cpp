@@ -110,7 +110,8 @@ void bind_tracker(py::module_& m) {
            "else 5000; a config setting another count is refused); config: None (the "
            "defaults), a settings file's path, or a dict in its shape; preset: default or "
            "paper (the config applies on top); camera: [X, Y, Z] or \"X,Y,Z\" (m), where the "
-           "occluder module's line of sight starts, as opf track --camera")
+           "occluder module's line of sight starts, or [X, Y, Z, 0] for a camera infinitely far "
+           "in that direction, as opf track --camera")
       .def("step", &PyTracker::step, py::arg("t"), py::arg("detections"),
            "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}, "
            "an eighth number the detection's stated extra noise (m), a ninth the object's stated "

@@ -1,5 +1,6 @@
 #include "settings_arguments.h"
 
+#include "opf/core/homogeneous_point.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "paper_preset.h"
 
@@ -66,8 +67,8 @@ EstimatorSettings with_config(const py::object& config, const EstimatorSettings&
   return settings;
 }
 
-// [X, Y, Z] (any sequence of numbers), or opf track's --camera text "X,Y,Z".
-std::optional<Eigen::Vector3d> camera_from(const py::object& camera) {
+// [X, Y, Z] or [X, Y, Z, W] (any sequence of numbers), or opf track's --camera text "X,Y,Z[,W]".
+std::optional<Eigen::Vector4d> camera_from(const py::object& camera) {
   if (camera.is_none()) return std::nullopt;
   std::vector<double> values;
   bool ok = true;
@@ -87,13 +88,13 @@ std::optional<Eigen::Vector3d> camera_from(const py::object& camera) {
       ok = false;
     }
   }
-  ok = ok && values.size() == 3;
-  for (const double value : values) ok = ok && std::isfinite(value);
-  if (!ok)
-    throw std::invalid_argument("option 'camera': expected three numbers X,Y,Z in metres, got " +
+  const std::optional<Eigen::Vector4d> point = ok ? homogeneous_point(values) : std::nullopt;
+  if (!point)
+    throw std::invalid_argument("option 'camera': expected " +
+                                std::string(kHomogeneousCameraExpectation) + ", got " +
                                 (text ? "\"" + py::cast<std::string>(camera) + "\""
                                       : py::cast<std::string>(py::repr(camera))));
-  return Eigen::Vector3d(values[0], values[1], values[2]);
+  return point;
 }
 
 void apply_particles(std::size_t particles, const ConfigCounts& counts,

@@ -175,6 +175,11 @@ int detect_command(const std::vector<std::string>& raw) {
     if (object.sightings.empty())
       std::cerr << "opf detect: warning: object '" << object.name << "' was never found\n";
   }
+  // z grows away from the camera along every line of sight: the occluder module's default view,
+  // straight down (-z), would take the nearer of two objects for the one behind.
+  if (detection.objects.size() > 1)
+    std::cout << "  track it with --camera 0,0,-1,0: z is the depth, every line of sight runs "
+                 "along +z\n";
   if (const std::size_t missing =
           vision::frames_missing_at_end(detection, *fps, uneven.has_value());
       missing > kCountSlack)

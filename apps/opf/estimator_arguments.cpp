@@ -1,6 +1,7 @@
 #include "estimator_arguments.h"
 
 #include "cli/presets.h"
+#include "opf/core/homogeneous_point.h"
 #include "opf/estimators/registry.h"
 #include "opf/io/estimator_settings_yaml.h"
 
@@ -22,7 +23,9 @@ std::vector<OptionSpec> estimator_option_specs() {
       {"config", "FILE.yaml", "estimator options (see experiments/configs/estimators.yaml)"},
       {"camera", "X,Y,Z",
        "the camera's position in the world frame (m): the occluder module's line of sight runs "
-       "from it (default: straight down; experiments pass their own)"},
+       "from it; X,Y,Z,0: a camera infinitely far in that direction, every line of sight "
+       "parallel (a log of opf detect: 0,0,-1,0) (default: straight down; experiments pass "
+       "their own)"},
       {"particles", "N", "particles per portion (translation and rotation); default 5000"},
       {"seed", "S", "seed of every random draw; the same seed gives identical output (default 1)"},
       {"threads", "N",
@@ -48,19 +51,18 @@ EstimatorSettings settings_from(const Arguments& args,
       preset_settings(args.get("preset").value_or("default"), paper_preset_config);
   if (const auto path = args.get("config")) settings = load_estimator_settings(*path, settings);
   if (const auto camera = args.get("camera")) {
-    const std::vector<std::string> parts = split_list(*camera);
-    Eigen::Vector3d position;
-    bool ok = parts.size() == 3;
-    for (std::size_t i = 0; ok && i < 3; ++i) {
+    std::vector<double> numbers;
+    bool ok = true;
+    for (const std::string& part : split_list(*camera)) {
       char* end = nullptr;
-      position(static_cast<Eigen::Index>(i)) = std::strtod(parts[i].c_str(), &end);
-      ok = end != parts[i].c_str() && *end == '\0' &&
-           std::isfinite(position(static_cast<Eigen::Index>(i)));
+      numbers.push_back(std::strtod(part.c_str(), &end));
+      ok = ok && end != part.c_str() && *end == '\0';
     }
-    if (!ok)
-      throw UsageError{"option '--camera': expected three numbers X,Y,Z in metres, got \"" +
-                       *camera + "\""};
-    settings.opf.occluder.camera_position = position;
+    const std::optional<Eigen::Vector4d> point = ok ? homogeneous_point(numbers) : std::nullopt;
+    if (!point)
+      throw UsageError{"option '--camera': expected " + std::string(kHomogeneousCameraExpectation) +
+                       ", got \"" + *camera + "\""};
+    settings.opf.occluder.camera_position = point;
   }
   if (const auto particles = args.get_count("particles")) {
     if (*particles == 0) throw UsageError{"option '--particles' must be at least 1"};

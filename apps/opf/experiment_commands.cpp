@@ -125,7 +125,7 @@ constexpr const char* kReproduceSummary =
 EstimatorSettings with_experiment_camera(EstimatorSettings settings,
                                          const sim::ExperimentConfig& config) {
   if (!settings.opf.occluder.camera_position)
-    settings.opf.occluder.camera_position = config.camera.position;
+    settings.opf.occluder.camera_position = config.camera.position.homogeneous();
   return settings;
 }
 

@@ -228,9 +228,10 @@ int track_command(const std::vector<std::string>& raw) {
   const EstimateColumns columns{.covariance = args.has("covariance")};
   EstimateWriter writer(tracker, columns, [&](std::size_t objects) {
     if (warn_camera && objects == 2)
-      std::cerr << "opf track: warning: no camera position (--camera X,Y,Z, or "
-                   "opf.occluder.camera_position): the occluder module takes the line of sight "
-                   "as straight down (-z)\n";
+      std::cerr << "opf track: warning: no camera position (--camera X,Y,Z, or X,Y,Z,0 for a "
+                   "camera infinitely far in that direction, or opf.occluder.camera_position): "
+                   "the occluder module takes the line of sight as straight down (-z); a log of "
+                   "`opf detect`, whose z is the depth, wants --camera 0,0,-1,0\n";
   });
 
   FrameAssemblyReport assembly;

@@ -12,8 +12,10 @@
 //   choices(key, EnumNames table, std::vector<Enum>&)   a non-empty list of distinct names
 //   numbers(key, std::vector<double>&, Bounds)   a non-empty list, every element within Bounds
 //   vector3(key, Eigen::Vector3d&)           a non-zero, finite vector
-//   optional_vector3(key, std::optional<Eigen::Vector3d>&)   finite when given
+//   optional_point(key, std::optional<Eigen::Vector4d>&)   homogeneous (homogeneous_point.h)
 //   section(key, fn)                         fn() describes the nested mapping `key`
+
+#include "opf/core/homogeneous_point.h"
 
 #include <Eigen/Core>
 
@@ -116,8 +118,9 @@ class OptionChecker {
     if (!value.allFinite() || !(value.norm() > 0.0))
       fail(key, "a non-zero vector", value.transpose());
   }
-  void optional_vector3(std::string_view key, const std::optional<Eigen::Vector3d>& value) const {
-    if (value && !value->allFinite()) fail(key, "a finite vector", value->transpose());
+  void optional_point(std::string_view key, const std::optional<Eigen::Vector4d>& value) const {
+    if (value && !homogeneous_point(std::span<const double>(value->data(), 4)))
+      fail(key, "a finite point, or a direction at infinity", value->transpose());
   }
   template <class Describe>
   void section(std::string_view key, Describe&& describe) {

@@ -60,7 +60,8 @@ class YamlOptionReader {
   }
   void numbers(std::string_view key, std::vector<double>& out, const Bounds& bounds);
   void vector3(std::string_view key, Eigen::Vector3d& out);
-  void optional_vector3(std::string_view key, std::optional<Eigen::Vector3d>& out);
+  /// [x, y, z] or [x, y, z, w] (core/homogeneous_point.h); a point is written back as three.
+  void optional_point(std::string_view key, std::optional<Eigen::Vector4d>& out);
   template <class Describe>
   void section(std::string_view key, Describe&& describe) {
     stack_.push_back(&yaml().child(key));

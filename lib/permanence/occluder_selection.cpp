@@ -22,7 +22,11 @@ std::optional<Eigen::Vector3d> line_of_sight(const Eigen::Vector3d& hidden_mean,
         "occluder plane line_of_sight needs the camera's position (or plane auto)");
   Eigen::Vector3d ray(0, 0, -1);
   if (options.plane != OccluderPlane::kXY && options.camera_position) {
-    const Eigen::Vector3d to_object = hidden_mean - *options.camera_position;
+    const Eigen::Vector4d& camera = *options.camera_position;
+    // A camera at infinity (w = 0) sees every point along the same ray.
+    const Eigen::Vector3d to_object = camera.w() == 0.0
+                                          ? Eigen::Vector3d(-camera.head<3>())
+                                          : Eigen::Vector3d(hidden_mean - camera.hnormalized());
     if (to_object.norm() > 1e-9) ray = to_object.normalized();
   }
   return ray;

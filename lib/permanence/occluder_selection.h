@@ -35,9 +35,13 @@ struct OccluderOptions {
   /// line of sight differ by at most this.
   double epsilon_occ = 0.01;
   OccluderPlane plane = OccluderPlane::kAuto;
-  /// Camera position in the world frame for kLineOfSight and kAuto; none (kAuto only) means a
-  /// top-down camera (the line of sight is -z, the plane is x-y), as in the paper's scenes.
-  std::optional<Eigen::Vector3d> camera_position;
+  /// The camera in the world frame, in homogeneous coordinates (core/homogeneous_point.h), for
+  /// kLineOfSight and kAuto: (x, y, z, 1) a camera at that point; (x, y, z, 0) a camera
+  /// infinitely far in the direction (x, y, z), every line of sight along -(x, y, z) (a log of
+  /// `opf detect`, whose z is the depth away from the camera: (0, 0, -1, 0)). None (kAuto only):
+  /// a camera straight above, as (0, 0, 1, 0): the line of sight is -z, the plane x-y, as in the
+  /// paper's scenes.
+  std::optional<Eigen::Vector4d> camera_position;
   /// Follow the occluder at the hidden object's offset from it at occlusion onset (the ball sits
   /// beside the mug's centre) instead of at the occluder's own position (the paper).
   bool keep_offset = false;
@@ -87,7 +91,7 @@ template <class Visitor>
 void describe_options(Visitor& v, OccluderOptions& o) {
   v.number("epsilon_occ", o.epsilon_occ, non_negative());
   v.choice("plane", kOccluderPlaneNames, o.plane);
-  v.optional_vector3("camera_position", o.camera_position);
+  v.optional_point("camera_position", o.camera_position);
   v.flag("keep_depth", o.keep_depth);
   v.flag("carry_from_departure", o.carry_from_departure);
   v.flag("orientation_from_estimate", o.orientation_from_estimate);

@@ -190,6 +190,20 @@ TEST_F(OpfProgram, DetectReadsAFolderOfImagesAtTheGivenRate) {
     EXPECT_NEAR(pose.yaw(), 20.0 * M_PI / 180.0, 0.01);
   }
   EXPECT_NE(out().find("found in 4 of 5 frames"), std::string::npos) << out();
+  // One object: nothing hides it, so the line of sight does not matter.
+  EXPECT_EQ(out().find("--camera"), std::string::npos) << out();
+  // Two: how to track the log with the lines of sight its z has.
+  std::ofstream(dir_ / "two.yaml")
+      << "objects:\n"
+         "  box:\n    hsv: {low: [20, 100, 100], high: [40, 255, 255]}\n"
+         "  twin:\n    hsv: {low: [20, 100, 100], high: [40, 255, 255]}\n";
+  ASSERT_EQ(
+      run("detect --video " + (dir_ / "frames").string() + " --objects " +
+          (dir_ / "two.yaml").string() + " --out " + (dir_ / "two.csv").string() + " --rate 20"),
+      0)
+      << err();
+  EXPECT_NE(out().find("track it with --camera 0,0,-1,0: z is the depth"), std::string::npos)
+      << out();
 
   // A folder states no frame rate.
   EXPECT_EQ(run("detect --video " + (dir_ / "frames").string() + " --objects " +

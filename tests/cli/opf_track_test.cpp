@@ -187,10 +187,22 @@ TEST_F(OpfProgram, TrackTakesTheCameraAndWarnsWithoutOne) {
             0)
       << err();
   EXPECT_EQ(read(dir_ / "sight.csv"), read(dir_ / "above.csv"));
-  for (const char* bad : {"1,2", "1,2,x", "1,2,3,4", "1,2,inf"}) {
+  for (const char* bad : {"1,2", "1,2,x", "1,2,3,4", "1,2,inf", "0,0,0,0", "1,2,3,0,1"}) {
     EXPECT_EQ(run(track + (dir_ / "bad.csv").string() + " --camera " + bad), 2) << bad;
-    EXPECT_NE(err().find("expected three numbers X,Y,Z"), std::string::npos) << err();
+    EXPECT_NE(err().find("expected X,Y,Z in metres (a camera there) or X,Y,Z,0 (a camera "
+                         "infinitely far in the direction X,Y,Z: parallel lines of sight), got \"" +
+                         std::string(bad) + "\""),
+              std::string::npos)
+        << err();
   }
+  // A camera at infinity (a log of `opf detect`, whose z is the depth): no warning, and the
+  // settings say so as four numbers.
+  ASSERT_EQ(run(track + (dir_ / "far.csv").string() + " --camera 0,0,-1,0"), 0) << err();
+  EXPECT_EQ(err().find("warning"), std::string::npos) << err();
+  ASSERT_EQ(run("config --dump --camera 0,0,-1,0"), 0) << err();
+  EXPECT_NE(out().find("camera_position: [0, 0, -1, 0]"), std::string::npos) << out();
+  ASSERT_EQ(run("config --dump --camera 0.4,0,0.8,1"), 0) << err();
+  EXPECT_NE(out().find("camera_position: [0.4, 0, 0.8]"), std::string::npos) << out();
 }
 
 // The version and the commit built: "opf 0.1.0 (commit 1a2b3c4d5e6f)", or "unknown" outside git.

@@ -30,7 +30,8 @@ class TwinMugs : public ::testing::Test {
   static EstimatorSettings settings() {
     EstimatorSettings s;  // the defaults, as `opf run` runs every experiment
     s.pf.translation_particles = s.pf.rotation_particles = 1000;
-    s.opf.occluder.camera_position = config_.camera.position;  // as `opf run` passes it
+    s.opf.occluder.camera_position =
+        config_.camera.position.homogeneous();  // as `opf run` passes it
     return s;
   }
   static inline sim::ExperimentConfig config_;

@@ -221,7 +221,7 @@ TEST(ObjectPermanenceFilter, KeepDepthFollowsTheMugHorizontallyAndKeepsTheBallsH
   OpfOptions options;
   options.occluder.keep_depth = true;  // the default
   // An oblique camera: the height kept is along `up`, not along the ray.
-  options.occluder.camera_position = Eigen::Vector3d(0.1, -0.3, 0.6);
+  options.occluder.camera_position = Eigen::Vector4d(0.1, -0.3, 0.6, 1.0);
   const SceneRun opf = run(scene, opf_factory(options));
   // The ball keeps its own height (z = 0, not the mug's 0.03) and follows the mug's x-y. Left:
   // the mug's x-y offset from the ball at onset (the mug is still arriving, ~5 mm) and the
@@ -1232,7 +1232,7 @@ TEST(ObjectPermanenceFilter, RejectsBadOptions) {
   OpfOptions options;
   options.occluder.plane = OccluderPlane::kLineOfSight;  // without the camera's position
   EXPECT_THROW(ObjectPermanenceFilter(options, "x", 1), std::invalid_argument);
-  options.occluder.camera_position = Eigen::Vector3d(0.4, 0.0, 0.8);
+  options.occluder.camera_position = Eigen::Vector4d(0.4, 0.0, 0.8, 1.0);
   EXPECT_NO_THROW(ObjectPermanenceFilter(options, "x", 1));
   options = {};
   options.history_length = 1;

@@ -29,7 +29,7 @@ TEST(EstimatorSettingsDump, ReadsBackToTheSameSettings) {
   s.pf.translation_particles = 123;
   s.pf.observation_noise_translation = 0.0123456789;
   s.pf.resampling.scheme = mrpt::bayes::CParticleFilter::prResidual;
-  s.opf.occluder.camera_position = Eigen::Vector3d(0.5, -0.25, 1.5);
+  s.opf.occluder.camera_position = Eigen::Vector4d(0.5, -0.25, 1.5, 1.0);
   s.opf.occluder.plane = OccluderPlane::kLineOfSight;
   s.opf.dynamics.models = {MotionModel::kDampedVelocity, MotionModel::kConstantPosition};
   s.opf.dynamics.predictor = DynamicsPredictor::kPaper;
@@ -43,7 +43,7 @@ TEST(EstimatorSettingsDump, ReadsBackToTheSameSettings) {
   EXPECT_EQ(back.pf.observation_noise_translation, 0.0123456789);
   EXPECT_EQ(back.pf.resampling.scheme, mrpt::bayes::CParticleFilter::prResidual);
   ASSERT_TRUE(back.opf.occluder.camera_position);
-  EXPECT_EQ(*back.opf.occluder.camera_position, Eigen::Vector3d(0.5, -0.25, 1.5));
+  EXPECT_EQ(*back.opf.occluder.camera_position, Eigen::Vector4d(0.5, -0.25, 1.5, 1.0));
   EXPECT_EQ(back.opf.dynamics.models, (std::vector<MotionModel>{MotionModel::kDampedVelocity,
                                                                 MotionModel::kConstantPosition}));
   EXPECT_EQ(back.opf.dynamics.predictor, DynamicsPredictor::kPaper);
@@ -71,7 +71,7 @@ TEST(EstimatorSettingsDump, HoldsEveryOptionOfTheShippedSettingsFile) {
 TEST(EstimatorSettingsDump, TheOpfHasAtMostThirtySettingsAndTheDynamicsSix) {
   // Few, stated knobs: a key added to `opf:` must replace one (or the limit be argued anew).
   EstimatorSettings s;
-  s.opf.occluder.camera_position = Eigen::Vector3d(0.5, 0.0, 1.0);  // the optional key too
+  s.opf.occluder.camera_position = Eigen::Vector4d(0.5, 0.0, 1.0, 1.0);  // the optional key too
   const YAML::Node opf = YAML::Load(dump_estimator_settings(s))["opf"];
   std::set<std::string> keys, dynamics;
   key_paths(opf, "", keys);

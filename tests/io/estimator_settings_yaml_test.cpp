@@ -192,7 +192,7 @@ TEST(EstimatorSettingsYaml, EveryOpfKeyOverrides) {
   EXPECT_EQ(o.occluder.epsilon_occ, 0.5);
   EXPECT_EQ(o.occluder.plane, OccluderPlane::kXY);
   ASSERT_TRUE(o.occluder.camera_position.has_value());
-  EXPECT_EQ(*o.occluder.camera_position, Eigen::Vector3d(0.55, 0, 0.8));
+  EXPECT_EQ(*o.occluder.camera_position, Eigen::Vector4d(0.55, 0, 0.8, 1));
   EXPECT_FALSE(o.occluder.keep_depth);
   EXPECT_FALSE(o.occluder.carry_from_departure);
   EXPECT_FALSE(o.occluder.orientation_from_estimate);

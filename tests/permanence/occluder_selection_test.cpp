@@ -137,7 +137,7 @@ TEST(OccluderSelection, LineOfSightIgnoresDepthAlongTheRay) {
   const std::vector<OccluderCandidate> candidates = {at("tray", 0.4, 0.0, 0.2),
                                                      at("mug", 0.4, 0.12, 0.0)};
   OccluderOptions options;
-  options.camera_position = Eigen::Vector3d(0.4, 0.0, 0.8);
+  options.camera_position = Eigen::Vector4d(0.4, 0.0, 0.8, 1.0);
   const auto sight = choose_occluders({0.4, 0.0, 0.0}, kCloud, candidates, options);
   EXPECT_EQ(candidates[*sight.nearest].object, "tray");
   options.plane = OccluderPlane::k3D;
@@ -152,12 +152,36 @@ TEST(OccluderSelection, ObliqueLineOfSightProjectsAlongTheRay) {
   const std::vector<OccluderCandidate> candidates = {
       at("on_ray", on_ray.x(), on_ray.y(), on_ray.z()), at("above", 1.0, 0.0, 0.25)};
   OccluderOptions options;
-  options.camera_position = camera;
+  options.camera_position = camera.homogeneous();
   const auto choice = choose_occluders(hidden, kCloud, candidates, options);
   EXPECT_EQ(candidates[*choice.nearest].object, "on_ray");
   const Eigen::MatrixXd p = occlusion_plane_projection(hidden, options);
   EXPECT_LT((p * (hidden - camera)).norm(), 1e-12);
   EXPECT_LT((p * p.transpose() - Eigen::Matrix2d::Identity()).norm(), 1e-12);
+}
+
+TEST(OccluderSelection, ACameraAtInfinitySeesEveryPointAlongOneRay) {
+  // A log of `opf detect`: z is the depth away from the camera, every line of sight along +z:
+  // the camera is at infinity towards -z, (0, 0, -1, 0).
+  OccluderOptions options;
+  options.camera_position = Eigen::Vector4d(0.0, 0.0, -1.0, 0.0);
+  for (const Eigen::Vector3d& place : {Eigen::Vector3d(0.1, 0.2, 1.0), Eigen::Vector3d(-3, 5, 9)})
+    EXPECT_LT((*line_of_sight(place, options) - Eigen::Vector3d::UnitZ()).norm(), 1e-15);
+  // A cup 0.3 m nearer the camera (smaller depth) over the ball hides it; one 0.3 m deeper, at
+  // the same image position, is behind it. Taken as straight down (-z) it would be the reverse.
+  const std::vector<OccluderCandidate> nearer = {at("cup", 0.4, 0.0, 0.7)};
+  const std::vector<OccluderCandidate> deeper = {at("cup", 0.4, 0.0, 1.3)};
+  const Eigen::Vector3d ball(0.4, 0.0, 1.0);
+  EXPECT_TRUE(choose_occluders(ball, kCloud, nearer, options).nearest);
+  EXPECT_FALSE(choose_occluders(ball, kCloud, deeper, options).nearest);
+  options.camera_position.reset();
+  EXPECT_FALSE(choose_occluders(ball, kCloud, nearer, options).nearest);
+  EXPECT_TRUE(choose_occluders(ball, kCloud, deeper, options).nearest);
+  // The same as a camera far away on the axis, and as (0, 0, -2, 0): only the direction counts.
+  options.camera_position = Eigen::Vector4d(0.4, 0.0, -1e6, 1.0);
+  const Eigen::Vector3d far = *line_of_sight(ball, options);
+  options.camera_position = Eigen::Vector4d(0.0, 0.0, -2.0, 0.0);
+  EXPECT_LT((far - *line_of_sight(ball, options)).norm(), 1e-12);
 }
 
 TEST(OccluderSelection, NoCandidateNoOccluderOneCandidateIsIt) {

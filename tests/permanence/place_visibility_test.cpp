@@ -46,7 +46,7 @@ TEST(PlaceVisibility, APlaceIsSeenWhenNoTrackedObjectIsNearItsLineOfSight) {
 
 TEST(PlaceVisibility, AnObliqueCameraLooksAlongItsOwnRay) {
   OccluderOptions oblique;
-  oblique.camera_position = Eigen::Vector3d(0.5, -1.0, 1.0);
+  oblique.camera_position = Eigen::Vector4d(0.5, -1.0, 1.0, 1.0);
   // On the ray from the camera to the place, 0.2 m away from it across the table: it hides the
   // place from this camera, though not from one straight above.
   const std::vector<ViewBlocker> on_the_ray = {{Eigen::Vector3d(0.5, -0.2, 0.2), kTight}};

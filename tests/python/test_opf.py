@@ -377,6 +377,11 @@ def test_track_log_reads_a_tum_trajectory_as_opf_track_does(tmp_path):
         opf.track_log(log, format="kml")
 
 
+# What a camera may be, in the words of opf track's --camera.
+CAMERA = ("X,Y,Z in metres (a camera there) or X,Y,Z,0 (a camera infinitely far in the direction "
+          "X,Y,Z: parallel lines of sight)")
+
+
 @pytest.mark.parametrize("options, flag, message", [
     ({"time_unit": "h"}, ["--time-unit", "h"], 'expected s, ms, us or ns, got "h"'),
     ({"length_unit": "km"}, ["--length-unit", "km"], 'expected m or mm, got "km"'),
@@ -384,7 +389,8 @@ def test_track_log_reads_a_tum_trajectory_as_opf_track_does(tmp_path):
      "'foo' is not a column of the log format (t, object, x, y, z, qx, qy, qz, qw)"),
     ({"columns": "qx"}, ["--columns", "qx"],
      "'qx' is not NAME=COLUMN (e.g. qx=rx: the column rx holds qx)"),
-    ({"camera": "0,0"}, ["--camera", "0,0"], 'expected three numbers X,Y,Z in metres, got "0,0"'),
+    ({"camera": "0,0"}, ["--camera", "0,0"], f'expected {CAMERA}, got "0,0"'),
+    ({"camera": "0,0,0,0"}, ["--camera", "0,0,0,0"], f'expected {CAMERA}, got "0,0,0,0"'),
     ({"preset": "fast"}, ["--preset", "fast"], 'expected default or paper, got "fast"'),
 ])
 def test_track_log_refuses_a_bad_option_in_opf_tracks_words(tmp_path, options, flag, message):
@@ -404,8 +410,8 @@ def test_track_log_refuses_the_other_bad_options_by_name():
         ({"frame_tolerance": -0.1}, "option 'frame_tolerance' expects seconds >= 0"),
         ({"rate": 20, "fill": False}, "options 'rate' and 'fill=False' contradict each other: "
                                       "rate sets the rate gaps are filled at"),
-        ({"camera": [0, 0, math.nan]},
-         "option 'camera': expected three numbers X,Y,Z in metres, got [0, 0, nan]"),
+        ({"camera": [0, 0, math.nan]}, f"option 'camera': expected {CAMERA}, got [0, 0, nan]"),
+        ({"camera": [1, 2, 3, 4]}, f"option 'camera': expected {CAMERA}, got [1, 2, 3, 4]"),
         ({"columns": {"qx": "a,b"}},
          "option 'columns': expected names without commas, got 'qx': 'a,b'"),
         ({"config": {"opf": {"occluder": {"plane": "line_of_sight"}}}},
@@ -496,6 +502,7 @@ def test_a_tracker_takes_the_preset_and_the_camera_as_track_log_does():
     default = run()
     assert not np.allclose(run(preset="paper"), default)
     assert np.array_equal(run(camera=[0.0, 0.0, 2.0]), run(camera="0,0,2"))
+    assert np.array_equal(run(camera=[0.0, 0.0, 1.0, 0.0]), run(camera="0,0,1,0"))
     with pytest.raises(ValueError, match='option \'preset\': expected default or paper, got "fast"'):
         opf.Tracker("opf", preset="fast")
     with pytest.raises(ValueError, match="option 'camera'"):
