@@ -18,7 +18,8 @@ struct SettingsArguments {
   std::string preset = "default";
   /// None, a settings file's path, or a dict in the file's shape.
   pybind11::object config = pybind11::none();
-  /// None, [X, Y, Z] or "X,Y,Z" (m): the occluder module's line of sight starts there.
+  /// None, [X, Y, Z] or "X,Y,Z" (m): the occluder module's line of sight starts there; with a
+  /// fourth number 0, a camera infinitely far in that direction (core/homogeneous_point.h).
   pybind11::object camera = pybind11::none();
   /// Particles per portion; None: the config's counts, else the defaults (5000).
   std::optional<std::size_t> particles;

@@ -1,7 +1,5 @@
 #include "opf/core/homogeneous_point.h"
 
-#include <cmath>
-
 namespace opf {
 
 std::optional<Eigen::Vector4d> homogeneous_point(std::span<const double> numbers) {
