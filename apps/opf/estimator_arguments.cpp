@@ -80,6 +80,20 @@ void require_camera_for_line_of_sight(const EstimatorSettings& settings) {
         "without one)"};
 }
 
+bool assumes_top_down_camera(const EstimatorSettings& settings) {
+  const OccluderOptions& occluder = settings.opf.occluder;
+  return settings.opf.modules.occluder && occluder.plane == OccluderPlane::kAuto &&
+         !occluder.camera_position;
+}
+
+std::string missing_camera_warning(const std::string& command) {
+  return "opf " + command +
+         ": warning: no camera position (--camera X,Y,Z, or X,Y,Z,0 for a camera infinitely far "
+         "in that direction, or opf.occluder.camera_position): the occluder module takes the "
+         "line of sight as straight down (-z); a log of `opf detect`, whose z is the depth, "
+         "wants --camera 0,0,-1,0\n";
+}
+
 std::size_t threads_from(const Arguments& args) {
   if (const auto threads = args.get_count("threads")) {
     if (*threads == 0) throw UsageError{"option '--threads' must be at least 1"};

@@ -18,6 +18,12 @@ std::vector<OptionSpec> estimator_option_specs();
 /// a camera position is a usage error, not a silent top-down camera.
 void require_camera_for_line_of_sight(const EstimatorSettings& settings);
 
+/// Whether the OPF's occluder module would take the line of sight as straight down for want of a
+/// camera (plane auto): a log of several objects gets missing_camera_warning() then.
+bool assumes_top_down_camera(const EstimatorSettings& settings);
+/// What is assumed, and the camera a log of `opf detect` wants; `command` names the sender.
+std::string missing_camera_warning(const std::string& command);
+
 /// The settings a preset starts from: `default`, the defaults; `paper`, its settings, then
 /// `paper_preset_config` when given (an experiment's own under that preset). UsageError for any
 /// other name.

@@ -341,6 +341,9 @@ int evaluate_command(const std::vector<std::string>& raw) {
 
   const LogReadOptions log_options = log_options_from(args, in);
   const MeasurementLog log = read_whole_log(in, log_options, "evaluate", false);
+  if (log.objects.size() > 1 && assumes_top_down_camera(settings) &&
+      std::find(names.begin(), names.end(), "opf") != names.end())
+    std::cerr << missing_camera_warning("evaluate");
   LogReadOptions truth_options = log_options_from(args, truth_path);
   // A TUM truth of the log's one object is that object's, whatever the two files are called.
   if (truth_options.format == LogFormat::kTum && !args.has("object") && log.objects.size() == 1)

@@ -221,17 +221,11 @@ int track_command(const std::vector<std::string>& raw) {
   // With the estimates on standard output, everything else goes to standard error.
   std::ostream& report = out == "-" ? std::cerr : std::cout;
 
-  const OccluderOptions& occluder = settings.opf.occluder;
-  const bool warn_camera = !quiet && estimator == "opf" && settings.opf.modules.occluder &&
-                           occluder.plane == OccluderPlane::kAuto && !occluder.camera_position;
+  const bool warn_camera = !quiet && estimator == "opf" && assumes_top_down_camera(settings);
   Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args), threads_from(args));
   const EstimateColumns columns{.covariance = args.has("covariance")};
   EstimateWriter writer(tracker, columns, [&](std::size_t objects) {
-    if (warn_camera && objects == 2)
-      std::cerr << "opf track: warning: no camera position (--camera X,Y,Z, or X,Y,Z,0 for a "
-                   "camera infinitely far in that direction, or opf.occluder.camera_position): "
-                   "the occluder module takes the line of sight as straight down (-z); a log of "
-                   "`opf detect`, whose z is the depth, wants --camera 0,0,-1,0\n";
+    if (warn_camera && objects == 2) std::cerr << missing_camera_warning("track");
   });
 
   FrameAssemblyReport assembly;

@@ -72,6 +72,22 @@ TEST_F(OpfProgram, EvaluateRefusesABadAlertDistanceOrProfileName) {
   EXPECT_NE(err().find("--hidden-profile"), std::string::npos) << err();
 }
 
+TEST_F(OpfProgram, EvaluateWarnsAsTrackDoesWhenTheOpfHasNoCamera) {
+  // The example log has two objects: the OPF without a camera takes the line of sight as
+  // straight down, and says so once; with a camera, or without the OPF, nothing is assumed.
+  ASSERT_EQ(run("evaluate --seeds 1 --particles 100 --estimators opf,cvkf"), 0) << err();
+  EXPECT_EQ(err(),
+            "opf evaluate: warning: no camera position (--camera X,Y,Z, or X,Y,Z,0 for a camera "
+            "infinitely far in that direction, or opf.occluder.camera_position): the occluder "
+            "module takes the line of sight as straight down (-z); a log of `opf detect`, whose z "
+            "is the depth, wants --camera 0,0,-1,0\n");
+  ASSERT_EQ(run("evaluate --seeds 1 --particles 100 --estimators opf --camera 0.4,0,0.8"), 0)
+      << err();
+  EXPECT_EQ(err(), "");
+  ASSERT_EQ(run("evaluate --seeds 1 --estimators cvkf"), 0) << err();
+  EXPECT_EQ(err(), "");
+}
+
 TEST_F(OpfProgram, TrackWritesTheFullCovarianceOnRequest) {
   const auto est = dir_ / "est.csv";
   ASSERT_EQ(
