@@ -8,9 +8,6 @@
 
 #include <Eigen/Core>
 
-#include <cmath>
-#include <cstdlib>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -70,25 +67,16 @@ EstimatorSettings with_config(const py::object& config, const EstimatorSettings&
 // [X, Y, Z] or [X, Y, Z, W] (any sequence of numbers), or opf track's --camera text "X,Y,Z[,W]".
 std::optional<Eigen::Vector4d> camera_from(const py::object& camera) {
   if (camera.is_none()) return std::nullopt;
-  std::vector<double> values;
-  bool ok = true;
   const bool text = py::isinstance<py::str>(camera);
+  std::optional<Eigen::Vector4d> point;
   if (text) {
-    std::stringstream parts(py::cast<std::string>(camera));
-    for (std::string part; std::getline(parts, part, ',');) {
-      if (part.empty()) continue;
-      char* end = nullptr;
-      values.push_back(std::strtod(part.c_str(), &end));
-      ok = ok && end != part.c_str() && *end == '\0';
-    }
+    point = homogeneous_point_from_text(py::cast<std::string>(camera));
   } else {
     try {
-      values = py::cast<std::vector<double>>(camera);
+      point = homogeneous_point(py::cast<std::vector<double>>(camera));
     } catch (const py::cast_error&) {
-      ok = false;
     }
   }
-  const std::optional<Eigen::Vector4d> point = ok ? homogeneous_point(values) : std::nullopt;
   if (!point)
     throw std::invalid_argument("option 'camera': expected " +
                                 std::string(kHomogeneousCameraExpectation) + ", got " +

@@ -6,8 +6,6 @@
 #include "opf/io/estimator_settings_yaml.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstdlib>
 #include <string>
 #include <thread>
 #include <vector>
@@ -51,14 +49,7 @@ EstimatorSettings settings_from(const Arguments& args,
       preset_settings(args.get("preset").value_or("default"), paper_preset_config);
   if (const auto path = args.get("config")) settings = load_estimator_settings(*path, settings);
   if (const auto camera = args.get("camera")) {
-    std::vector<double> numbers;
-    bool ok = true;
-    for (const std::string& part : split_list(*camera)) {
-      char* end = nullptr;
-      numbers.push_back(std::strtod(part.c_str(), &end));
-      ok = ok && end != part.c_str() && *end == '\0';
-    }
-    const std::optional<Eigen::Vector4d> point = ok ? homogeneous_point(numbers) : std::nullopt;
+    const std::optional<Eigen::Vector4d> point = homogeneous_point_from_text(*camera);
     if (!point)
       throw UsageError{"option '--camera': expected " + std::string(kHomogeneousCameraExpectation) +
                        ", got \"" + *camera + "\""};

@@ -1,5 +1,9 @@
 #include "opf/core/homogeneous_point.h"
 
+#include <cstdlib>
+#include <sstream>
+#include <vector>
+
 namespace opf {
 
 std::optional<Eigen::Vector4d> homogeneous_point(std::span<const double> numbers) {
@@ -9,6 +13,18 @@ std::optional<Eigen::Vector4d> homogeneous_point(std::span<const double> numbers
       (point.w() == 0.0 && !(point.head<3>().norm() > 0.0)))
     return std::nullopt;
   return point;
+}
+
+std::optional<Eigen::Vector4d> homogeneous_point_from_text(const std::string& text) {
+  std::vector<double> numbers;
+  std::stringstream parts(text);
+  for (std::string part; std::getline(parts, part, ',');) {
+    if (part.empty()) continue;
+    char* end = nullptr;
+    numbers.push_back(std::strtod(part.c_str(), &end));
+    if (end == part.c_str() || *end != '\0') return std::nullopt;
+  }
+  return homogeneous_point(numbers);
 }
 
 }  // namespace opf

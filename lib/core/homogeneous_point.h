@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace opf {
@@ -16,6 +17,10 @@ namespace opf {
 /// (x, y, z, w) from three numbers (w = 1) or four; none when there are not three or four, one
 /// is not finite, w is neither 0 nor 1, or a point at infinity has no direction.
 std::optional<Eigen::Vector4d> homogeneous_point(std::span<const double> numbers);
+
+/// The same from the text a command line gives, "X,Y,Z" or "X,Y,Z,W" (empty parts skipped); none
+/// also when a part is not wholly a number.
+std::optional<Eigen::Vector4d> homogeneous_point_from_text(const std::string& text);
 
 /// The words an error message expects for a camera given that way.
 inline constexpr std::string_view kHomogeneousCameraExpectation =
