@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <memory>
@@ -84,15 +83,6 @@ OPF_KERNEL void add_scaled_noise_per_particle(double* __restrict x, const float*
                                               const double* __restrict sigma, std::size_t count) {
 #pragma omp simd
   for (std::size_t i = 0; i < count; ++i) x[i] += sigma[i] * static_cast<double>(noise[i]);
-}
-
-OPF_KERNEL void add_member_offset_and_noise(double* __restrict x, const float* __restrict noise,
-                                            const std::uint8_t* __restrict member,
-                                            const double* __restrict offset,
-                                            const double* __restrict spread, std::size_t count) {
-#pragma omp simd
-  for (std::size_t i = 0; i < count; ++i)
-    x[i] += offset[member[i]] + spread[member[i]] * static_cast<double>(noise[i]);
 }
 
 OPF_KERNEL void perturb_quaternions(float* q, std::size_t stride, std::size_t count,

@@ -7,7 +7,6 @@
 
 #include <array>
 #include <cstddef>
-#include <cstdint>
 
 namespace opf::kernels {
 
@@ -22,11 +21,6 @@ void add_offset_and_scaled_noise(double* x, const float* noise, double offset, d
 /// x[i] += sigma[i] * noise[i] for i < count: a spread per particle.
 void add_scaled_noise_per_particle(double* x, const float* noise, const double* sigma,
                                    std::size_t count);
-
-/// x[i] += offset[member[i]] + spread[member[i]] * noise[i] for i < count: each particle moved by
-/// its own motion model's entry of two small tables (a multiple-model particle filter's step).
-void add_member_offset_and_noise(double* x, const float* noise, const std::uint8_t* member,
-                                 const double* offset, const double* spread, std::size_t count);
 
 /// q_i <- normalise(q_i * exp(e_i)) for i < count, where q's rows are `stride` apart and the
 /// tangent step is e_i = s_i (noise[i], noise[count + i], noise[2 count + i]) with

@@ -1,5 +1,6 @@
 #include "opf/particles/random_walk_model.h"
 
+#include "opf/particles/member_table_step.h"
 #include "opf/particles/motion_kernels.h"
 
 #include <algorithm>
@@ -103,8 +104,7 @@ void predict_row_by_member(TranslationParticles& particles, std::size_t row,
   const std::size_t n = particles.size();
   if (row >= 3 || members.size() != n || offset.size() != spread.size() || offset.size() > 256)
     throw std::invalid_argument("predict_row_by_member: a row, a member per particle, tables");
-  // Tables of 256 entries (zero beyond the models'), so that no member can read past them.
-  std::array<double, 256> offsets{}, spreads{};
+  kernels::MemberTable offsets{}, spreads{};  // zero past the members', read by any byte
   std::copy(offset.begin(), offset.end(), offsets.begin());
   std::copy(spread.begin(), spread.end(), spreads.begin());
   alignas(64) std::array<float, kChunk> block;
@@ -112,8 +112,8 @@ void predict_row_by_member(TranslationParticles& particles, std::size_t row,
   for (std::size_t begin = 0; begin < n; begin += kChunk) {
     const std::size_t count = std::min(kChunk, n - begin);
     noise.fill({block.data(), count});
-    kernels::add_member_offset_and_noise(x + begin, block.data(), members.data() + begin,
-                                         offsets.data(), spreads.data(), count);
+    kernels::add_member_offset_and_noise(x + begin, block.data(), members.data() + begin, offsets,
+                                         spreads, offset.size(), count);
   }
 }
 
