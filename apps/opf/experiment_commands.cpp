@@ -5,10 +5,13 @@
 #include "drivers/closed_loop_run.h"
 #include "drivers/data_directory.h"
 #include "drivers/figures.h"
+#include "drivers/measurement_export.h"
 #include "drivers/observe_experiment.h"
 #include "drivers/results_files.h"
 #include "estimator_arguments.h"
+#include "opf/core/random.h"
 #include "opf/estimators/registry.h"
+#include "opf/io/csv.h"
 #include "provenance.h"
 
 #include <unistd.h>
@@ -35,10 +38,41 @@ std::vector<OptionSpec> specs(bool reproduce) {
                  "a longer run with the same --seed"});
     s.push_back({"frames", "N", "track the first N frames only (default: all the file's)"});
     s.push_back({"no-figures", "", "write the CSVs and summary.json, not the figures"});
+    s.push_back({"measurements", "",
+                 "also write each seed's detections as a measurement log "
+                 "(<name>_measurements_seed<K>.csv, for opf track or another tracker) and the "
+                 "truth (<name>_truth.csv, for opf evaluate --truth); open-loop experiments"});
   }
   s.push_back({"quiet", "", "no progress line (it is drawn only on a terminal anyway)"});
   for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
   return s;
+}
+
+// "X,Y,Z", or "X,Y,Z,0" for a camera infinitely far away: as --camera takes it.
+std::string camera_option_text(const Eigen::Vector4d& camera) {
+  const bool at_infinity = camera.w() == 0.0;
+  const Eigen::Vector3d xyz =
+      at_infinity ? camera.head<3>() : Eigen::Vector3d(camera.head<3>() / camera.w());
+  std::string text = csv::format_double(xyz.x()) + ',' + csv::format_double(xyz.y()) + ',' +
+                     csv::format_double(xyz.z());
+  return at_infinity ? text + ",0" : text;
+}
+
+// How `opf track` reproduces the runs on each seed's measurement log: the run's seed for that
+// index, the camera and the options that set the estimators.
+std::vector<std::string> replay_lines(const Arguments& args, const EstimatorSettings& settings,
+                                      const std::vector<std::filesystem::path>& logs,
+                                      std::uint64_t seed, std::size_t first_seed) {
+  std::string options;
+  for (const char* name : {"preset", "config", "particles"})
+    if (const auto value = args.get(name)) options += std::string(" --") + name + ' ' + *value;
+  std::vector<std::string> lines = {"opf track --in LOG --estimator E --seed S --camera " +
+                                    camera_option_text(*settings.opf.occluder.camera_position) +
+                                    options + " reproduces this run's estimates of E on LOG:"};
+  for (std::size_t i = 0; i + 1 < logs.size(); ++i)  // the truth is last
+    lines.push_back("  " + logs[i].filename().string() + ": --seed " +
+                    std::to_string(derive_seed(seed, first_seed + i)));
+  return lines;
 }
 
 int run_experiments(const std::vector<std::string>& paths, const Arguments& args,
@@ -55,10 +89,13 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   const std::optional<std::size_t> frames = args.get_count("frames");
   if (frames && *frames == 0) throw UsageError{"option '--frames' must be at least 1"};
   const bool with_figures = !args.has("no-figures");
+  const bool with_measurements = args.has("measurements");
 
   std::vector<experiments::ExperimentResults> all;
   std::vector<std::pair<std::string, EstimatorSettings>> effective;  // per experiment
   std::vector<std::filesystem::path> figures;
+  std::size_t logs = 0;
+  std::vector<std::string> replays;
   std::filesystem::create_directories(out);
   // A progress line redrawn in place: on a terminal only, so that no escape codes reach a file.
   const bool show_progress = !args.has("quiet") && isatty(STDERR_FILENO) != 0;
@@ -76,6 +113,10 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     const EstimatorSettings settings =
         with_experiment_camera(settings_from(args, config.paper_preset_config), config);
     effective.emplace_back(config.name, settings);
+    if (config.closed_loop && with_measurements)
+      throw UsageError{"option '--measurements': " + path +
+                       " is a closed loop, whose detections depend on the estimator driving the "
+                       "robot; the measurement logs are written for open-loop experiments"};
     if (config.closed_loop) {
       all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
                                                  threads, first_seed));
@@ -88,6 +129,13 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
     const experiments::Observation observation = experiments::observe_experiment(config, progress);
     all.push_back(experiments::run_open_loop(config, observation, names, settings, seeds, seed,
                                              progress, threads, first_seed));
+    if (with_measurements) {
+      const auto written =
+          experiments::write_measurement_logs(out, config, observation, seed, first_seed, seeds);
+      logs += written.size();
+      for (auto& line : replay_lines(args, settings, written, seed, first_seed))
+        replays.push_back(std::move(line));
+    }
     if (with_figures)
       for (auto& figure : experiments::write_figures(out, config, observation, all.back(),
                                                      settings.opf.feedback.epsilon_safe))
@@ -102,8 +150,11 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   for (const auto& results : all)
     experiments::write_runs_csv(out / (results.experiment + "_runs.csv"), results);
   experiments::print_results_table(std::cout, all);
-  std::cout << "\nper-frame and per-run results, summary.json and " << figures.size()
-            << " figure files (PNG, SVG) written to " << out.string() << "\n";
+  std::cout << "\nper-frame and per-run results, summary.json, " << figures.size()
+            << " figure files (PNG, SVG)";
+  if (with_measurements) std::cout << " and " << logs << " measurement logs";
+  std::cout << " written to " << out.string() << "\n";
+  for (const std::string& line : replays) std::cout << line << '\n';
   return 0;
 }
 

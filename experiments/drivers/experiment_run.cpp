@@ -21,6 +21,19 @@ void report_progress(const Progress& progress, const sim::ExperimentConfig& conf
              std::to_string(seeds));
 }
 
+std::vector<Frame> measurement_stream(const sim::ExperimentConfig& config,
+                                      const Observation& observation, std::uint64_t base_seed,
+                                      std::size_t seed_index) {
+  if (observation.truth.size() != observation.camera.size())
+    throw std::invalid_argument("measurement_stream: truth and camera frames differ in number");
+  Random noise = measurement_noise(derive_seed(base_seed, seed_index));
+  std::vector<Frame> frames;
+  for (std::size_t k = 0; k < observation.camera.size(); ++k)
+    frames.push_back(sim::noisy_measurement(observation.camera[k], observation.truth[k],
+                                            config.measurement, noise));
+  return frames;
+}
+
 ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Observation& observation,
                                 const std::vector<std::string>& estimators,
                                 const EstimatorSettings& settings, std::size_t seeds,
@@ -34,11 +47,7 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
   for (std::size_t s = first_seed; s < first_seed + seeds; ++s) {
     // The seed's measurement stream, shared by every estimator (paired comparison).
     const std::uint64_t seed = derive_seed(base_seed, s);
-    Random noise = measurement_noise(seed);
-    std::vector<Frame> frames;
-    for (std::size_t k = 0; k < observation.camera.size(); ++k)
-      frames.push_back(sim::noisy_measurement(observation.camera[k], observation.truth[k],
-                                              config.measurement, noise));
+    const std::vector<Frame> frames = measurement_stream(config, observation, base_seed, s);
 
     for (const std::string& name : estimators) {
       report_progress(progress, config, name, s - first_seed, seeds);

@@ -5,6 +5,7 @@
 
 #include "opf/core/error_accumulator.h"
 #include "opf/core/estimate.h"
+#include "opf/core/frame.h"
 #include "opf/core/random.h"
 #include "opf/estimators/estimator_settings.h"
 #include "opf/sim/experiment_config.h"
@@ -71,6 +72,13 @@ Random measurement_noise(std::uint64_t run_seed);
 /// Reports "<experiment>: <estimator>, seed k/n" when `progress` is set.
 void report_progress(const Progress& progress, const sim::ExperimentConfig& config,
                      const std::string& estimator, std::size_t seed_index, std::size_t seeds);
+
+/// What the camera measured in the run of seed index `seed_index` (run seed
+/// derive_seed(base_seed, seed_index)): a frame per camera frame, with that seed's sensor noise.
+/// Every estimator of that run tracks these frames.
+std::vector<Frame> measurement_stream(const sim::ExperimentConfig& config,
+                                      const Observation& observation, std::uint64_t base_seed,
+                                      std::size_t seed_index);
 
 /// Runs seed indices first_seed .. first_seed + seeds - 1, each with run seed
 /// derive_seed(base_seed, index): a part of a longer run reproduces its seeds exactly (sweeps

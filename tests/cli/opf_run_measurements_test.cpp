@@ -1,0 +1,112 @@
+// End-to-end tests of `opf run --measurements`: a run's detections and truth written as logs,
+// which `opf track` replays to the run's own estimates and `opf evaluate` scores.
+
+#include "cli/opf_program.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace opf {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSource = OPF_SOURCE_DIR;
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream in(line);
+  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
+  return fields;
+}
+
+// The rows of a CSV (names unquoted: general_op's), each as column name -> text.
+std::vector<std::map<std::string, std::string>> rows_of(const std::string& text) {
+  std::stringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = split(line);
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) row[header[i]] = fields[i];
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+// general_op's first 30 frames, seed index 1 (so the replay's seed is not the first's), 200
+// particles: the run writes the seed's detections and the truth, and prints the replay's seed.
+TEST_F(OpfProgram, RunWritesTheDetectionsThatTrackReplaysToTheRunsEstimates) {
+  const fs::path results = dir_ / "results";
+  ASSERT_EQ(run("run " + (kSource / "experiments/general_op.yaml").string() +
+                " --estimators opf --seeds 1 --first-seed 1 --frames 30 --particles 200 "
+                "--no-figures --measurements --out " +
+                results.string()),
+            0)
+      << err();
+  const fs::path log = results / "general_op_measurements_seed1.csv";
+  const fs::path truth = results / "general_op_truth.csv";
+  ASSERT_TRUE(fs::exists(log)) << out();
+  ASSERT_TRUE(fs::exists(truth)) << out();
+  EXPECT_NE(out().find("and 2 measurement logs"), std::string::npos) << out();
+  std::smatch seed;
+  const std::string printed = out();
+  ASSERT_TRUE(std::regex_search(printed, seed,
+                                std::regex("general_op_measurements_seed1.csv: --seed ([0-9]+)")))
+      << printed;
+  // The detector states each detection's silhouette radius and, for a partial view, extra noise.
+  const std::string log_text = read(log);
+  EXPECT_EQ(log_text.substr(0, log_text.find('\n')),
+            "t,object,x,y,z,qx,qy,qz,qw,extra_noise,radius,box_x,box_y,box_z");
+
+  // Every row the run measured is in the log, and nothing else.
+  const auto frames = rows_of(read(results / "general_op_frames.csv"));
+  std::size_t measured = 0;
+  for (const auto& row : frames) measured += row.at("visible") == "1" ? 1 : 0;
+  EXPECT_EQ(rows_of(log_text).size(), measured);
+  EXPECT_EQ(rows_of(read(truth)).size(), 30u * 4u);  // ball, two mugs, box; 30 frames
+
+  // Replayed with the printed seed, the experiment's camera and the run's particles, opf track
+  // gives the run's estimates digit for digit.
+  ASSERT_EQ(run("track --in " + log.string() + " --out " + (dir_ / "replay.csv").string() +
+                " --estimator opf --particles 200 --camera 0.55,0,0.49 --seed " + seed[1].str()),
+            0)
+      << err();
+  std::map<std::pair<std::string, std::string>, std::map<std::string, std::string>> run_rows;
+  for (const auto& row : frames)
+    if (row.at("hypothesis") == "0") run_rows[{row.at("t"), row.at("object")}] = row;
+  const auto replay = rows_of(read(dir_ / "replay.csv"));
+  ASSERT_EQ(replay.size(), run_rows.size());
+  for (const auto& row : replay) {
+    if (row.at("hypothesis") != "0") continue;
+    const auto& expected = run_rows.at({row.at("t"), row.at("object")});
+    for (const char* column : {"x", "y", "z", "qx", "qy", "qz", "qw", "trace", "mode"})
+      EXPECT_EQ(row.at(column), expected.at(column))
+          << column << " of " << row.at("object") << " at t = " << row.at("t");
+  }
+
+  // The truth log is what opf evaluate scores against.
+  EXPECT_EQ(run("evaluate --in " + log.string() + " --truth " + truth.string() +
+                " --estimators pf --seeds 1 --particles 200"),
+            0)
+      << err();
+}
+
+TEST_F(OpfProgram, RunRefusesMeasurementLogsOfAClosedLoop) {
+  EXPECT_EQ(run("run " + (kSource / "experiments/sugar_drop.yaml").string() +
+                " --measurements --seeds 1 --out " + (dir_ / "results").string()),
+            2);
+  EXPECT_NE(err().find("sugar_drop.yaml is a closed loop"), std::string::npos) << err();
+  EXPECT_FALSE(fs::exists(dir_ / "results" / "sugar_drop_frames.csv"));
+}
+
+}  // namespace
+}  // namespace opf
