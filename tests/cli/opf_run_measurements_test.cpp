@@ -1,6 +1,7 @@
 // End-to-end tests of `opf run --measurements`: a run's detections and truth written as logs,
 // which `opf track` replays to the run's own estimates and `opf evaluate` scores.
 
+#include "cli/csv_rows.h"
 #include "cli/opf_program.h"
 
 #include <gtest/gtest.h>
@@ -18,29 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kSource = OPF_SOURCE_DIR;
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream in(line);
-  for (std::string field; std::getline(in, field, ',');) fields.push_back(field);
-  return fields;
-}
-
-// The rows of a CSV (names unquoted: general_op's), each as column name -> text.
-std::vector<std::map<std::string, std::string>> rows_of(const std::string& text) {
-  std::stringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = split(line);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> fields = split(line);
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) row[header[i]] = fields[i];
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
 
 // general_op's first 30 frames, seed index 1 (so the replay's seed is not the first's), 200
 // particles: the run writes the seed's detections and the truth, and prints the replay's seed.
@@ -68,11 +46,11 @@ TEST_F(OpfProgram, RunWritesTheDetectionsThatTrackReplaysToTheRunsEstimates) {
             "t,object,x,y,z,qx,qy,qz,qw,extra_noise,radius,box_x,box_y,box_z");
 
   // Every row the run measured is in the log, and nothing else.
-  const auto frames = rows_of(read(results / "general_op_frames.csv"));
+  const auto frames = csv_rows(read(results / "general_op_frames.csv"));
   std::size_t measured = 0;
   for (const auto& row : frames) measured += row.at("visible") == "1" ? 1 : 0;
-  EXPECT_EQ(rows_of(log_text).size(), measured);
-  EXPECT_EQ(rows_of(read(truth)).size(), 30u * 4u);  // ball, two mugs, box; 30 frames
+  EXPECT_EQ(csv_rows(log_text).size(), measured);
+  EXPECT_EQ(csv_rows(read(truth)).size(), 30u * 4u);  // ball, two mugs, box; 30 frames
 
   // Replayed with the printed seed, the experiment's camera and the run's particles, opf track
   // gives the run's estimates digit for digit.
@@ -83,7 +61,7 @@ TEST_F(OpfProgram, RunWritesTheDetectionsThatTrackReplaysToTheRunsEstimates) {
   std::map<std::pair<std::string, std::string>, std::map<std::string, std::string>> run_rows;
   for (const auto& row : frames)
     if (row.at("hypothesis") == "0") run_rows[{row.at("t"), row.at("object")}] = row;
-  const auto replay = rows_of(read(dir_ / "replay.csv"));
+  const auto replay = csv_rows(read(dir_ / "replay.csv"));
   ASSERT_EQ(replay.size(), run_rows.size());
   for (const auto& row : replay) {
     if (row.at("hypothesis") != "0") continue;

@@ -1,6 +1,7 @@
 // End-to-end tests of `opf sweep`: a tiny grid (the first 40 frames of general_op at 200
 // particles) run by the built binary.
 
+#include "cli/csv_rows.h"
 #include "cli/opf_program.h"
 
 #include <gtest/gtest.h>
@@ -27,31 +28,6 @@ std::string tiny_sweep(const std::string& extra = "") {
          extra;
 }
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> fields;
-  std::stringstream stream(line);
-  for (std::string field; std::getline(stream, field, ',');) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
-}
-
-// Rows of a CSV as column -> value maps.
-std::vector<std::map<std::string, std::string>> rows_of(const std::string& text) {
-  std::stringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = split(line);
-  std::vector<std::map<std::string, std::string>> rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> fields = split(line);
-    EXPECT_EQ(fields.size(), header.size()) << line;
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) row[header[i]] = fields[i];
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 class OpfSweep : public OpfProgram {
  protected:
   fs::path write_sweep(const std::string& text) {
@@ -69,7 +45,7 @@ TEST_F(OpfSweep, RunsTheGridMatchesOpfRunAndResumes) {
   ASSERT_EQ(run("sweep " + sweep.string() + " --out " + results.string() + " --jobs 2"), 0)
       << err();
   const std::string table = read(results / "tiny.csv");
-  const auto rows = rows_of(table);
+  const auto rows = csv_rows(table);
   ASSERT_EQ(rows.size(), 4u) << table;
   for (const auto& row : rows) {
     EXPECT_EQ(row.at("status"), "ok");
@@ -97,7 +73,7 @@ TEST_F(OpfSweep, RunsTheGridMatchesOpfRunAndResumes) {
                 (dir_ / "ref").string()),
             0)
       << err();
-  const auto reference = rows_of(read(dir_ / "ref" / "general_op_runs.csv"));
+  const auto reference = csv_rows(read(dir_ / "ref" / "general_op_runs.csv"));
   ASSERT_EQ(reference.size(), 2u);
   for (std::size_t k = 0; k < 2; ++k)
     for (const char* metric : {"translation_error", "rotation_error_geodesic", "frames"})
@@ -125,7 +101,7 @@ TEST_F(OpfSweep, ReportsFailedRunsAndExitsNonZero) {
   const fs::path log = results / "general_op/opf/default/opf.uncertainty.kappa=1.1/seed_0/log.txt";
   EXPECT_NE(err().find(log.string()), std::string::npos) << err();
   EXPECT_NE(read(log).find("has 330 frames"), std::string::npos) << read(log);
-  const auto rows = rows_of(read(results / "tiny.csv"));
+  const auto rows = csv_rows(read(results / "tiny.csv"));
   ASSERT_EQ(rows.size(), 4u);
   for (const auto& row : rows) {
     EXPECT_EQ(row.at("status"), "missing");
