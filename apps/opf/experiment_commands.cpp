@@ -11,7 +11,8 @@
 #include "estimator_arguments.h"
 #include "opf/core/random.h"
 #include "opf/estimators/registry.h"
-#include "opf/io/csv.h"
+#include "opf/io/atomic_file.h"
+#include "opf/io/estimator_settings_yaml.h"
 #include "provenance.h"
 
 #include <unistd.h>
@@ -41,34 +42,29 @@ std::vector<OptionSpec> specs(bool reproduce) {
     s.push_back({"measurements", "",
                  "also write each seed's detections as a measurement log "
                  "(<name>_measurements_seed<K>.csv, for opf track or another tracker) and the "
-                 "truth (<name>_truth.csv, for opf evaluate --truth); open-loop experiments"});
+                 "truth (<name>_truth.csv, for opf evaluate --truth), with the settings with "
+                 "which opf track reproduces the runs (<name>_settings.yaml); open-loop "
+                 "experiments"});
   }
   s.push_back({"quiet", "", "no progress line (it is drawn only on a terminal anyway)"});
   for (auto& spec : estimator_option_specs()) s.push_back(std::move(spec));
   return s;
 }
 
-// "X,Y,Z", or "X,Y,Z,0" for a camera infinitely far away: as --camera takes it.
-std::string camera_option_text(const Eigen::Vector4d& camera) {
-  const bool at_infinity = camera.w() == 0.0;
-  const Eigen::Vector3d xyz =
-      at_infinity ? camera.head<3>() : Eigen::Vector3d(camera.head<3>() / camera.w());
-  std::string text = csv::format_double(xyz.x()) + ',' + csv::format_double(xyz.y()) + ',' +
-                     csv::format_double(xyz.z());
-  return at_infinity ? text + ",0" : text;
-}
-
-// How `opf track` reproduces the runs on each seed's measurement log: the run's seed for that
-// index, the camera and the options that set the estimators.
-std::vector<std::string> replay_lines(const Arguments& args, const EstimatorSettings& settings,
+// Writes the experiment's effective estimator settings beside its measurement logs, and says how
+// `opf track` reproduces the runs on each seed's log: those settings and the run's seed for that
+// index.
+std::vector<std::string> replay_lines(const std::filesystem::path& out,
+                                      const sim::ExperimentConfig& config,
+                                      const EstimatorSettings& settings,
                                       const std::vector<std::filesystem::path>& logs,
                                       std::uint64_t seed, std::size_t first_seed) {
-  std::string options;
-  for (const char* name : {"preset", "config", "particles"})
-    if (const auto value = args.get(name)) options += std::string(" --") + name + ' ' + *value;
-  std::vector<std::string> lines = {"opf track --in LOG --estimator E --seed S --camera " +
-                                    camera_option_text(*settings.opf.occluder.camera_position) +
-                                    options + " reproduces this run's estimates of E on LOG:"};
+  const std::filesystem::path settings_file = out / (config.name + "_settings.yaml");
+  write_file_atomically(settings_file,
+                        [&](std::ostream& file) { file << dump_estimator_settings(settings); });
+  std::vector<std::string> lines = {"opf track --in LOG --config " + settings_file.string() +
+                                    " --estimator E --seed S reproduces this run's estimates of E "
+                                    "on LOG:"};
   for (std::size_t i = 0; i + 1 < logs.size(); ++i)  // the truth is last
     lines.push_back("  " + logs[i].filename().string() + ": --seed " +
                     std::to_string(derive_seed(seed, first_seed + i)));
@@ -133,7 +129,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
       const auto written =
           experiments::write_measurement_logs(out, config, observation, seed, first_seed, seeds);
       logs += written.size();
-      for (auto& line : replay_lines(args, settings, written, seed, first_seed))
+      for (auto& line : replay_lines(out, config, settings, written, seed, first_seed))
         replays.push_back(std::move(line));
     }
     if (with_figures)
@@ -152,7 +148,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   experiments::print_results_table(std::cout, all);
   std::cout << "\nper-frame and per-run results, summary.json, " << figures.size()
             << " figure files (PNG, SVG)";
-  if (with_measurements) std::cout << " and " << logs << " measurement logs";
+  if (with_measurements) std::cout << ", " << logs << " measurement logs and their settings";
   std::cout << " written to " << out.string() << "\n";
   for (const std::string& line : replays) std::cout << line << '\n';
   return 0;

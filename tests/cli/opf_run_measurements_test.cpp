@@ -34,12 +34,16 @@ TEST_F(OpfProgram, RunWritesTheDetectionsThatTrackReplaysToTheRunsEstimates) {
   const fs::path truth = results / "general_op_truth.csv";
   ASSERT_TRUE(fs::exists(log)) << out();
   ASSERT_TRUE(fs::exists(truth)) << out();
-  EXPECT_NE(out().find("and 2 measurement logs"), std::string::npos) << out();
-  std::smatch seed;
+  EXPECT_NE(out().find(", 2 measurement logs and their settings"), std::string::npos) << out();
+  std::smatch seed, settings;
   const std::string printed = out();
   ASSERT_TRUE(std::regex_search(printed, seed,
                                 std::regex("general_op_measurements_seed1.csv: --seed ([0-9]+)")))
       << printed;
+  ASSERT_TRUE(
+      std::regex_search(printed, settings, std::regex("opf track --in LOG --config (\\S+)")))
+      << printed;
+  EXPECT_EQ(fs::path(settings[1].str()), results / "general_op_settings.yaml");
   // The detector states each detection's silhouette radius and, for a partial view, extra noise.
   const std::string log_text = read(log);
   EXPECT_EQ(log_text.substr(0, log_text.find('\n')),
@@ -52,10 +56,10 @@ TEST_F(OpfProgram, RunWritesTheDetectionsThatTrackReplaysToTheRunsEstimates) {
   EXPECT_EQ(csv_rows(log_text).size(), measured);
   EXPECT_EQ(csv_rows(read(truth)).size(), 30u * 4u);  // ball, two mugs, box; 30 frames
 
-  // Replayed with the printed seed, the experiment's camera and the run's particles, opf track
-  // gives the run's estimates digit for digit.
+  // Replayed with the printed settings (the run's particles and the experiment's camera among
+  // them) and seed, opf track gives the run's estimates digit for digit.
   ASSERT_EQ(run("track --in " + log.string() + " --out " + (dir_ / "replay.csv").string() +
-                " --estimator opf --particles 200 --camera 0.55,0,0.49 --seed " + seed[1].str()),
+                " --estimator opf --config " + settings[1].str() + " --seed " + seed[1].str()),
             0)
       << err();
   std::map<std::pair<std::string, std::string>, std::map<std::string, std::string>> run_rows;
