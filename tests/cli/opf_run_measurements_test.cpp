@@ -8,7 +8,6 @@
 
 #include <filesystem>
 #include <map>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,6 +18,14 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kSource = OPF_SOURCE_DIR;
+
+// The word (up to a space or the line's end) that follows `label` in `text`; empty if none.
+std::string word_after(const std::string& text, const std::string& label) {
+  const std::size_t at = text.find(label);
+  if (at == std::string::npos) return "";
+  const std::size_t begin = at + label.size();
+  return text.substr(begin, text.find_first_of(" \n", begin) - begin);
+}
 
 // general_op's first 30 frames, seed index 1 (so the replay's seed is not the first's), 200
 // particles: the run writes the seed's detections and the truth, and prints the replay's seed.
@@ -35,15 +42,11 @@ TEST_F(OpfProgram, RunWritesTheDetectionsThatTrackReplaysToTheRunsEstimates) {
   ASSERT_TRUE(fs::exists(log)) << out();
   ASSERT_TRUE(fs::exists(truth)) << out();
   EXPECT_NE(out().find(", 2 measurement logs and their settings"), std::string::npos) << out();
-  std::smatch seed, settings;
   const std::string printed = out();
-  ASSERT_TRUE(std::regex_search(printed, seed,
-                                std::regex("general_op_measurements_seed1.csv: --seed ([0-9]+)")))
-      << printed;
-  ASSERT_TRUE(
-      std::regex_search(printed, settings, std::regex("opf track --in LOG --config (\\S+)")))
-      << printed;
-  EXPECT_EQ(fs::path(settings[1].str()), results / "general_op_settings.yaml");
+  const std::string seed = word_after(printed, "general_op_measurements_seed1.csv: --seed ");
+  const std::string settings = word_after(printed, "opf track --in LOG --config ");
+  ASSERT_FALSE(seed.empty()) << printed;
+  EXPECT_EQ(fs::path(settings), results / "general_op_settings.yaml") << printed;
   // The detector states each detection's silhouette radius and, for a partial view, extra noise.
   const std::string log_text = read(log);
   EXPECT_EQ(log_text.substr(0, log_text.find('\n')),
@@ -59,7 +62,7 @@ TEST_F(OpfProgram, RunWritesTheDetectionsThatTrackReplaysToTheRunsEstimates) {
   // Replayed with the printed settings (the run's particles and the experiment's camera among
   // them) and seed, opf track gives the run's estimates digit for digit.
   ASSERT_EQ(run("track --in " + log.string() + " --out " + (dir_ / "replay.csv").string() +
-                " --estimator opf --config " + settings[1].str() + " --seed " + seed[1].str()),
+                " --estimator opf --config " + settings + " --seed " + seed),
             0)
       << err();
   std::map<std::pair<std::string, std::string>, std::map<std::string, std::string>> run_rows;
