@@ -51,17 +51,11 @@ std::vector<OptionSpec> specs(bool reproduce) {
   return s;
 }
 
-// Writes the experiment's effective estimator settings beside its measurement logs, and says how
-// `opf track` reproduces the runs on each seed's log: those settings and the run's seed for that
-// index.
-std::vector<std::string> replay_lines(const std::filesystem::path& out,
-                                      const sim::ExperimentConfig& config,
-                                      const EstimatorSettings& settings,
+// How `opf track` reproduces the runs on each seed's measurement log: with the settings in
+// `settings_file` and the run's seed for that log's index.
+std::vector<std::string> replay_lines(const std::filesystem::path& settings_file,
                                       const std::vector<std::filesystem::path>& logs,
                                       std::uint64_t seed, std::size_t first_seed) {
-  const std::filesystem::path settings_file = out / (config.name + "_settings.yaml");
-  write_file_atomically(settings_file,
-                        [&](std::ostream& file) { file << dump_estimator_settings(settings); });
   std::vector<std::string> lines = {"opf track --in LOG --config " + settings_file.string() +
                                     " --estimator E --seed S reproduces this run's estimates of E "
                                     "on LOG:"};
@@ -129,7 +123,10 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
       const auto written =
           experiments::write_measurement_logs(out, config, observation, seed, first_seed, seeds);
       logs += written.size();
-      for (auto& line : replay_lines(out, config, settings, written, seed, first_seed))
+      const std::filesystem::path settings_file = out / (config.name + "_settings.yaml");
+      write_file_atomically(settings_file,
+                            [&](std::ostream& file) { file << dump_estimator_settings(settings); });
+      for (auto& line : replay_lines(settings_file, written, seed, first_seed))
         replays.push_back(std::move(line));
     }
     if (with_figures)

@@ -6,8 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(OPF_NO_DISPATCH)
-#define OPF_MEMBER_PERMUTES 1
+#ifdef OPF_KERNEL_DISPATCH
 #include <immintrin.h>
 // GCC 12's intrinsics pass _mm512_undefined_epi32() as the unused merge source, which trips
 // -Wmaybe-uninitialized where they are inlined (GCC bug 105593, fixed in GCC 13).
@@ -25,15 +24,7 @@ OPF_KERNEL void generic_step(double* __restrict x, const float* __restrict noise
     x[i] += offset[member[i]] + spread[member[i]] * static_cast<double>(noise[i]);
 }
 
-#ifdef OPF_MEMBER_PERMUTES
-
-bool cpu_has_avx512f() {
-  static const bool available = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") != 0;
-  }();
-  return available;
-}
+#ifdef OPF_KERNEL_DISPATCH
 
 // The tables' first kPermuteTableSize entries as four registers each: a member's low four bits
 // pick a lane of a pair, its fifth bit the pair.
@@ -68,12 +59,7 @@ bool cpu_has_avx512f() {
 }  // namespace
 
 bool member_step_uses_permutes(std::size_t members) {
-#ifdef OPF_MEMBER_PERMUTES
   return members <= kPermuteTableSize && cpu_has_avx512f();
-#else
-  (void)members;
-  return false;
-#endif
 }
 
 void add_member_offset_and_noise_generic(double* x, const float* noise, const std::uint8_t* member,
@@ -87,7 +73,7 @@ void add_member_offset_and_noise_permute(double* x, const float* noise, const st
                                          std::size_t members, std::size_t count) {
   if (!member_step_uses_permutes(members))
     throw std::logic_error("add_member_offset_and_noise_permute: no AVX-512, or over 32 members");
-#ifdef OPF_MEMBER_PERMUTES
+#ifdef OPF_KERNEL_DISPATCH
   permute_step(x, noise, member, offset.data(), spread.data(), count);
 #else
   (void)x, (void)noise, (void)member, (void)offset, (void)spread, (void)count;
@@ -97,10 +83,13 @@ void add_member_offset_and_noise_permute(double* x, const float* noise, const st
 void add_member_offset_and_noise(double* x, const float* noise, const std::uint8_t* member,
                                  const MemberTable& offset, const MemberTable& spread,
                                  std::size_t members, std::size_t count) {
+#ifdef OPF_KERNEL_DISPATCH
   if (member_step_uses_permutes(members))
-    add_member_offset_and_noise_permute(x, noise, member, offset, spread, members, count);
-  else
-    add_member_offset_and_noise_generic(x, noise, member, offset, spread, count);
+    return permute_step(x, noise, member, offset.data(), spread.data(), count);
+#else
+  (void)members;
+#endif
+  generic_step(x, noise, member, offset.data(), spread.data(), count);
 }
 
 }  // namespace opf::kernels

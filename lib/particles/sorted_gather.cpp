@@ -1,9 +1,11 @@
 #include "opf/particles/sorted_gather.h"
 
+#include "opf/particles/kernel_dispatch.h"
+
 #include <algorithm>
 #include <utility>
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(OPF_NO_DISPATCH)
+#ifdef OPF_KERNEL_DISPATCH
 #define OPF_GATHER_PERMUTES 1
 #include <immintrin.h>
 // GCC 12's intrinsics pass _mm512_undefined_epi32() as the unused merge source, which trips
@@ -68,15 +70,7 @@ void scalar_block(const std::int32_t* p, std::size_t k, const T* in, std::size_t
 }  // namespace
 
 bool gather_uses_permutes() {
-#ifdef OPF_GATHER_PERMUTES
-  static const bool available = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") != 0;
-  }();
-  return available;
-#else
-  return false;
-#endif
+  return cpu_has_avx512f();
 }
 
 bool gather_uses_avx2() {
