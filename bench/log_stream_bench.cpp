@@ -103,7 +103,8 @@ void BM_LogStream(benchmark::State& state) {
     std::size_t done = 0;
     while (const auto frame = stream.next()) {
       const auto start = std::chrono::steady_clock::now();
-      for (const Estimate& estimate : tracker.step(*frame)) write_estimate_row(out, estimate);
+      for (const Estimate& estimate : tracker.step(*frame))
+        write_estimate_row(out, estimate, settings.opf.feedback.epsilon_safe);
       out.flush();
       latencies.at(done++) =
           std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)

@@ -495,7 +495,6 @@ Estimate ObjectPermanenceFilter::make_estimate(const Hypothesis& h, int index) c
   estimate.t = t_;
   estimate.pose = h.filter.estimate();
   estimate.observation_trace = h.last.observation_trace;
-  estimate.alert = safety_alert(estimate.observation_trace, options_.feedback);
   estimate.hypothesis = index;
   estimate.probability = h.probability;
   estimate.recovery = h.last.recovery;

@@ -7,7 +7,7 @@
 
 namespace opf::python {
 
-PyEstimate to_python(const Estimate& estimate) {
+PyEstimate to_python(const Estimate& estimate, double epsilon_safe) {
   PyEstimate p;
   p.object = estimate.object;
   p.t = estimate.t;
@@ -23,7 +23,7 @@ PyEstimate to_python(const Estimate& estimate) {
   p.mode = mode_column(estimate.mode, estimate.recovery);
   p.hypothesis = estimate.hypothesis;
   p.probability = estimate.probability;
-  p.alert = estimate.alert;
+  p.alert = safety_alert(estimate, epsilon_safe);
   p.model = estimate.motion_model;
   return p;
 }

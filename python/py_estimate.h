@@ -24,7 +24,8 @@ struct PyEstimate {
   std::string model;
 };
 
-/// The numbers are those write_estimate_row writes (io/estimate_csv.h), before formatting.
-PyEstimate to_python(const Estimate& estimate);
+/// The numbers are those write_estimate_row writes (io/estimate_csv.h), before formatting; the
+/// alert is safety_alert at the feedback module's `epsilon_safe`.
+PyEstimate to_python(const Estimate& estimate, double epsilon_safe);
 
 }  // namespace opf::python

@@ -100,8 +100,13 @@ EstimatorSettings checked_settings(const SettingsArguments& arguments) {
 }  // namespace
 
 PyTracker::PyTracker(const std::string& estimator, std::uint64_t seed,
-                     const SettingsArguments& settings)
-    : tracker_(make_estimator_factory(estimator, checked_settings(settings)), seed) {}
+                     const SettingsArguments& arguments)
+    : PyTracker(estimator, seed, checked_settings(arguments)) {}
+
+PyTracker::PyTracker(const std::string& estimator, std::uint64_t seed,
+                     const EstimatorSettings& settings)
+    : epsilon_safe_(settings.opf.feedback.epsilon_safe),
+      tracker_(make_estimator_factory(estimator, settings), seed) {}
 
 std::map<std::string, PyEstimate> PyTracker::step(
     double t, const std::map<std::string, py::object>& detections) {
@@ -111,7 +116,7 @@ std::map<std::string, PyEstimate> PyTracker::step(
   const py::gil_scoped_release release;
   const std::lock_guard lock(mutex_);
   std::map<std::string, PyEstimate> out;
-  for (const Estimate& e : tracker_.step(frame)) out.emplace(e.object, to_python(e));
+  for (const Estimate& e : tracker_.step(frame)) out.emplace(e.object, to_python(e, epsilon_safe_));
   return out;
 }
 
@@ -119,7 +124,7 @@ std::vector<PyEstimate> PyTracker::hypotheses() {
   const py::gil_scoped_release release;
   const std::lock_guard lock(mutex_);
   std::vector<PyEstimate> out;
-  for (const Estimate& e : tracker_.hypotheses()) out.push_back(to_python(e));
+  for (const Estimate& e : tracker_.hypotheses()) out.push_back(to_python(e, epsilon_safe_));
   return out;
 }
 

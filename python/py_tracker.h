@@ -32,7 +32,10 @@ class PyTracker {
   std::vector<PyEstimate> hypotheses();
 
  private:
-  std::mutex mutex_;  // held by the step under way (and readers), taken without the GIL
+  PyTracker(const std::string& estimator, std::uint64_t seed, const EstimatorSettings& settings);
+
+  std::mutex mutex_;     // held by the step under way (and readers), taken without the GIL
+  double epsilon_safe_;  // the feedback module's alert threshold
   Tracker tracker_;
 };
 

@@ -30,10 +30,11 @@ py::array_t<double> numbers(const std::vector<double>& values) {
 // The estimate file's columns as they fill, in its order (io/estimate_csv.cpp).
 class ColumnTable {
  public:
-  explicit ColumnTable(bool covariance) : covariance_(covariance) {}
+  ColumnTable(double epsilon_safe, bool covariance)
+      : epsilon_safe_(epsilon_safe), covariance_(covariance) {}
 
   void add(const Estimate& estimate) {
-    const PyEstimate p = to_python(estimate);
+    const PyEstimate p = to_python(estimate, epsilon_safe_);
     t_.push_back(p.t);
     object_.push_back(p.object);
     const std::array<double, 8> pose = {p.position.x(),  p.position.y(),  p.position.z(),
@@ -73,6 +74,7 @@ class ColumnTable {
   }
 
  private:
+  double epsilon_safe_;
   bool covariance_;
   std::vector<double> t_;
   std::vector<std::string> object_;
@@ -93,7 +95,7 @@ py::dict track_log(const TrackLogArguments& arguments) {
   const EstimatorSettings settings = settings_from(arguments.settings);
   require_camera_for_line_of_sight(settings);
   const LogReadOptions options = log_options_from(arguments.log, arguments.path);
-  ColumnTable table(arguments.covariance);
+  ColumnTable table(settings.opf.feedback.epsilon_safe, arguments.covariance);
   {
     const py::gil_scoped_release release;
     Tracker tracker(make_estimator_factory(arguments.estimator, settings), arguments.seed);

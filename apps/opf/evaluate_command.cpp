@@ -107,7 +107,7 @@ ScoredRun run_once(const MeasurementLog& log, const TruthTable& truth, const std
                    const EstimatorSettings& settings, std::uint64_t seed, std::size_t threads,
                    const std::string& truth_path, double alert_distance) {
   Tracker tracker(make_estimator_factory(name, settings), seed, threads);
-  ErrorAccumulator errors(alert_distance);
+  ErrorAccumulator errors(settings.opf.feedback.epsilon_safe, alert_distance);
   ScoredRun run;
   for (const Frame& frame : log.frames) {
     for (const Estimate& estimate : tracker.step(frame)) {

@@ -111,8 +111,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
       all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
                                                  threads, first_seed));
       if (with_figures)
-        for (auto& figure : experiments::write_figures(out, config, {}, all.back(),
-                                                       settings.opf.feedback.epsilon_safe))
+        for (auto& figure : experiments::write_figures(out, config, {}, all.back()))
           figures.push_back(std::move(figure));
       continue;
     }
@@ -130,8 +129,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
         replays.push_back(std::move(line));
     }
     if (with_figures)
-      for (auto& figure : experiments::write_figures(out, config, observation, all.back(),
-                                                     settings.opf.feedback.epsilon_safe))
+      for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
         figures.push_back(std::move(figure));
   }
   if (show_progress) std::cerr << "\r\033[K";

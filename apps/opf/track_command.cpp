@@ -94,30 +94,33 @@ constexpr const char* kSummary =
     "(predicted, dynamics, carried, left, random_walk; +filled in a gap). The OPF treats every\n"
     "object in the log as a possible occluder of every other. Further hypotheses (carried by\n"
     "another occluder, or left) follow as extra rows with hypothesis >= 1, each with its\n"
-    "probability; alert is 1 when trace(Q~) >=\n"
-    "epsilon_safe. A file is read whole (rows in any order) and the output written only when\n"
+    "probability; alert is 1 when the row's trace(Q~) reaches epsilon_safe, for any\n"
+    "estimator. A file is read whole (rows in any order) and the output written only when\n"
     "the whole run succeeded; a stream (--in - or --stream) is answered frame by frame.\n"
     "The log, estimate and settings formats: docs/formats.md.";
 
 /// Steps the tracker through frames and writes their estimates, counting what it wrote.
 class EstimateWriter {
  public:
-  EstimateWriter(Tracker& tracker, EstimateColumns columns,
+  EstimateWriter(Tracker& tracker, double epsilon_safe, EstimateColumns columns,
                  std::function<void(std::size_t objects)> on_objects)
-      : tracker_(tracker), columns_(columns), on_objects_(std::move(on_objects)) {}
+      : tracker_(tracker),
+        epsilon_safe_(epsilon_safe),
+        columns_(columns),
+        on_objects_(std::move(on_objects)) {}
 
   void write(std::ostream& out, const Frame& frame) {
     for (const Detection& detection : frame.detections)
       if (objects_.insert(detection.object).second) on_objects_(objects_.size());
     for (Estimate estimate : tracker_.step(frame)) {
       estimate.recovery.frame_filled = frame.filled;
-      write_estimate_row(out, estimate, columns_);
+      write_estimate_row(out, estimate, epsilon_safe_, columns_);
       ++rows_;
     }
     // Further hypotheses (the OPF's virtual objects) follow as extra rows, hypothesis >= 1.
     for (Estimate hypothesis : tracker_.hypotheses()) {
       hypothesis.recovery.frame_filled = frame.filled;
-      write_estimate_row(out, hypothesis, columns_);
+      write_estimate_row(out, hypothesis, epsilon_safe_, columns_);
       ++rows_;
     }
     ++frames_;
@@ -128,6 +131,7 @@ class EstimateWriter {
 
  private:
   Tracker& tracker_;
+  double epsilon_safe_;
   EstimateColumns columns_;
   std::function<void(std::size_t)> on_objects_;
   std::set<std::string> objects_;
@@ -224,9 +228,11 @@ int track_command(const std::vector<std::string>& raw) {
   const bool warn_camera = !quiet && estimator == "opf" && assumes_top_down_camera(settings);
   Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args), threads_from(args));
   const EstimateColumns columns{.covariance = args.has("covariance")};
-  EstimateWriter writer(tracker, columns, [&](std::size_t objects) {
-    if (warn_camera && objects == 2) std::cerr << missing_camera_warning("track");
-  });
+  EstimateWriter writer(tracker, settings.opf.feedback.epsilon_safe, columns,
+                        [&](std::size_t objects) {
+                          if (warn_camera && objects == 2)
+                            std::cerr << missing_camera_warning("track");
+                        });
 
   FrameAssemblyReport assembly;
   std::string written;  // what the closing line says was written, and where

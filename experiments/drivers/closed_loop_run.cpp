@@ -114,8 +114,15 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
   if (!config.closed_loop)
     throw std::invalid_argument("run_closed_loop: not a closed-loop experiment");
   const sim::ClosedLoopSettings& loop = *config.closed_loop;
-  ExperimentResults results{config.name, estimators, seeds,      {},
-                            {},          {},         first_seed, config.objects_of_interest};
+  ExperimentResults results{config.name,
+                            estimators,
+                            seeds,
+                            {},
+                            {},
+                            {},
+                            first_seed,
+                            config.objects_of_interest,
+                            settings.opf.feedback.epsilon_safe};
   // One renderer for all runs: MRPT allows one off-screen renderer per process at a time.
   sim::CameraSensor sensor(camera_of(config));
   const double dt = 1.0 / config.rate;
@@ -128,7 +135,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
       Episode episode(loop, scene);
       Random noise = measurement_noise(seed);
       Tracker tracker(make_estimator_factory(name, settings), seed, threads);
-      ErrorAccumulator errors;
+      ErrorAccumulator errors(settings.opf.feedback.epsilon_safe);
       for (int k = 0; k < config.frames; ++k) {
         const double t = k * dt;
         episode.move_bodies(t);

@@ -41,8 +41,15 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
                                 std::size_t threads, std::size_t first_seed) {
   if (observation.truth.size() != observation.camera.size())
     throw std::invalid_argument("run_open_loop: truth and camera frames differ in number");
-  ExperimentResults results{config.name, estimators, seeds,      {},
-                            {},          {},         first_seed, config.objects_of_interest};
+  ExperimentResults results{config.name,
+                            estimators,
+                            seeds,
+                            {},
+                            {},
+                            {},
+                            first_seed,
+                            config.objects_of_interest,
+                            settings.opf.feedback.epsilon_safe};
 
   for (std::size_t s = first_seed; s < first_seed + seeds; ++s) {
     // The seed's measurement stream, shared by every estimator (paired comparison).
@@ -52,7 +59,7 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
     for (const std::string& name : estimators) {
       report_progress(progress, config, name, s - first_seed, seeds);
       Tracker tracker(make_estimator_factory(name, settings), seed, threads);
-      ErrorAccumulator errors;
+      ErrorAccumulator errors(settings.opf.feedback.epsilon_safe);
       for (std::size_t k = 0; k < frames.size(); ++k) {
         const sim::SceneSnapshot& truth = observation.truth[k];
         const auto truth_of = [&](const std::string& object) -> const sim::BodyPose& {

@@ -295,11 +295,10 @@ std::string figure_title(const std::string& experiment, const std::string& objec
 std::vector<std::filesystem::path> write_figures(const std::filesystem::path& dir,
                                                  const sim::ExperimentConfig& config,
                                                  const Observation& observation,
-                                                 const ExperimentResults& results,
-                                                 double epsilon_safe) {
+                                                 const ExperimentResults& results) {
   std::vector<std::filesystem::path> written;
   for (const std::string& object : config.objects_of_interest)
-    write_time_charts(dir, config, results, object, epsilon_safe, written);
+    write_time_charts(dir, config, results, object, results.epsilon_safe, written);
   // Where an estimator kept more than one hypothesis: a top view of each one's track.
   for (const std::string& object : config.objects_of_interest)
     for (const std::string& estimator : in_figure_order(results.estimators)) {

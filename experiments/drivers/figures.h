@@ -22,13 +22,12 @@ std::string figure_title(const std::string& experiment, const std::string& objec
 
 /// Writes <experiment>_<object>_{translation_error,rotation_error,trace}.{png,svg}, where an
 /// estimator kept more than one hypothesis <experiment>_<object>_<estimator>_hypotheses.{png,svg},
-/// and <experiment>_snapshot.png into `dir`; returns the paths written. `epsilon_safe` is the
-/// feedback module's alert threshold on trace(Q~), drawn on the trace figure. Series on the same
-/// values are named together in the legend (coinciding_series.h).
+/// and <experiment>_snapshot.png into `dir`; returns the paths written. The trace figure draws
+/// the feedback module's alert threshold (results.epsilon_safe). Series on the same values are
+/// named together in the legend (coinciding_series.h).
 std::vector<std::filesystem::path> write_figures(const std::filesystem::path& dir,
                                                  const sim::ExperimentConfig& config,
                                                  const Observation& observation,
-                                                 const ExperimentResults& results,
-                                                 double epsilon_safe);
+                                                 const ExperimentResults& results);
 
 }  // namespace opf::experiments

@@ -116,8 +116,8 @@ void write_records_csv(const std::filesystem::path& path, const ExperimentResult
           << number(q.w()) << ',' << number(r.estimate.observation_trace) << ','
           << mode_column(r.estimate.mode, r.estimate.recovery) << ',' << (r.visible ? 1 : 0) << ','
           << r.estimate.hypothesis << ',' << number(r.estimate.probability) << ','
-          << (r.estimate.alert ? 1 : 0) << ',' << csv::quote_if_needed(r.estimate.motion_model)
-          << '\n';
+          << (safety_alert(r.estimate, results.epsilon_safe) ? 1 : 0) << ','
+          << csv::quote_if_needed(r.estimate.motion_model) << '\n';
     }
   });
 }

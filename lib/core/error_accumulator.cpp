@@ -23,7 +23,10 @@ double ratio_or_nan(std::size_t numerator, std::size_t denominator) {
 
 }  // namespace
 
-ErrorAccumulator::ErrorAccumulator(double alert_distance) : alert_distance_(alert_distance) {
+ErrorAccumulator::ErrorAccumulator(double epsilon_safe, double alert_distance)
+    : epsilon_safe_(epsilon_safe), alert_distance_(alert_distance) {
+  if (!(epsilon_safe > 0.0) || !std::isfinite(epsilon_safe))
+    throw std::invalid_argument("ErrorAccumulator: epsilon_safe must be positive");
   if (!(alert_distance > 0.0) || !std::isfinite(alert_distance))
     throw std::invalid_argument("ErrorAccumulator: the alert distance must be positive (m)");
 }
@@ -37,8 +40,9 @@ void ErrorAccumulator::add(const Estimate& estimate, const mrpt::poses::CPose3D&
   ++frames_;
   const bool large = translation > alert_distance_;
   large_errors_ += large;
-  alerts_ += estimate.alert;
-  alerts_on_large_errors_ += large && estimate.alert;
+  const bool alert = safety_alert(estimate, epsilon_safe_);
+  alerts_ += alert;
+  alerts_on_large_errors_ += large && alert;
   const bool measured = estimate.mode == EstimateMode::kMeasured;
   reacquisition_.add(estimate.object, measured, translation);
   if (measured) {

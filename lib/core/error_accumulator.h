@@ -43,8 +43,9 @@ struct RunErrors {
   double inside95_translation = 0.0;
   double inside95_rotation = 0.0;
   ReacquisitionResult reacquisition;
-  /// The alert as a detector of "translation error above the alert distance", over all frames:
-  /// precision (NaN without an alert) and recall (NaN without such a frame).
+  /// The alert (safety_alert: trace >= epsilon_safe) as a detector of "translation error above
+  /// the alert distance", over all frames: precision (NaN without an alert) and recall (NaN
+  /// without such a frame).
   double alert_precision = 0.0;
   double alert_recall = 0.0;
   std::vector<HiddenErrorBin> hidden_profile;  ///< means per 0.1 s of time hidden
@@ -57,8 +58,9 @@ class ErrorAccumulator {
   /// The error an alert should announce, m (docs/metrics.md).
   static constexpr double kDefaultAlertDistance = 0.1;
 
-  /// Throws std::invalid_argument unless `alert_distance` is positive and finite.
-  explicit ErrorAccumulator(double alert_distance = kDefaultAlertDistance);
+  /// `epsilon_safe`: the feedback module's threshold on every estimate's trace, which raises the
+  /// alert. Throws std::invalid_argument unless both are positive and finite.
+  explicit ErrorAccumulator(double epsilon_safe, double alert_distance = kDefaultAlertDistance);
 
   /// One estimate of one object, in time order per object.
   void add(const Estimate& estimate, const mrpt::poses::CPose3D& truth);
@@ -79,6 +81,7 @@ class ErrorAccumulator {
   double nees_rotation_ = 0.0;
   std::size_t inside95_translation_ = 0;
   std::size_t inside95_rotation_ = 0;
+  double epsilon_safe_;
   double alert_distance_;
   std::size_t alerts_ = 0, large_errors_ = 0, alerts_on_large_errors_ = 0;
   std::map<std::string, double> last_measured_;  ///< per object, s

@@ -27,12 +27,18 @@ struct Estimate {
   int hypothesis = 0;
   /// The hypothesis's probability among the object's (1 for an object's only estimate).
   double probability = 1.0;
-  /// The feedback module's safety alert: observation_trace >= epsilon_safe (paper Sec. III-C).
-  bool alert = false;
   /// The motion model behind the estimate, where an estimator chooses among several (the OPF's
   /// most probable bank model per axis x, y, z, then the rotation's, while hidden; the IMM's
   /// most probable model per axis); empty otherwise.
   std::string motion_model;
 };
+
+/// The feedback module's safety alert (paper Sec. III-C.1, Eq. 15): the estimate's trace of the
+/// observation covariance has reached epsilon_safe, and the robot should stop, fall back to a safe
+/// mode or alert the operator. It is a function of any estimator's trace, so the alert columns of
+/// result files apply it to every estimator alike.
+inline bool safety_alert(const Estimate& estimate, double epsilon_safe) {
+  return estimate.observation_trace >= epsilon_safe;
+}
 
 }  // namespace opf

@@ -39,7 +39,8 @@ void write_estimate_header(std::ostream& out, EstimateColumns columns) {
   out << '\n';
 }
 
-void write_estimate_row(std::ostream& out, const Estimate& estimate, EstimateColumns columns) {
+void write_estimate_row(std::ostream& out, const Estimate& estimate, double epsilon_safe,
+                        EstimateColumns columns) {
   const mrpt::poses::CPose3D& mean = estimate.pose.mean;
   Eigen::Quaterniond q = orientation_of(mean);
   // q and -q are the same rotation; one sign makes files comparable. Adding 0.0 turns -0 into 0.
@@ -55,7 +56,7 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate, EstimateCol
   for (int i = 0; i < 6; ++i) row += ',' + csv::format_double(std::sqrt(estimate.pose.cov(i, i)));
   row += ',' + std::to_string(estimate.hypothesis);
   row += ',' + csv::format_double(estimate.probability);
-  row += estimate.alert ? ",1," : ",0,";
+  row += safety_alert(estimate, epsilon_safe) ? ",1," : ",0,";
   row += csv::quote_if_needed(estimate.motion_model);
   if (columns.covariance)
     for (int i = 0; i < 6; ++i)

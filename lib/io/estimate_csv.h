@@ -23,7 +23,10 @@ struct EstimateColumns {
 };
 
 void write_estimate_header(std::ostream& out, EstimateColumns columns = {});
-void write_estimate_row(std::ostream& out, const Estimate& estimate, EstimateColumns columns = {});
+/// `epsilon_safe`: the feedback module's threshold; the alert column is safety_alert at it, for any
+/// estimator's estimate.
+void write_estimate_row(std::ostream& out, const Estimate& estimate, double epsilon_safe,
+                        EstimateColumns columns = {});
 
 /// One row of an estimate file. The standard deviations are not read back.
 struct EstimateRecord {

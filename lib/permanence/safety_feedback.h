@@ -1,6 +1,6 @@
 #pragma once
-// The feedback module's human-intervention signal (paper Sec. III-C.1, Eq. 15): the uncertainty
-// U = trace(Q~) and the alert raised when it reaches the safety threshold.
+// The feedback module's threshold (paper Sec. III-C.1, Eq. 15): the alert is raised when the
+// uncertainty U = trace(Q~) reaches it (safety_alert, core/estimate.h).
 
 #include "opf/core/option_schema.h"
 
@@ -16,11 +16,6 @@ struct FeedbackOptions {
 template <class Visitor>
 void describe_options(Visitor& v, FeedbackOptions& o) {
   v.number("epsilon_safe", o.epsilon_safe, positive());
-}
-
-/// U >= epsilon_safe: the robot should stop, fall back to a safe mode or alert the operator.
-inline bool safety_alert(double uncertainty, const FeedbackOptions& options) {
-  return uncertainty >= options.epsilon_safe;
 }
 
 }  // namespace opf

@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace opf {
@@ -92,6 +93,32 @@ TEST_F(OpfProgram, TrackRoundTripsTheExampleLog) {
 // mode column; the Kalman filter has no particles to rescue. With sensor resetting off the
 // particle filters' weights underflow at frame 15 instead (3 m is 300 sigmas): the cloud stays
 // where it was, so frame 16 is an ordinary update.
+// The alert column is the feedback module's rule on each row's trace, for every estimator: the
+// baselines' constant trace(Q) = 3 * 0.01^2 + 3 * 0.05^2 = 0.0078 raises none at the default
+// epsilon_safe (0.1) and one on every row at 0.0077; the OPF's rows follow their own trace.
+TEST_F(OpfProgram, TrackRaisesTheAlertOfEveryEstimatorWhoseTraceReachesEpsilonSafe) {
+  std::ofstream(dir_ / "low.yaml") << "opf:\n  feedback:\n    epsilon_safe: 0.0077\n";
+  const std::string low = " --config " + (dir_ / "low.yaml").string();
+  const fs::path est = dir_ / "est.csv";
+  for (const std::string_view estimator : {"pf", "cvkf", "opf"})
+    for (const std::string& config : {std::string(), low}) {
+      ASSERT_EQ(run("track --quiet --particles 500 --in " + kData + "example_log.csv --out " +
+                    est.string() + " --estimator " + std::string(estimator) + config),
+                0)
+          << err();
+      const double epsilon_safe = config.empty() ? 0.1 : 0.0077;
+      std::size_t alerts = 0;
+      const std::vector<EstimateRecord> rows = read_estimate_csv(est);
+      for (const EstimateRecord& r : rows) {
+        ASSERT_EQ(r.alert, r.trace >= epsilon_safe) << estimator << config << " t=" << r.t;
+        alerts += r.alert;
+      }
+      if (estimator != "opf") {
+        EXPECT_EQ(alerts, config.empty() ? 0 : rows.size()) << estimator;
+      }
+    }
+}
+
 TEST_F(OpfProgram, TrackReportsRescuedFramesInTheModeColumn) {
   std::ofstream log(dir_ / "log.csv");
   log << "t,object,x,y,z,qx,qy,qz,qw\n";

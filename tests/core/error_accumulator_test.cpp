@@ -9,6 +9,9 @@
 namespace opf {
 namespace {
 
+// The feedback module's default threshold on trace(Q~).
+constexpr double kEpsilonSafe = 0.1;
+
 Estimate estimate_at(double x, EstimateMode mode) {
   Estimate e;
   e.pose = mrpt::poses::CPose3DPDFGaussian(mrpt::poses::CPose3D(x, 0, 0, 0, 0, 0));
@@ -17,7 +20,7 @@ Estimate estimate_at(double x, EstimateMode mode) {
 }
 
 TEST(ErrorAccumulator, MeansOverAllFramesAndOverUnobservedFrames) {
-  ErrorAccumulator errors;
+  ErrorAccumulator errors(kEpsilonSafe);
   const mrpt::poses::CPose3D truth(0, 0, 0, 0.1, 0, 0);
   errors.add(estimate_at(0.1, EstimateMode::kMeasured), truth);
   errors.add(estimate_at(0.3, EstimateMode::kPredicted), truth);
@@ -39,12 +42,13 @@ Estimate timed(double t, double x, EstimateMode mode, double variance, bool aler
   e.t = t;
   e.pose.cov.setIdentity();
   e.pose.cov *= variance;
-  e.alert = alert;
+  // Any estimator's trace at epsilon_safe raises the alert.
+  e.observation_trace = alert ? kEpsilonSafe : std::nextafter(kEpsilonSafe, 0.0);
   return e;
 }
 
 TEST(ErrorAccumulator, CalibrationAndTimeHiddenOverHiddenFrames) {
-  ErrorAccumulator errors;
+  ErrorAccumulator errors(kEpsilonSafe);
   const mrpt::poses::CPose3D truth(0, 0, 0, 0, 0, 0);
   errors.add(timed(0.0, 0.01, EstimateMode::kMeasured, 1e-4), truth);
   // Hidden: errors 0.1 and 0.3 m against a variance of 0.01 m^2: NEES 1 and 9.
@@ -64,7 +68,7 @@ TEST(ErrorAccumulator, CalibrationAndTimeHiddenOverHiddenFrames) {
 }
 
 TEST(ErrorAccumulator, AlertPrecisionAndRecallAgainstTheAlertDistance) {
-  ErrorAccumulator errors(0.1);
+  ErrorAccumulator errors(kEpsilonSafe, 0.1);
   const mrpt::poses::CPose3D truth(0, 0, 0, 0, 0, 0);
   // Errors 0.05 (alert: false alarm), 0.2 (alert: hit), 0.3 (no alert: miss), 0.01 (quiet).
   errors.add(timed(0.0, 0.05, EstimateMode::kMeasured, 1e-4, true), truth);
@@ -74,11 +78,12 @@ TEST(ErrorAccumulator, AlertPrecisionAndRecallAgainstTheAlertDistance) {
   const RunErrors r = errors.result();
   EXPECT_DOUBLE_EQ(r.alert_precision, 0.5);
   EXPECT_DOUBLE_EQ(r.alert_recall, 0.5);
+  EXPECT_THROW(ErrorAccumulator(kEpsilonSafe, 0.0), std::invalid_argument);
   EXPECT_THROW(ErrorAccumulator(0.0), std::invalid_argument);
 }
 
 TEST(ErrorAccumulator, UndefinedScoresAreNaN) {
-  ErrorAccumulator errors;
+  ErrorAccumulator errors(kEpsilonSafe);
   errors.add(timed(0.0, 0.01, EstimateMode::kMeasured, 1e-4), mrpt::poses::CPose3D());
   const RunErrors r = errors.result();
   EXPECT_TRUE(std::isnan(r.nees_translation));  // no hidden frame
@@ -88,7 +93,7 @@ TEST(ErrorAccumulator, UndefinedScoresAreNaN) {
 }
 
 TEST(ErrorAccumulator, EmptyRunIsAnError) {
-  EXPECT_THROW(ErrorAccumulator().result(), std::logic_error);
+  EXPECT_THROW(ErrorAccumulator(kEpsilonSafe).result(), std::logic_error);
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ ExperimentResults synthetic_results() {
   results.estimators = {"cvkf", "opf", "pf"};  // not in figure order
   results.seeds = 1;
   results.objects_of_interest = {"ball"};
+  results.epsilon_safe = 0.1;
   for (const std::string& estimator : results.estimators)
     for (int k = 0; k < 30; ++k) {
       FrameRecord record;
@@ -60,7 +61,7 @@ TEST(Figures, EachChartIsWrittenAsPngAndSvgTheBaselinesNamedTogether) {
   sim::ExperimentConfig config;
   config.name = "roll";
   config.objects_of_interest = {"ball"};
-  const auto written = write_figures(dir, config, {}, synthetic_results(), 0.1);
+  const auto written = write_figures(dir, config, {}, synthetic_results());
   ASSERT_EQ(written.size(), 6u);  // three charts, no hypotheses, no snapshot (nothing rendered)
   for (const std::string name : {"translation_error", "rotation_error", "trace"})
     for (const std::string extension : {".png", ".svg"})

@@ -363,12 +363,12 @@ TEST(ObjectPermanenceFilter, TraceGrowsExponentiallyWhileHiddenAndResetsOnReappe
     const Estimate& e = opf.estimates[k].at("ball");
     const double expected = trace_q * std::pow(1.03, k - 19);
     ASSERT_NEAR(e.observation_trace, expected, 1e-9 * expected) << k;
-    if (e.alert && first_alert < 0) first_alert = k - 19;
+    if (safety_alert(e, options.feedback.epsilon_safe) && first_alert < 0) first_alert = k - 19;
   }
   EXPECT_EQ(first_alert, static_cast<int>(std::ceil(std::log(0.1 / trace_q) / std::log(1.03))));
   EXPECT_EQ(first_alert, 87);
   EXPECT_DOUBLE_EQ(opf.estimates[120].at("ball").observation_trace, trace_q);
-  EXPECT_FALSE(opf.estimates[120].at("ball").alert);
+  EXPECT_FALSE(safety_alert(opf.estimates[120].at("ball"), options.feedback.epsilon_safe));
 
   options.modules.uncertainty = false;
   const SceneRun flat = run(scene, opf_factory(options));
@@ -460,7 +460,10 @@ TEST(ObjectPermanenceFilter, ATeleportedOccluderIsReportedAndFollowed) {
   // The jump reads as 1 m over the 0.23 s the speed track spans, v = 43, so Q~ grows by
   // 1.03^43 = 3.6 per frame from frame 41: the alert is raised from frame 42.
   for (int k = 20; k < 60; ++k)
-    EXPECT_EQ(in_mode(opf, "ball", k, EstimateMode::kCarried).alert, k >= 42) << k;
+    EXPECT_EQ(safety_alert(in_mode(opf, "ball", k, EstimateMode::kCarried),
+                           OpfOptions{}.feedback.epsilon_safe),
+              k >= 42)
+        << k;
   EXPECT_GT(opf.estimates[47].at("ball").observation_trace,
             std::pow(3.5, 6) * in_mode(opf, "ball", 41, EstimateMode::kCarried).observation_trace);
 }

@@ -22,6 +22,9 @@ constexpr const char* kHeader =
     "t,object,x,y,z,qx,qy,qz,qw,trace,mode,std_x,std_y,std_z,std_yaw,std_pitch,std_roll,"
     "hypothesis,probability,alert,model\n";
 
+// The feedback module's default threshold on trace(Q~).
+constexpr double kEpsilonSafe = 0.1;
+
 Estimate make_estimate(double t, const std::string& object, const mrpt::poses::CPose3D& mean) {
   mrpt::math::CMatrixDouble66 cov;
   cov.setZero();
@@ -51,7 +54,7 @@ class EstimateCsv : public ::testing::Test {
     const auto path = dir_ / "estimates.csv";
     std::ofstream out(path, std::ios::binary);
     write_estimate_header(out);
-    for (const auto& estimate : estimates) write_estimate_row(out, estimate);
+    for (const auto& estimate : estimates) write_estimate_row(out, estimate, kEpsilonSafe);
     return path;
   }
   std::filesystem::path write_text(const std::string& text) {
@@ -74,7 +77,7 @@ TEST(EstimateCsvFormat, RowUsesShortestNumbersModeAndStandardDeviations) {
       make_estimate(0.033333, "ball", mrpt::poses::CPose3D(0.5, -0.25, 0.1, 0, 0, 0));
   estimate.mode = EstimateMode::kPredicted;
   std::ostringstream out;
-  write_estimate_row(out, estimate);
+  write_estimate_row(out, estimate, kEpsilonSafe);
   std::string expected = "0.033333,ball,0.5,-0.25,0.1,0,0,0,1,0.0003,predicted";
   expected.replace(expected.find("0.0003"), 6, csv::format_double(3e-4));
   for (int i = 0; i < 6; ++i)
@@ -84,7 +87,7 @@ TEST(EstimateCsvFormat, RowUsesShortestNumbersModeAndStandardDeviations) {
 
   std::ostringstream third;
   estimate.t = 1.0 / 3.0;
-  write_estimate_row(third, estimate);
+  write_estimate_row(third, estimate, kEpsilonSafe);
   EXPECT_EQ(split_row(third.str())[0], "0.3333333333333333");
 }
 
@@ -102,7 +105,7 @@ TEST(EstimateCsvFormat, CovarianceColumnsAreTheUpperTriangleOnRequest) {
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j) estimate.pose.cov(i, j) = (i == j ? 1.0 : 0.0) + 0.01 * (i + j);
   std::ostringstream row;
-  write_estimate_row(row, estimate, {.covariance = true});
+  write_estimate_row(row, estimate, kEpsilonSafe, {.covariance = true});
   const auto cells = split_row(row.str());
   ASSERT_EQ(cells.size(), names.size());
   std::size_t k = split_row(kHeader).size();
@@ -111,7 +114,7 @@ TEST(EstimateCsvFormat, CovarianceColumnsAreTheUpperTriangleOnRequest) {
       EXPECT_EQ(cells[k], csv::format_double(estimate.pose.cov(i, j)));
   // Without the request the row is the default one.
   std::ostringstream plain;
-  write_estimate_row(plain, estimate);
+  write_estimate_row(plain, estimate, kEpsilonSafe);
   EXPECT_EQ(split_row(plain.str()).size(), split_row(kHeader).size());
 }
 
@@ -123,7 +126,7 @@ TEST(EstimateCsvFormat, QuaternionHasNonNegativeW) {
     const mrpt::poses::CPose3D pose(0, 0, 0, angle(rng), angle(rng) / 2, angle(rng));
     if (orientation_of(pose).w() < 0) ++flipped;
     std::ostringstream out;
-    write_estimate_row(out, make_estimate(0, "x", pose));
+    write_estimate_row(out, make_estimate(0, "x", pose), kEpsilonSafe);
     const auto fields = split_row(out.str());
     const double qw = *csv::parse_double(fields[8]);
     EXPECT_GE(qw, 0.0);
@@ -166,11 +169,11 @@ TEST_F(EstimateCsv, RoundTripsHypothesisAlertAndModel) {
   Estimate estimate = make_estimate(2.0, "ball", mrpt::poses::CPose3D(0.1, 0.2, 0.3, 0, 0, 0));
   estimate.hypothesis = 1;
   estimate.probability = 0.25;
-  estimate.alert = true;
+  estimate.observation_trace = kEpsilonSafe;  // the alert is raised at epsilon_safe itself
   estimate.mode = EstimateMode::kDynamics;
   estimate.motion_model = "cv,cv,cp/cw";
   std::ostringstream out;
-  write_estimate_row(out, estimate);
+  write_estimate_row(out, estimate, kEpsilonSafe);
   const auto fields = split_row(out.str());
   ASSERT_EQ(fields.size(), 21u);
   EXPECT_EQ(fields[17], "1");
@@ -184,14 +187,19 @@ TEST_F(EstimateCsv, RoundTripsHypothesisAlertAndModel) {
   EXPECT_EQ(records[0].probability, 0.25);
   EXPECT_TRUE(records[0].alert);
   EXPECT_EQ(records[0].model, "cv,cv,cp/cw");
+  // Any estimator's trace just under epsilon_safe raises none.
+  estimate.observation_trace = std::nextafter(kEpsilonSafe, 0.0);
+  std::ostringstream quiet;
+  write_estimate_row(quiet, estimate, kEpsilonSafe);
+  EXPECT_EQ(split_row(quiet.str())[19], "0");
 }
 
 TEST_F(EstimateCsv, WritingIsDeterministic) {
   const std::vector<Estimate> estimates = {
       make_estimate(0.5, "ball", mrpt::poses::CPose3D(0.1, 0.2, 0.3, 0.4, -0.5, 3.0))};
   std::ostringstream a, b;
-  write_estimate_row(a, estimates[0]);
-  write_estimate_row(b, estimates[0]);
+  write_estimate_row(a, estimates[0], kEpsilonSafe);
+  write_estimate_row(b, estimates[0], kEpsilonSafe);
   EXPECT_EQ(a.str(), b.str());
 }
 
