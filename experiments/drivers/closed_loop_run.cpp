@@ -114,15 +114,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
   if (!config.closed_loop)
     throw std::invalid_argument("run_closed_loop: not a closed-loop experiment");
   const sim::ClosedLoopSettings& loop = *config.closed_loop;
-  ExperimentResults results{config.name,
-                            estimators,
-                            seeds,
-                            {},
-                            {},
-                            {},
-                            first_seed,
-                            config.objects_of_interest,
-                            settings.opf.feedback.epsilon_safe};
+  ExperimentResults results = results_to_fill(config, estimators, seeds, first_seed, settings);
   // One renderer for all runs: MRPT allows one off-screen renderer per process at a time.
   sim::CameraSensor sensor(camera_of(config));
   const double dt = 1.0 / config.rate;

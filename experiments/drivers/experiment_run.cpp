@@ -14,6 +14,19 @@ Random measurement_noise(std::uint64_t run_seed) {
   return Random(derive_seed(run_seed, 0x6e6f697365));  // "noise"
 }
 
+ExperimentResults results_to_fill(const sim::ExperimentConfig& config,
+                                  const std::vector<std::string>& estimators, std::size_t seeds,
+                                  std::size_t first_seed, const EstimatorSettings& settings) {
+  ExperimentResults results;
+  results.experiment = config.name;
+  results.estimators = estimators;
+  results.seeds = seeds;
+  results.first_seed = first_seed;
+  results.objects_of_interest = config.objects_of_interest;
+  results.epsilon_safe = settings.opf.feedback.epsilon_safe;
+  return results;
+}
+
 void report_progress(const Progress& progress, const sim::ExperimentConfig& config,
                      const std::string& estimator, std::size_t seed_index, std::size_t seeds) {
   if (progress)
@@ -41,15 +54,7 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
                                 std::size_t threads, std::size_t first_seed) {
   if (observation.truth.size() != observation.camera.size())
     throw std::invalid_argument("run_open_loop: truth and camera frames differ in number");
-  ExperimentResults results{config.name,
-                            estimators,
-                            seeds,
-                            {},
-                            {},
-                            {},
-                            first_seed,
-                            config.objects_of_interest,
-                            settings.opf.feedback.epsilon_safe};
+  ExperimentResults results = results_to_fill(config, estimators, seeds, first_seed, settings);
 
   for (std::size_t s = first_seed; s < first_seed + seeds; ++s) {
     // The seed's measurement stream, shared by every estimator (paired comparison).

@@ -72,6 +72,12 @@ using Progress = std::function<void(const std::string& line)>;
 /// generators (derived from the same seed), and the same for every estimator of that seed.
 Random measurement_noise(std::uint64_t run_seed);
 
+/// The results of a run before any estimator ran: what runs, over which seeds, and the threshold
+/// of its alert column (the feedback module's epsilon_safe in `settings`).
+ExperimentResults results_to_fill(const sim::ExperimentConfig& config,
+                                  const std::vector<std::string>& estimators, std::size_t seeds,
+                                  std::size_t first_seed, const EstimatorSettings& settings);
+
 /// Reports "<experiment>: <estimator>, seed k/n" when `progress` is set.
 void report_progress(const Progress& progress, const sim::ExperimentConfig& config,
                      const std::string& estimator, std::size_t seed_index, std::size_t seeds);
