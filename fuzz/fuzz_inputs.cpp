@@ -3,6 +3,7 @@
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/io/input_error.h"
 #include "opf/io/measurement_log.h"
+#include "opf/sim/experiment_config.h"
 
 #include <cmath>
 #include <optional>
@@ -45,6 +46,22 @@ void read_both_ways(const std::string& text, const LogReadOptions& options) {
   }
 }
 
+// What the experiment reader accepts can be run: frames to step at a finite rate, and bodies whose
+// waypoints are finite and in time order.
+void check_experiment(const sim::ExperimentConfig& config) {
+  if (config.frames < 1) fail("an experiment of no frames was accepted");
+  if (!(config.rate > 0.0) || !std::isfinite(config.rate)) fail("a rate that is not positive");
+  if (config.bodies.empty() || config.objects_of_interest.empty()) fail("nothing to track");
+  for (const sim::ScriptedBody& body : config.bodies) {
+    if (body.waypoints.empty()) fail("a body without waypoints");
+    for (std::size_t k = 0; k < body.waypoints.size(); ++k) {
+      const sim::Waypoint& w = body.waypoints[k];
+      if (!std::isfinite(w.t) || !w.position.allFinite()) fail("a non-finite waypoint");
+      if (k > 0 && !(body.waypoints[k - 1].t < w.t)) fail("waypoints out of order");
+    }
+  }
+}
+
 }  // namespace
 
 // Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes.
@@ -64,6 +81,14 @@ void measurement_log(const std::uint8_t* data, std::size_t size) {
 void estimator_settings(const std::uint8_t* data, std::size_t size) {
   try {
     parse_estimator_settings(std::string(reinterpret_cast<const char*>(data), size), "fuzz.yaml");
+  } catch (const InputError&) {
+  }
+}
+
+void experiment_file(const std::uint8_t* data, std::size_t size) {
+  try {
+    check_experiment(
+        sim::parse_experiment(std::string(reinterpret_cast<const char*>(data), size), "fuzz.yaml"));
   } catch (const InputError&) {
   }
 }

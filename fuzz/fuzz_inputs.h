@@ -16,4 +16,7 @@ void measurement_log(const std::uint8_t* data, std::size_t size);
 /// An estimator settings file (estimators/estimator_settings_yaml.h).
 void estimator_settings(const std::uint8_t* data, std::size_t size);
 
+/// An experiment file (sim/experiment_config.h).
+void experiment_file(const std::uint8_t* data, std::size_t size);
+
 }  // namespace opf::fuzz

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace opf::sim {
@@ -104,6 +105,9 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   yaml.get_positive("rate", config.rate);
   std::size_t frames = 0;
   yaml.get_positive("frames", frames);
+  // The frame counter is an int: a larger count would wrap around to a few frames or none.
+  yaml.require("frames", frames <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
+               "a frame count below 2^31");
   config.frames = static_cast<int>(frames);
 
   YamlReader& camera = yaml.child("camera");

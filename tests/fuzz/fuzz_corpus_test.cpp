@@ -43,5 +43,9 @@ TEST(FuzzCorpus, EstimatorSettingsInputsAreAcceptedOrRejectedCleanly) {
   EXPECT_GE(replay("estimator_settings", fuzz::estimator_settings), 4u);
 }
 
+TEST(FuzzCorpus, ExperimentFileInputsAreAcceptedOrRejectedCleanly) {
+  EXPECT_GE(replay("experiment_file", fuzz::experiment_file), 7u);
+}
+
 }  // namespace
 }  // namespace opf

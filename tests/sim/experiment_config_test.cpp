@@ -115,6 +115,15 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
   bad = kMinimal + "dropouts: [{from: 1, to: 2}]\n";
   EXPECT_EQ(error_of(bad).field(), "dropouts");  // only for motion capture
 
+  // 2^32 + 1 frames would wrap to 1 in the int frame counter, 3e9 to a negative count.
+  for (const char* frames : {"frames: 4294967297", "frames: 3000000000"}) {
+    bad = kMinimal;
+    bad.replace(bad.find("frames: 10"), 10, frames);
+    e = error_of(bad);
+    EXPECT_EQ(e.field(), "frames") << frames;
+    EXPECT_NE(std::string(e.what()).find("below 2^31"), std::string::npos) << e.what();
+  }
+
   bad = kMinimal + "sensor: lidar\n";
   EXPECT_EQ(error_of(bad).field(), "sensor");
 
