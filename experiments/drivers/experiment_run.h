@@ -61,8 +61,8 @@ struct ExperimentResults {
   std::size_t first_seed = 0;  ///< the seed index of runs[...][0] (see run_open_loop)
   std::vector<std::string> objects_of_interest;  ///< the bodies `runs` are scored over
   /// The feedback module's threshold: the records' alert column is safety_alert at it, for every
-  /// estimator's trace.
-  double epsilon_safe = 0.0;
+  /// estimator's trace (results_to_fill takes the run's settings').
+  double epsilon_safe = FeedbackOptions{}.epsilon_safe;
 };
 
 /// Called before each (estimator, seed) run: a line for the progress display.

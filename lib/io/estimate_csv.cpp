@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -107,7 +108,8 @@ std::vector<EstimateRecord> read_estimate_csv(const std::filesystem::path& path)
                       record.mode + "'");
     if (hypothesis_column) {
       const double h = reader.number(*hypothesis_column);
-      if (h < 0 || h != static_cast<int>(h))
+      // In range before the conversion: a double past an int's range does not convert.
+      if (!(h >= 0.0 && h <= std::numeric_limits<int>::max()) || h != std::floor(h))
         reader.fail(*hypothesis_column, "expected a hypothesis number 0, 1, ...");
       record.hypothesis = static_cast<int>(h);
     }

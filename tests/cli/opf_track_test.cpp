@@ -88,11 +88,6 @@ TEST_F(OpfProgram, TrackRoundTripsTheExampleLog) {
   EXPECT_LT(hidden_ball_error / static_cast<double>(hidden_ball), 0.01);
 }
 
-// A box at rest whose detection at frame 15 is 3 m off (a wrong detection). Every particle
-// estimator re-scatters at frame 15 and again at 16, when the box is back, and says so in the
-// mode column; the Kalman filter has no particles to rescue. With sensor resetting off the
-// particle filters' weights underflow at frame 15 instead (3 m is 300 sigmas): the cloud stays
-// where it was, so frame 16 is an ordinary update.
 // The alert column is the feedback module's rule on each row's trace, for every estimator: the
 // baselines' constant trace(Q) = 3 * 0.01^2 + 3 * 0.05^2 = 0.0078 raises none at the default
 // epsilon_safe (0.1) and one on every row at 0.0077; the OPF's rows follow their own trace.
@@ -119,6 +114,11 @@ TEST_F(OpfProgram, TrackRaisesTheAlertOfEveryEstimatorWhoseTraceReachesEpsilonSa
     }
 }
 
+// A box at rest whose detection at frame 15 is 3 m off (a wrong detection). Every particle
+// estimator re-scatters at frame 15 and again at 16, when the box is back, and says so in the
+// mode column; the Kalman filter has no particles to rescue. With sensor resetting off the
+// particle filters' weights underflow at frame 15 instead (3 m is 300 sigmas): the cloud stays
+// where it was, so frame 16 is an ordinary update.
 TEST_F(OpfProgram, TrackReportsRescuedFramesInTheModeColumn) {
   std::ofstream log(dir_ / "log.csv");
   log << "t,object,x,y,z,qx,qy,qz,qw\n";

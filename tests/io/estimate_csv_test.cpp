@@ -226,6 +226,17 @@ TEST_F(EstimateCsv, ReaderReportsBadFields) {
     EXPECT_EQ(e.line(), 2u);
     EXPECT_EQ(e.field(), "probability");
   }
+  // A hypothesis number past an int's range is refused before it is converted (the conversion
+  // would be undefined), as are fractions and negatives.
+  for (const char* hypothesis : {"1e300", "2147483648", "1.5", "-1"}) {
+    try {
+      read_estimate_csv(write_text(header + "0,ball,1,2,3,0,0,0,1,0.1,measured,1,1,1,1,1,1," +
+                                   hypothesis + ",1,0,\n"));
+      FAIL() << hypothesis;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.field(), "hypothesis") << hypothesis;
+    }
+  }
 }
 
 TEST_F(EstimateCsv, ReaderRejectsAModeItDoesNotKnowNamingLineAndColumn) {
