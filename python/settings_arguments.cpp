@@ -88,6 +88,8 @@ std::optional<Eigen::Vector4d> camera_from(const py::object& camera) {
 void apply_particles(std::size_t particles, const ConfigCounts& counts,
                      EstimatorSettings& settings) {
   if (particles == 0) throw std::invalid_argument("particles must be at least 1");
+  if (particles > kMaxParticlesPerPortion)
+    throw std::invalid_argument("particles must be below 2^31");
   const auto refuse_other = [&](const std::string& key, std::optional<std::size_t> set) {
     if (set && *set != particles)
       throw std::invalid_argument("particles=" + std::to_string(particles) +

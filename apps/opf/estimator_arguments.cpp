@@ -56,7 +56,8 @@ EstimatorSettings settings_from(const Arguments& args,
     settings.opf.occluder.camera_position = point;
   }
   if (const auto particles = args.get_count("particles")) {
-    if (*particles == 0) throw UsageError{"option '--particles' must be at least 1"};
+    if (*particles == 0 || *particles > kMaxParticlesPerPortion)
+      throw UsageError{"option '--particles' must be a positive integer below 2^31"};
     settings.pf.translation_particles = settings.pf.rotation_particles = *particles;
   }
   return settings;

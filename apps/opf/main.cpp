@@ -11,6 +11,7 @@
 #include <csignal>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,13 @@ int main(int argc, char** argv) {
     std::cerr << "opf " << command << ": " << error.message << " (see 'opf " << command
               << " --help')\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    // Most likely the particles asked for: say which setting to lower, not just "bad_alloc".
+    std::cerr << "opf " << command
+              << ": error: out of memory: the run needs more memory than this machine has; "
+                 "fewer particles (--particles, pf.translation_particles and "
+                 "pf.rotation_particles) or objects need less\n";
+    return 1;
   } catch (const std::exception& error) {
     std::cerr << "opf " << command << ": error: " << error.what() << "\n";
     return 1;

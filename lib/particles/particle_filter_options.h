@@ -31,6 +31,9 @@ struct ResamplingOptions {
   double ess_threshold = 0.5;
 };
 
+/// The most particles a portion may hold: the resampler marks each particle's end slot in 32 bits.
+inline constexpr std::size_t kMaxParticlesPerPortion = (std::size_t{1} << 31) - 1;
+
 struct PoseParticleFilterOptions {
   /// Particles per portion; the paper uses 5000 + 5000 per object (Sec. IV-B).
   std::size_t translation_particles = 5000;
@@ -62,8 +65,10 @@ void describe_options(Visitor& v, ResamplingOptions& o) {
 
 template <class Visitor>
 void describe_options(Visitor& v, PoseParticleFilterOptions& o) {
-  v.integer("translation_particles", o.translation_particles, at_least(1, "a positive integer"));
-  v.integer("rotation_particles", o.rotation_particles, at_least(1, "a positive integer"));
+  constexpr Bounds count =
+      between(1, static_cast<double>(kMaxParticlesPerPortion), "a positive integer below 2^31");
+  v.integer("translation_particles", o.translation_particles, count);
+  v.integer("rotation_particles", o.rotation_particles, count);
   v.section("process_noise", [&] {
     v.number("translation", o.process_noise_translation, positive("a positive number (m/sqrt(s))"));
     v.number("rotation", o.process_noise_rotation, positive("a positive number (rad/sqrt(s))"));

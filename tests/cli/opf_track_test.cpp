@@ -266,6 +266,11 @@ TEST_F(OpfProgram, BadCommandLinesFailWithAMessageOnStderr) {
   EXPECT_EQ(run("track --in " + kData + "example_log.csv --out x --estimator nope"), 2);
   EXPECT_NE(err().find("option '--estimator': unknown estimator 'nope'"), std::string::npos)
       << err();
+  for (const char* particles : {"0", "2147483648"}) {
+    EXPECT_EQ(run("track --in " + kData + "example_log.csv --out x --particles " + particles), 2);
+    EXPECT_NE(err().find("'--particles' must be a positive integer below 2^31"), std::string::npos)
+        << err();
+  }
 }
 
 TEST_F(OpfProgram, MissingInputFileFailsWithoutWritingOutput) {

@@ -314,6 +314,9 @@ TEST(EstimatorSettingsYaml, OutOfRangeValuesAreRejected) {
            Case{"pf:\n  translation_particles: 0\n", "pf.translation_particles", 2},
            Case{"pf:\n  rotation_particles: -5\n", "pf.rotation_particles", 2},
            Case{"pf:\n  rotation_particles: 2.5\n", "pf.rotation_particles", 2},
+           // The resampler marks end slots in 32 bits: 2^31 would fail mid-run (or exhaust the
+           // memory first), not at the key.
+           Case{"pf:\n  translation_particles: 2147483648\n", "pf.translation_particles", 2},
            Case{"pf:\n  process_noise: {translation: 0}\n", "pf.process_noise.translation", 2},
            Case{"pf:\n  observation_noise:\n    rotation: -0.1\n", "pf.observation_noise.rotation",
                 3},

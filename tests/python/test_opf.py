@@ -484,6 +484,8 @@ def test_errors_carry_the_programs_messages(tmp_path):
         opf.Tracker().step(0.0, {"cup": [0, 0, 0, 0, 0, 0, 2]})
     with pytest.raises(ValueError, match="particles must be at least 1"):
         opf.Tracker(particles=0)
+    with pytest.raises(ValueError, match="particles must be below 2\\^31"):
+        opf.Tracker(particles=2**31)
 
 
 def test_the_estimator_names_are_the_registrys():
