@@ -4,6 +4,9 @@
 #include "opf/io/input_error.h"
 #include "opf/io/measurement_log.h"
 #include "opf/sim/experiment_config.h"
+#include "opf/vision/blob_pose.h"
+#include "opf/vision/object_segmenter.h"
+#include "opf/vision/segmentation_spec.h"
 
 #include <cmath>
 #include <optional>
@@ -62,6 +65,22 @@ void check_experiment(const sim::ExperimentConfig& config) {
   }
 }
 
+// What the spec reader accepts, `opf detect` can run: each object's segmenter takes its options,
+// and a sighting becomes a pose under its pose options.
+void check_segmentation(const vision::SegmentationSpec& spec) {
+  if (spec.objects.empty()) fail("a spec without objects");
+  for (const vision::ObjectSpec& object : spec.objects) {
+    if (object.name.empty()) fail("an object without a name");
+    try {
+      const vision::ObjectSegmenter segmenter(object.segmentation);
+      const vision::BlobSighting sighting{0, {320.0, 240.0}, 100.0, 0.0};
+      vision::blob_poses({&sighting, 1}, object.pose);
+    } catch (const std::invalid_argument& e) {
+      fail(std::string("accepted options that detection refuses: ") + e.what());
+    }
+  }
+}
+
 }  // namespace
 
 // Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes.
@@ -81,6 +100,14 @@ void measurement_log(const std::uint8_t* data, std::size_t size) {
 void estimator_settings(const std::uint8_t* data, std::size_t size) {
   try {
     parse_estimator_settings(std::string(reinterpret_cast<const char*>(data), size), "fuzz.yaml");
+  } catch (const InputError&) {
+  }
+}
+
+void segmentation_spec(const std::uint8_t* data, std::size_t size) {
+  try {
+    check_segmentation(vision::parse_segmentation_spec(
+        std::string(reinterpret_cast<const char*>(data), size), "fuzz.yaml"));
   } catch (const InputError&) {
   }
 }

@@ -19,4 +19,7 @@ void estimator_settings(const std::uint8_t* data, std::size_t size);
 /// An experiment file (sim/experiment_config.h).
 void experiment_file(const std::uint8_t* data, std::size_t size);
 
+/// A segmentation spec for `opf detect` (vision/segmentation_spec.h).
+void segmentation_spec(const std::uint8_t* data, std::size_t size);
+
 }  // namespace opf::fuzz

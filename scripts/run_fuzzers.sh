@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the readers of user input with libFuzzer (clang, with AddressSanitizer and
-# UndefinedBehaviorSanitizer): the measurement log, the estimator settings file and the experiment
-# file, each for SECONDS (default 60), starting from tests/fuzz/corpus/<target>/ (the grown corpus
-# goes to a scratch directory). A crash stops the run; its input is kept as
+# UndefinedBehaviorSanitizer): the measurement log, the estimator settings file, the experiment
+# file and opf detect's segmentation spec, each for SECONDS (default 60), starting from
+# tests/fuzz/corpus/<target>/ (the grown corpus goes to a scratch directory). A crash stops the run; its input is kept as
 # tests/fuzz/regressions/<target>/<crash file> (replayed by the test suite from then on) and
 # printed in hex, and the script exits 1.
 #   bash scripts/run_fuzzers.sh [SECONDS]        (CI runs it after the tests)
@@ -21,7 +21,7 @@ if ! { cmake -S "$repo/fuzz" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ &
   exit 1
 fi
 status=0
-for target in measurement_log estimator_settings experiment_file; do
+for target in measurement_log estimator_settings experiment_file segmentation_spec; do
   scratch="$(mktemp -d)"
   cp "$repo/tests/fuzz/corpus/$target/"* "$scratch/"
   regressions="$repo/tests/fuzz/regressions/$target"

@@ -47,5 +47,9 @@ TEST(FuzzCorpus, ExperimentFileInputsAreAcceptedOrRejectedCleanly) {
   EXPECT_GE(replay("experiment_file", fuzz::experiment_file), 7u);
 }
 
+TEST(FuzzCorpus, SegmentationSpecInputsAreAcceptedOrRejectedCleanly) {
+  EXPECT_GE(replay("segmentation_spec", fuzz::segmentation_spec), 3u);
+}
+
 }  // namespace
 }  // namespace opf
