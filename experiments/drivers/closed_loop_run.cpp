@@ -127,7 +127,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
       Episode episode(loop, scene);
       Random noise = measurement_noise(seed);
       Tracker tracker(make_estimator_factory(name, settings), seed, threads);
-      ErrorAccumulator errors(settings.opf.feedback.epsilon_safe);
+      ErrorAccumulator errors(results.epsilon_safe);
       for (int k = 0; k < config.frames; ++k) {
         const double t = k * dt;
         episode.move_bodies(t);

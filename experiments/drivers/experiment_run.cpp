@@ -64,7 +64,7 @@ ExperimentResults run_open_loop(const sim::ExperimentConfig& config, const Obser
     for (const std::string& name : estimators) {
       report_progress(progress, config, name, s - first_seed, seeds);
       Tracker tracker(make_estimator_factory(name, settings), seed, threads);
-      ErrorAccumulator errors(settings.opf.feedback.epsilon_safe);
+      ErrorAccumulator errors(results.epsilon_safe);
       for (std::size_t k = 0; k < frames.size(); ++k) {
         const sim::SceneSnapshot& truth = observation.truth[k];
         const auto truth_of = [&](const std::string& object) -> const sim::BodyPose& {

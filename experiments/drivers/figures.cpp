@@ -197,7 +197,7 @@ std::vector<ChartBand> hidden_bands(const ExperimentResults& results, const std:
 // previous one's so that lines on the same values show every estimator.
 void write_time_charts(const std::filesystem::path& dir, const sim::ExperimentConfig& config,
                        const ExperimentResults& results, const std::string& object,
-                       double epsilon_safe, std::vector<std::filesystem::path>& written) {
+                       std::vector<std::filesystem::path>& written) {
   const std::size_t seed = results.first_seed;
   LineChart translation =
       time_chart(figure_title(config.name, object, "translation error", seed), "error [m]", false);
@@ -205,7 +205,8 @@ void write_time_charts(const std::filesystem::path& dir, const sim::ExperimentCo
       figure_title(config.name, object, "rotation error (geodesic)", seed), "error [rad]", false);
   LineChart trace = time_chart(figure_title(config.name, object, "uncertainty trace(Q~)", seed),
                                "trace(Q~) [m^2 + rad^2]", true);
-  trace.references.push_back({epsilon_safe, "alert (" + csv::format_double(epsilon_safe) + ")"});
+  trace.references.push_back(
+      {results.epsilon_safe, "alert (" + csv::format_double(results.epsilon_safe) + ")"});
   translation.bands = hidden_bands(results, object);
   rotation.bands = trace.bands = translation.bands;
   const std::vector<std::string> estimators = in_figure_order(results.estimators);
@@ -298,7 +299,7 @@ std::vector<std::filesystem::path> write_figures(const std::filesystem::path& di
                                                  const ExperimentResults& results) {
   std::vector<std::filesystem::path> written;
   for (const std::string& object : config.objects_of_interest)
-    write_time_charts(dir, config, results, object, results.epsilon_safe, written);
+    write_time_charts(dir, config, results, object, written);
   // Where an estimator kept more than one hypothesis: a top view of each one's track.
   for (const std::string& object : config.objects_of_interest)
     for (const std::string& estimator : in_figure_order(results.estimators)) {

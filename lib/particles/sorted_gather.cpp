@@ -6,7 +6,6 @@
 #include <utility>
 
 #ifdef OPF_KERNEL_DISPATCH
-#define OPF_GATHER_PERMUTES 1
 #include <immintrin.h>
 // GCC 12's intrinsics pass _mm512_undefined_epi32() as the unused merge source, which trips
 // -Wmaybe-uninitialized where they are inlined (GCC bug 105593, fixed in GCC 13).
@@ -37,7 +36,7 @@ void scalar_tail(const std::int32_t* marks, std::size_t begin, std::size_t count
   scalar_rows<0>(marks, begin, count, particle, in, n, rows, out);
 }
 
-#ifdef OPF_GATHER_PERMUTES
+#ifdef OPF_KERNEL_DISPATCH
 
 // The running maximum within a block of sixteen marks: four shift-and-max steps. It does not
 // depend on earlier blocks, so blocks overlap in the pipeline; the previous blocks' maximum is
@@ -74,7 +73,7 @@ bool gather_uses_permutes() {
 }
 
 bool gather_uses_avx2() {
-#ifdef OPF_GATHER_PERMUTES
+#ifdef OPF_KERNEL_DISPATCH
   static const bool available = [] {
     __builtin_cpu_init();
     return __builtin_cpu_supports("avx2") != 0;
@@ -96,7 +95,7 @@ void gather_by_running_maximum_scalar(const std::int32_t* marks, std::size_t cou
   scalar_tail(marks, 0, count, 0, in, n, rows, out);
 }
 
-#ifdef OPF_GATHER_PERMUTES
+#ifdef OPF_KERNEL_DISPATCH
 
 namespace {
 
