@@ -31,20 +31,27 @@ struct ImmOptions {
 template <class Visitor>
 void describe_options(Visitor& v, ImmOptions& o) {
   v.section("process_noise", [&] {
-    v.number("position", o.position_noise, positive("a positive number (m/s/sqrt(Hz))"));
-    v.number("acceleration", o.acceleration_noise, positive("a positive number (m/s^2/sqrt(Hz))"));
-    v.number("jerk", o.jerk_noise, positive("a positive number (m/s^3/sqrt(Hz))"));
+    v.number("position", o.position_noise,
+             noise_scale("a positive number (m/s/sqrt(Hz)) up to 1e6"));
+    v.number("acceleration", o.acceleration_noise,
+             noise_scale("a positive number (m/s^2/sqrt(Hz)) up to 1e6"));
+    v.number("jerk", o.jerk_noise, noise_scale("a positive number (m/s^3/sqrt(Hz)) up to 1e6"));
     v.number("angular_acceleration", o.angular_acceleration_noise,
-             positive("a positive number (rad/s^2/sqrt(Hz))"));
+             noise_scale("a positive number (rad/s^2/sqrt(Hz)) up to 1e6"));
   });
   v.number("mean_sojourn", o.mean_sojourn, positive("a positive number (s)"));
   v.section("observation_noise", [&] {
-    v.number("translation", o.observation_noise_translation, positive("a positive number (m)"));
-    v.number("rotation", o.observation_noise_rotation, positive("a positive number (rad)"));
+    v.number("translation", o.observation_noise_translation,
+             noise_scale("a positive number (m) up to 1e6"));
+    v.number("rotation", o.observation_noise_rotation,
+             noise_scale("a positive number (rad) up to 1e6"));
   });
-  v.number("initial_velocity_std", o.initial_velocity_std, positive());
-  v.number("initial_acceleration_std", o.initial_acceleration_std, positive());
-  v.number("initial_angular_velocity_std", o.initial_angular_velocity_std, positive());
+  v.number("initial_velocity_std", o.initial_velocity_std,
+           noise_scale("a positive number (m/s) up to 1e6"));
+  v.number("initial_acceleration_std", o.initial_acceleration_std,
+           noise_scale("a positive number (m/s^2) up to 1e6"));
+  v.number("initial_angular_velocity_std", o.initial_angular_velocity_std,
+           noise_scale("a positive number (rad/s) up to 1e6"));
 }
 
 }  // namespace opf

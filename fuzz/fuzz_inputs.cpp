@@ -1,7 +1,9 @@
 #include "fuzz_inputs.h"
 
+#include "opf/core/option_schema.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/io/input_error.h"
+#include "opf/io/log_read_options.h"
 #include "opf/io/measurement_log.h"
 #include "opf/sim/experiment_config.h"
 #include "opf/vision/blob_pose.h"
@@ -21,14 +23,17 @@ namespace {
   throw std::logic_error("fuzz: " + what);
 }
 
-// What the reader accepts keeps its promises: frames in increasing time, finite poses.
+// What the reader accepts keeps its promises: frames in increasing time, finite poses, stated
+// noises within kMaxNoise.
 void check_frame(const Frame& frame, std::optional<double>& last_t) {
   if (last_t && !(*last_t < frame.t)) fail("frames out of order");
   if (!std::isfinite(frame.t)) fail("a non-finite frame time");
   last_t = frame.t;
-  for (const Detection& d : frame.detections)
+  for (const Detection& d : frame.detections) {
     for (const double v : d.pose.asVectorVal())
       if (!std::isfinite(v)) fail("a non-finite pose was accepted");
+    if (!(d.extra_noise >= 0.0 && d.extra_noise <= kMaxNoise)) fail("an extra noise past 1e6 m");
+  }
 }
 
 // The bytes as a log in one format, read whole and as a stream (rows must then be in time order).
@@ -49,11 +54,14 @@ void read_both_ways(const std::string& text, const LogReadOptions& options) {
   }
 }
 
-// What the experiment reader accepts can be run: frames to step at a finite rate, and bodies whose
-// waypoints are finite and in time order.
+// What the experiment reader accepts can be run: frames to step at most 10 s apart, a detector
+// noise within kMaxNoise, and bodies whose waypoints are finite and in time order.
 void check_experiment(const sim::ExperimentConfig& config) {
   if (config.frames < 1) fail("an experiment of no frames was accepted");
-  if (!(config.rate > 0.0) || !std::isfinite(config.rate)) fail("a rate that is not positive");
+  if (!(1.0 / config.rate <= kMaxPlausibleInterval)) fail("frames more than 10 s apart");
+  if (!(config.measurement.position_noise <= kMaxNoise) ||
+      !(config.measurement.orientation_noise <= kMaxNoise))
+    fail("a detector noise past 1e6");
   if (config.bodies.empty() || config.objects_of_interest.empty()) fail("nothing to track");
   for (const sim::ScriptedBody& body : config.bodies) {
     if (body.waypoints.empty()) fail("a body without waypoints");

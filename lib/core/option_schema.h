@@ -60,6 +60,17 @@ constexpr Bounds greater_than(double low, std::string_view expectation) {
 constexpr Bounds between(double low, double high, std::string_view expectation) {
   return {low, false, high, false, expectation};
 }
+/// The largest noise standard deviation, intensity or spread a setting admits, in its own unit
+/// (m, rad, m/sqrt(s), rad/s^2/sqrt(Hz), ...). A million metres or radians is beyond any scene a
+/// camera tracks, and the filters' covariances (squares and products of these with times and
+/// particle offsets) stay well inside double precision below it; far larger values (from 1e8 on
+/// for some estimators) turn the estimates into NaN.
+inline constexpr double kMaxNoise = 1e6;
+/// (0, kMaxNoise]: a noise standard deviation or intensity; `expectation` names the unit and the
+/// limit ("a positive number (m) up to 1e6").
+constexpr Bounds noise_scale(std::string_view expectation) {
+  return {0.0, true, kMaxNoise, false, expectation};
+}
 /// (0, 1]: a probability that may not be zero, an ESS fraction.
 constexpr Bounds unit_fraction(std::string_view expectation = "a number in (0, 1]") {
   return {0.0, true, 1.0, false, expectation};

@@ -50,12 +50,35 @@ const std::vector<Estimate>& Tracker::step(const Frame& frame) {
   hypotheses_.clear();
   for (std::size_t i = 0; i < objects_.size(); ++i) {
     estimates_[i].object = objects_[i];
+    refuse_non_finite(estimates_[i], estimators_[i]->name());
     for (Estimate& extra : estimators_[i]->extra_hypotheses()) {
       extra.object = objects_[i];
+      refuse_non_finite(extra, estimators_[i]->name());
       hypotheses_.push_back(std::move(extra));
     }
   }
   return estimates_;
+}
+
+void refuse_non_finite(const Estimate& e, std::string_view estimator) {
+  const char* what = nullptr;
+  if (!e.pose.mean.m_coords.asEigen().allFinite() ||
+      !e.pose.mean.getRotationMatrix().asEigen().allFinite())
+    what = "pose";
+  else if (!e.pose.cov.asEigen().allFinite())
+    what = "covariance";
+  else if (!std::isfinite(e.observation_trace))
+    what = "trace(Q)";
+  else if (!std::isfinite(e.probability))
+    what = "probability";
+  if (what == nullptr) return;
+  std::ostringstream msg;
+  msg << estimator << ": the estimate of '" << e.object << "' at t = " << e.t << " s";
+  if (e.hypothesis > 0) msg << " (hypothesis " << e.hypothesis << ")";
+  msg << " has a " << what << " that is not a finite number; no estimate is written from it. "
+      << "Noise settings near the limits of double precision cause this: check the estimator's "
+         "noise settings and the log's extra_noise column";
+  throw std::runtime_error(msg.str());
 }
 
 void Tracker::remember_radii(const Frame& frame) {

@@ -13,6 +13,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace opf {
@@ -21,6 +22,11 @@ namespace opf {
 using EstimatorFactory =
     std::function<std::unique_ptr<Estimator>(const std::string& object, std::uint64_t seed)>;
 
+/// Throws std::runtime_error naming `estimator`, the object, its time and the field, if the
+/// estimate's pose, covariance, trace or probability is not finite: a NaN written to a result
+/// file would pass for an estimate.
+void refuse_non_finite(const Estimate& estimate, std::string_view estimator);
+
 class Tracker {
  public:
   /// `threads` >= 1 threads step the objects of a frame (1: all on the caller's thread).
@@ -28,7 +34,7 @@ class Tracker {
 
   /// Steps every known object through `frame` (timestamps finite and increasing, else
   /// std::invalid_argument and nothing changes) and returns one estimate per object seen so far,
-  /// in order of first appearance.
+  /// in order of first appearance. An estimate that is not finite is refused (refuse_non_finite).
   const std::vector<Estimate>& step(const Frame& frame);
 
   const std::vector<Estimate>& estimates() const { return estimates_; }

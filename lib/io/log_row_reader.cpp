@@ -1,5 +1,6 @@
 #include "opf/io/log_row_reader.h"
 
+#include "opf/core/option_schema.h"
 #include "opf/core/pose_conversion.h"
 #include "opf/io/input_error.h"
 
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
@@ -116,11 +118,14 @@ Eigen::Vector3d LogRowReader::read_box() const {
 }
 
 double LogRowReader::optional_length(const std::optional<std::size_t>& column,
-                                     std::string_view what) const {
+                                     std::string_view what, double max_metres) const {
   if (!column || reader_.field(*column).empty()) return 0.0;
   const double value = reader_.number(*column);
   if (!(value >= 0.0))
     reader_.fail(*column, "expected " + std::string(what) + " >= 0, got " + reader_.field(*column));
+  if (!(value * metres_per_unit_ <= max_metres))
+    reader_.fail(*column, "expected " + std::string(what) + " up to " +
+                              csv::format_double(max_metres) + " m, got " + reader_.field(*column));
   return value * metres_per_unit_;
 }
 
@@ -164,8 +169,9 @@ bool LogRowReader::next(LogRow& row) {
     if (row.object.empty()) reader_.fail(column_[1], "expected an object name, got an empty field");
   }
   row.pose.reset();
-  row.extra_noise = optional_length(extra_noise_column_, "a standard deviation");
-  row.radius = optional_length(radius_column_, "a radius");
+  // A noise past kMaxNoise turns the estimates into NaN (core/option_schema.h), as in a setting.
+  row.extra_noise = optional_length(extra_noise_column_, "a standard deviation", kMaxNoise);
+  row.radius = optional_length(radius_column_, "a radius", std::numeric_limits<double>::max());
   row.box = read_box();
 
   std::size_t empty_fields = 0;

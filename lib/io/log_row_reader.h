@@ -51,8 +51,9 @@ class LogRowReader {
  private:
   bool next_box(LogRow& row);
   /// The current row's optional length `column` (0 without the column or where empty), checked
-  /// >= 0 (`what` names the quantity in the error), in metres.
-  double optional_length(const std::optional<std::size_t>& column, std::string_view what) const;
+  /// from 0 to `max_metres` (`what` names the quantity in the error), in metres.
+  double optional_length(const std::optional<std::size_t>& column, std::string_view what,
+                         double max_metres) const;
 
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
   csv::Reader reader_;

@@ -70,12 +70,16 @@ void describe_options(Visitor& v, PoseParticleFilterOptions& o) {
   v.integer("translation_particles", o.translation_particles, count);
   v.integer("rotation_particles", o.rotation_particles, count);
   v.section("process_noise", [&] {
-    v.number("translation", o.process_noise_translation, positive("a positive number (m/sqrt(s))"));
-    v.number("rotation", o.process_noise_rotation, positive("a positive number (rad/sqrt(s))"));
+    v.number("translation", o.process_noise_translation,
+             noise_scale("a positive number (m/sqrt(s)) up to 1e6"));
+    v.number("rotation", o.process_noise_rotation,
+             noise_scale("a positive number (rad/sqrt(s)) up to 1e6"));
   });
   v.section("observation_noise", [&] {
-    v.number("translation", o.observation_noise_translation, positive("a positive number (m)"));
-    v.number("rotation", o.observation_noise_rotation, positive("a positive number (rad)"));
+    v.number("translation", o.observation_noise_translation,
+             noise_scale("a positive number (m) up to 1e6"));
+    v.number("rotation", o.observation_noise_rotation,
+             noise_scale("a positive number (rad) up to 1e6"));
   });
   v.section("resampling", [&] { describe_options(v, o.resampling); });
   v.number("reset_gate", o.reset_gate, non_negative("a number of sigmas >= 0 (0 disables)"));

@@ -1,7 +1,9 @@
 #include "opf/sim/experiment_config.h"
 
+#include "opf/core/option_schema.h"
 #include "opf/io/input_error.h"
 #include "opf/io/input_file.h"
+#include "opf/io/log_read_options.h"
 #include "opf/io/yaml_reader.h"
 
 #include <algorithm>
@@ -103,6 +105,10 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   ExperimentConfig config;
   yaml.get("name", config.name);
   yaml.get_positive("rate", config.rate);
+  // As a log's (io/log_read_options.h): frames further apart are not a tracking run, and a rate
+  // near zero makes the frame interval overflow.
+  yaml.require("rate", 1.0 / config.rate <= kMaxPlausibleInterval,
+               "a frame rate of at least 0.1 Hz (frames at most 10 s apart)");
   std::size_t frames = 0;
   yaml.get_positive("frames", frames);
   // The frame counter is an int: a larger count would wrap around to a few frames or none.
@@ -119,9 +125,16 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
 
   YamlReader& measurement = yaml.child("measurement");
   measurement.get("position_noise", config.measurement.position_noise);
-  measurement.require("position_noise", config.measurement.position_noise >= 0, "a std >= 0");
+  // Up to kMaxNoise, as an estimator's noise settings (core/option_schema.h).
+  measurement.require(
+      "position_noise",
+      config.measurement.position_noise >= 0 && config.measurement.position_noise <= kMaxNoise,
+      "a std (m) from 0 to 1e6");
   measurement.get("orientation_noise", config.measurement.orientation_noise);
-  measurement.require("orientation_noise", config.measurement.orientation_noise >= 0, "a std >= 0");
+  measurement.require("orientation_noise",
+                      config.measurement.orientation_noise >= 0 &&
+                          config.measurement.orientation_noise <= kMaxNoise,
+                      "a std (rad) from 0 to 1e6");
   measurement.get("min_visible_fraction", config.measurement.min_visible_fraction);
   measurement.require(
       "min_visible_fraction",

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -110,6 +111,48 @@ TEST_F(OpfProgram, TrackRaisesTheAlertOfEveryEstimatorWhoseTraceReachesEpsilonSa
       }
       if (estimator != "opf") {
         EXPECT_EQ(alerts, config.empty() ? 0 : rows.size()) << estimator;
+      }
+    }
+}
+
+// Every noise setting at its limit (kMaxNoise, 1e6) at once, and the log's stated extra noise at
+// the same limit on every fifth row: every estimator still writes finite estimates. Past the
+// limit, the settings reader refuses the key (EstimatorSettingsYaml.OutOfRangeValuesAreRejected)
+// and the log reader the field; an estimate that is not finite all the same is refused by the
+// tracker (Tracker.RefusesAnEstimateThatIsNotFinite).
+TEST_F(OpfProgram, TrackStaysFiniteWithEveryNoiseAtItsLimit) {
+  std::ofstream(dir_ / "limit.yaml")
+      << "pf:\n  process_noise: {translation: 1e6, rotation: 1e6}\n"
+         "  observation_noise: {translation: 1e6, rotation: 1e6}\n"
+         "cvkf:\n  acceleration_noise: 1e6\n  angular_acceleration_noise: 1e6\n"
+         "  observation_noise: {translation: 1e6, rotation: 1e6}\n"
+         "  initial_velocity_std: 1e6\n  initial_angular_velocity_std: 1e6\n"
+         "imm:\n  process_noise: {position: 1e6, acceleration: 1e6, jerk: 1e6, "
+         "angular_acceleration: 1e6}\n"
+         "  observation_noise: {translation: 1e6, rotation: 1e6}\n"
+         "  initial_velocity_std: 1e6\n  initial_acceleration_std: 1e6\n"
+         "  initial_angular_velocity_std: 1e6\n"
+         "oapf:\n  spread_growth: 1e3\n";
+  std::ifstream example(kData + "example_log.csv");
+  std::ofstream noisy(dir_ / "noisy.csv");
+  std::string line;
+  for (std::size_t i = 0; std::getline(example, line); ++i)
+    noisy << line << (i == 0 ? ",extra_noise" : i % 5 == 0 ? ",1000000" : ",") << '\n';
+  noisy.close();
+  const fs::path est = dir_ / "est.csv";
+  for (const std::string_view estimator : {"opf", "pf", "cvkf", "imm", "oapf"})
+    for (const fs::path& log : {fs::path(kData + "example_log.csv"), dir_ / "noisy.csv"}) {
+      ASSERT_EQ(run("track --quiet --particles 300 --config " + (dir_ / "limit.yaml").string() +
+                    " --in " + log.string() + " --out " + est.string() + " --estimator " +
+                    std::string(estimator)),
+                0)
+          << estimator << ' ' << log << ": " << err();
+      const std::vector<EstimateRecord> rows = read_estimate_csv(est);
+      ASSERT_GT(rows.size(), 300u) << estimator;
+      for (const EstimateRecord& r : rows) {
+        ASSERT_TRUE(std::isfinite(r.trace) && std::isfinite(r.pose.x()) &&
+                    std::isfinite(r.pose.y()) && std::isfinite(r.pose.z()))
+            << estimator << ' ' << log << " t=" << r.t;
       }
     }
 }

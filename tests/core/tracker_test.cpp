@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <functional>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 namespace opf {
 namespace {
@@ -119,6 +123,50 @@ TEST(Tracker, RefusesANonFiniteTimeAndKeepsGoing) {
   EXPECT_EQ(tracker.step(frame(1.0, {{"a", 0.0}})).size(), 1u);
   EXPECT_THROW(tracker.step(frame(HUGE_VAL, {{"a", 0.0}})), std::invalid_argument);
   EXPECT_EQ(tracker.step(frame(2.0, {{"a", 0.0}})).size(), 1u);
+}
+
+// An estimate that is not a number is an error, not a row: written, a NaN would pass for an
+// estimate. Here the recording estimator echoes a detection at NaN.
+TEST(Tracker, RefusesAnEstimateThatIsNotFinite) {
+  std::map<std::string, RecordingEstimator::Log> logs;
+  Tracker tracker(recording_into(logs), 1);
+  tracker.step(frame(1.0, {{"a", 0.5}}));
+  try {
+    tracker.step(frame(2.0, {{"a", std::nan("")}}));
+    FAIL() << "a NaN pose was taken";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("recording: the estimate of 'a' at t = 2 s"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("has a pose that is not a finite number"), std::string::npos) << message;
+  }
+}
+
+TEST(Tracker, RefusesEachNonFiniteFieldByName) {
+  const auto message_for = [](const std::function<void(Estimate&)>& spoil) {
+    Estimate e;
+    e.object = "cup";
+    e.t = 0.5;
+    e.hypothesis = 2;
+    EXPECT_NO_THROW(refuse_non_finite(e, "opf"));
+    spoil(e);
+    try {
+      refuse_non_finite(e, "opf");
+    } catch (const std::runtime_error& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string covariance = message_for([](Estimate& e) { e.pose.cov(3, 4) = HUGE_VAL; });
+  EXPECT_NE(covariance.find("'cup' at t = 0.5 s (hypothesis 2) has a covariance"),
+            std::string::npos)
+      << covariance;
+  EXPECT_NE(message_for([](Estimate& e) { e.observation_trace = std::nan(""); }).find("trace(Q)"),
+            std::string::npos);
+  EXPECT_NE(message_for([](Estimate& e) { e.probability = std::nan(""); }).find("probability"),
+            std::string::npos);
+  EXPECT_NE(message_for([](Estimate& e) { e.pose.mean.z(-HUGE_VAL); }).find("a pose"),
+            std::string::npos);
 }
 
 }  // namespace

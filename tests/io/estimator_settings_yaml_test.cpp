@@ -340,6 +340,14 @@ TEST(EstimatorSettingsYaml, OutOfRangeValuesAreRejected) {
            Case{"opf:\n  occluder: {camera_position: [1, 2]}\n", "opf.occluder.camera_position", 2},
            Case{"opf:\n  occluder: {epsilon_occ: -0.1}\n", "opf.occluder.epsilon_occ", 2},
            Case{"opf:\n  occluder: {reach: -0.1}\n", "opf.occluder.reach", 2},
+           // Past kMaxNoise (1e6) the filters' estimates turn into NaN (some from 1e8 on).
+           Case{"pf:\n  observation_noise: {rotation: 1.000001e6}\n",
+                "pf.observation_noise.rotation", 2},
+           Case{"pf:\n  process_noise: {translation: 1e300}\n", "pf.process_noise.translation", 2},
+           Case{"cvkf:\n  acceleration_noise: 1e7\n", "cvkf.acceleration_noise", 2},
+           Case{"imm:\n  initial_acceleration_std: 1e20\n", "imm.initial_acceleration_std", 2},
+           Case{"imm:\n  process_noise: {jerk: 1e7}\n", "imm.process_noise.jerk", 2},
+           Case{"oapf:\n  spread_growth: 1e20\n", "oapf.spread_growth", 2},
        }) {
     const InputError e = error_of(c.yaml);
     EXPECT_EQ(e.field(), c.field) << c.yaml;

@@ -131,6 +131,25 @@ TEST(MeasurementLogErrors, ANegativeOrNonNumericExtraNoise) {
   EXPECT_EQ(e.line(), 2u);
 }
 
+// Past 1e6 m (kMaxNoise, as for a setting) the filters' estimates turn into NaN; the limit is in
+// metres whatever the log's unit.
+TEST(MeasurementLogErrors, AnExtraNoisePastTheLimit) {
+  const InputError e = parse_error(
+      "t,object,x,y,z,qx,qy,qz,qw,extra_noise\n0,ball,0,0,0,0,0,0,1,1000000\n"
+      "1,ball,0,0,0,0,0,0,1,1e300\n");
+  EXPECT_STREQ(e.what(),
+               "log.csv:3: column 'extra_noise': expected a standard deviation up to 1e+06 m, got "
+               "1e300");
+  LogReadOptions millimetres;
+  millimetres.length_unit = LengthUnit::kMillimetres;
+  std::istringstream at_limit("t,object,x,y,z,qx,qy,qz,qw,extra_noise\n0,ball,0,0,0,0,0,0,1,1e9\n");
+  EXPECT_EQ(
+      parse_measurement_log(at_limit, "log.csv", millimetres).frames[0].detections[0].extra_noise,
+      1e6);
+  std::istringstream past("t,object,x,y,z,qx,qy,qz,qw,extra_noise\n0,ball,0,0,0,0,0,0,1,2e9\n");
+  EXPECT_THROW(parse_measurement_log(past, "log.csv", millimetres), InputError);
+}
+
 TEST(MeasurementLog, ReadsEachDetectionsStatedRadiusInTheLogsLengthUnit) {
   const MeasurementLog log = parse(
       "t,object,x,y,z,qx,qy,qz,qw,radius\n"

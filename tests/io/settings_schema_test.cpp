@@ -15,6 +15,8 @@
 
 #include <cmath>
 #include <functional>
+#include <iomanip>
+#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -33,10 +35,14 @@ struct SpoiledField {
   std::function<void(EstimatorSettings&)> spoil;
 };
 
-/// The value just outside `bounds`: the open limit itself, or one past a closed one.
-double outside(const Bounds& bounds) {
-  if (std::isfinite(bounds.high)) return bounds.high_open ? bounds.high : bounds.high + 1.0;
-  return bounds.low_open ? bounds.low : bounds.low - 1.0;
+/// The values just outside `bounds`, below and above where a limit is finite: the open limit
+/// itself, or one past a closed one.
+std::vector<double> outside(const Bounds& bounds) {
+  std::vector<double> values;
+  if (std::isfinite(bounds.low)) values.push_back(bounds.low_open ? bounds.low : bounds.low - 1.0);
+  if (std::isfinite(bounds.high))
+    values.push_back(bounds.high_open ? bounds.high : bounds.high + 1.0);
+  return values;
 }
 
 /// Walks the description and lists every field that can be out of range. The spoilers address
@@ -46,14 +52,14 @@ class FieldLister {
   std::vector<SpoiledField> fields;
 
   void number(std::string_view key, double&, const Bounds& bounds) {
-    const double bad = outside(bounds);
-    add(key, text(bad), [bad](double& x) { x = bad; });
+    for (const double bad : outside(bounds)) add(key, text(bad), [bad](double& x) { x = bad; });
   }
   template <class Integer>
   void integer(std::string_view key, Integer&, const Bounds& bounds) {
-    const double bad = outside(bounds);
-    if (bad < 0.0 && std::is_unsigned_v<Integer>) return;  // the type itself refuses it
-    add(key, text(bad), [bad](double& x) { x = bad; });
+    for (const double bad : outside(bounds)) {
+      if (bad < 0.0 && std::is_unsigned_v<Integer>) continue;  // the type itself refuses it
+      add(key, text(bad), [bad](double& x) { x = bad; });
+    }
   }
   void flag(std::string_view, bool&) {}
   template <class Table, class Enum>
@@ -61,8 +67,8 @@ class FieldLister {
   template <class Table, class Enum>
   void choices(std::string_view, const Table&, std::vector<Enum>&) {}
   void numbers(std::string_view key, std::vector<double>&, const Bounds& bounds) {
-    const double bad = outside(bounds);
-    add(key, "[" + text(bad) + "]", [bad](double& x) { x = bad; });
+    for (const double bad : outside(bounds))
+      add(key, "[" + text(bad) + "]", [bad](double& x) { x = bad; });
   }
   void vector3(std::string_view key, Eigen::Vector3d&) {
     add(key, "[0, 0, 0]", [](double& x) { x = 0.0; });
@@ -78,7 +84,7 @@ class FieldLister {
  private:
   static std::string text(double value) {
     std::ostringstream out;
-    out << value;
+    out << std::setprecision(std::numeric_limits<double>::max_digits10) << value;
     return out.str();
   }
   void add(std::string_view key, std::string bad_yaml, std::function<void(double&)> set);
@@ -175,8 +181,11 @@ TEST(SettingsSchema, ListsEveryBoundedFieldOfEverySection) {
   for (const SpoiledField& f : fields) sections.insert(f.path.substr(0, f.path.find('.')));
   EXPECT_EQ(sections, (std::set<std::string>{"pf", "cvkf", "imm", "opf", "oapf"}));
   // Every bounded number, list and vector of the five sections: a field dropped from a
-  // description shows.
-  EXPECT_EQ(fields.size(), 44u);
+  // description shows. 27 of the 44 are bounded on both sides (each side a spoiled value).
+  std::set<std::string> paths;
+  for (const SpoiledField& f : fields) paths.insert(f.path);
+  EXPECT_EQ(paths.size(), 44u);
+  EXPECT_EQ(fields.size(), 71u);
 }
 
 TEST(SettingsSchema, TheReaderAndTheConstructorsRefuseTheSameValues) {

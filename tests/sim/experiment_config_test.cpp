@@ -124,6 +124,23 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
     EXPECT_NE(std::string(e.what()).find("below 2^31"), std::string::npos) << e.what();
   }
 
+  // A rate near zero made the frame interval overflow (the run ended in an unrelated error);
+  // the bound is the log reader's: frames at most 10 s apart.
+  for (const char* rate : {"rate: 1e-300", "rate: 0.09"}) {
+    e = error_of(kMinimal + rate + "\n");
+    EXPECT_EQ(e.field(), "rate") << rate;
+    EXPECT_EQ(e.line(), 10u) << rate;
+  }
+  EXPECT_EQ(parse_experiment(kMinimal + "rate: 0.1\n", "tiny.yaml").rate, 0.1);
+  // Noise past kMaxNoise (1e6) turns the detections' and the estimates' squares into inf.
+  e = error_of(kMinimal + "measurement: {position_noise: 1e308}\n");
+  EXPECT_EQ(e.field(), "measurement.position_noise");
+  EXPECT_EQ(error_of(kMinimal + "measurement: {orientation_noise: 2e6}\n").field(),
+            "measurement.orientation_noise");
+  EXPECT_EQ(parse_experiment(kMinimal + "measurement: {position_noise: 1e6}\n", "tiny.yaml")
+                .measurement.position_noise,
+            1e6);
+
   bad = kMinimal + "sensor: lidar\n";
   EXPECT_EQ(error_of(bad).field(), "sensor");
 
