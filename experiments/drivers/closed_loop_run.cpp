@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <stdexcept>
 
 namespace opf::experiments {
@@ -128,6 +129,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
       Random noise = measurement_noise(seed);
       Tracker tracker(make_estimator_factory(name, settings), seed, threads);
       ErrorAccumulator errors(results.epsilon_safe);
+      std::set<std::string> estimated;  // the objects of interest the run has estimated
       for (int k = 0; k < config.frames; ++k) {
         const double t = k * dt;
         episode.move_bodies(t);
@@ -136,8 +138,10 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
             sim::noisy_measurement(sensor.observe(truth), truth, config.measurement, noise);
         for (const Estimate& estimate : tracker.step(frame)) {
           const sim::BodyPose& pose = truth.poses[scene.index_of(estimate.object)];
-          if (config.is_of_interest(estimate.object))
+          if (config.is_of_interest(estimate.object)) {
             errors.add(estimate, make_pose(pose.position, pose.orientation));
+            estimated.insert(estimate.object);
+          }
           results.records.push_back(
               {k, name, s, pose, estimate, frame.find(estimate.object) != nullptr});
           if (estimate.object == loop.target) episode.act_on(estimate, pose, t, dt);
@@ -148,6 +152,10 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
               {k, name, s, truth.poses[scene.index_of(extra.object)], extra, false});
         episode.advance(dt);
       }
+      // What the camera sees depends on the robot, so the check comes after the run.
+      for (const std::string& object : config.objects_of_interest)
+        if (!estimated.contains(object))
+          refuse_unseen_object(config, object, static_cast<std::size_t>(config.frames));
       results.runs[name].push_back(errors.result());
       results.drops[name].push_back(episode.drop());
     }

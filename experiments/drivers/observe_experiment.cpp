@@ -1,9 +1,13 @@
 #include "drivers/observe_experiment.h"
 
 #include "opf/sim/camera_sensor.h"
+#include "opf/sim/noisy_measurement.h"
 #include "opf/sim/scripted_scene.h"
 
+#include <algorithm>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace opf::experiments {
 
@@ -12,6 +16,28 @@ sim::CameraModel camera_of(const sim::ExperimentConfig& config) {
   return sim::CameraModel::look_at(c.position, c.look_at, c.up,
                                    c.vertical_fov_deg * std::numbers::pi / 180.0, c.width,
                                    c.height);
+}
+
+void refuse_unseen_objects(const sim::ExperimentConfig& config,
+                           const std::vector<sim::CameraFrame>& camera) {
+  for (const std::string& object : config.objects_of_interest) {
+    const bool ever = std::any_of(camera.begin(), camera.end(), [&](const sim::CameraFrame& f) {
+      return std::any_of(f.sightings.begin(), f.sightings.end(), [&](const sim::Sighting& s) {
+        return s.object == object && sim::measured(s, config.measurement);
+      });
+    });
+    if (!ever) refuse_unseen_object(config, object, camera.size());
+  }
+}
+
+void refuse_unseen_object(const sim::ExperimentConfig& config, const std::string& object,
+                          std::size_t frames) {
+  throw std::invalid_argument(
+      "experiment '" + config.name + "': the camera measures the object of interest '" + object +
+      "' in none of its " + std::to_string(frames) +
+      " frames; nothing would be tracked or scored. Check camera (position, look_at, up, "
+      "vertical_fov_deg), the body's waypoints and size, and measurement "
+      "(min_visible_fraction, min_area_pixels)");
 }
 
 Observation observe_experiment(const sim::ExperimentConfig& config, const Progress& progress) {
@@ -34,6 +60,7 @@ Observation observe_experiment(const sim::ExperimentConfig& config, const Progre
       observation.camera.push_back(frame);
       observation.truth.push_back(snapshot);
     }
+    refuse_unseen_objects(config, observation.camera);
     return observation;
   }
   sim::CameraSensor sensor(camera_of(config));
@@ -42,14 +69,14 @@ Observation observe_experiment(const sim::ExperimentConfig& config, const Progre
     observation.camera.push_back(sensor.observe(snapshot));
     observation.truth.push_back(snapshot);
   }
+  refuse_unseen_objects(config, observation.camera);
   // The longest run of frames without a sighting of the first object of interest.
   int best_start = 0, best_length = 0, start = -1;
   for (int k = 0; k <= config.frames; ++k) {
     bool seen = true;
     if (k < config.frames)
       for (const auto& s : observation.camera[k].sightings)
-        if (s.object == config.objects_of_interest.front())
-          seen = s.detected && s.visible_fraction >= config.measurement.min_visible_fraction;
+        if (s.object == config.objects_of_interest.front()) seen = measured(s, config.measurement);
     if (!seen && start < 0) start = k;
     if (seen && start >= 0) {
       if (k - start > best_length) best_start = start, best_length = k - start;

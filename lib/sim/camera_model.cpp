@@ -29,23 +29,40 @@ CameraModel::CameraModel() {
   set_intrinsics(*this, kDefaultVerticalFovRad, kDefaultWidth, kDefaultHeight);
 }
 
+namespace {
+
+// Image "up" is camera -y, so camera +y is the part of -up orthogonal to the view direction z.
+Eigen::Vector3d image_down(const Eigen::Vector3d& up, const Eigen::Vector3d& z) {
+  return -up + up.dot(z) * z;
+}
+
+}  // namespace
+
+LookAtFault look_at_fault(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
+                          const Eigen::Vector3d& up) {
+  const Eigen::Vector3d view = target - eye;
+  if (!(view.norm() > 1e-12)) return LookAtFault::kTargetAtEye;
+  const Eigen::Vector3d down = image_down(up, view.normalized());
+  if (!(down.norm() > 1e-9 * std::max(1.0, up.norm()))) return LookAtFault::kUpAlongView;
+  return LookAtFault::kNone;
+}
+
 CameraModel CameraModel::look_at(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
                                  const Eigen::Vector3d& up, double vertical_fov_rad, int width,
                                  int height) {
   CameraModel camera;
   set_intrinsics(camera, vertical_fov_rad, width, height);
 
-  const Eigen::Vector3d view = target - eye;
-  if (!(view.norm() > 1e-12)) {
-    throw std::invalid_argument("CameraModel::look_at: eye and target coincide");
+  switch (look_at_fault(eye, target, up)) {
+    case LookAtFault::kTargetAtEye:
+      throw std::invalid_argument("CameraModel::look_at: eye and target coincide");
+    case LookAtFault::kUpAlongView:
+      throw std::invalid_argument("CameraModel::look_at: `up` is parallel to the view direction");
+    case LookAtFault::kNone:
+      break;
   }
-  const Eigen::Vector3d z = view.normalized();
-  // Image "up" is camera -y, so camera +y is the part of -up orthogonal to the view direction.
-  const Eigen::Vector3d down = -up + up.dot(z) * z;
-  if (!(down.norm() > 1e-9 * std::max(1.0, up.norm()))) {
-    throw std::invalid_argument("CameraModel::look_at: `up` is parallel to the view direction");
-  }
-  const Eigen::Vector3d y = down.normalized();
+  const Eigen::Vector3d z = (target - eye).normalized();
+  const Eigen::Vector3d y = image_down(up, z).normalized();
   const Eigen::Vector3d x = y.cross(z);
 
   camera.world_from_camera.setIdentity();

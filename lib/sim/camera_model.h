@@ -9,6 +9,12 @@
 
 namespace opf::sim {
 
+/// What keeps CameraModel::look_at from placing a camera: the target at the eye, or an `up` along
+/// the line of sight (no roll follows from it).
+enum class LookAtFault { kNone, kTargetAtEye, kUpAlongView };
+LookAtFault look_at_fault(const Eigen::Vector3d& eye, const Eigen::Vector3d& target,
+                          const Eigen::Vector3d& up);
+
 /// OpenCV conventions throughout. Camera frame: x right, y down, z forward (the optical axis).
 /// Pixels: (u, v) = (column, row); integer coordinates are pixel CENTRES, so pixel (0, 0) covers
 /// [-0.5, 0.5]^2 and the image spans [-0.5, width - 0.5] x [-0.5, height - 0.5]. Depth is z-depth

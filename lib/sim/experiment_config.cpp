@@ -5,6 +5,7 @@
 #include "opf/io/input_file.h"
 #include "opf/io/log_read_options.h"
 #include "opf/io/yaml_reader.h"
+#include "opf/sim/camera_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -120,6 +121,14 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   config.camera.position = vector3(camera, "position", config.camera.position);
   config.camera.look_at = vector3(camera, "look_at", config.camera.look_at);
   config.camera.up = vector3(camera, "up", config.camera.up);
+  switch (look_at_fault(config.camera.position, config.camera.look_at, config.camera.up)) {
+    case LookAtFault::kTargetAtEye:
+      camera.fail("look_at", "expected a point other than the camera's position");
+    case LookAtFault::kUpAlongView:
+      camera.fail("up", "expected a direction across the line of sight (position to look_at)");
+    case LookAtFault::kNone:
+      break;
+  }
   camera.get_positive("vertical_fov_deg", config.camera.vertical_fov_deg);
   camera.require("vertical_fov_deg", config.camera.vertical_fov_deg < 170, "an angle below 170");
 

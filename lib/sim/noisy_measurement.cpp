@@ -13,7 +13,7 @@ Frame noisy_measurement(const CameraFrame& camera, const SceneSnapshot& truth,
   for (const Sighting& s : camera.sightings) {
     double draws[6];
     noise.fill_normal(draws);
-    if (!s.detected || s.visible_fraction < settings.min_visible_fraction) continue;
+    if (!measured(s, settings)) continue;
     std::size_t index = truth.bodies.size();
     for (std::size_t i = 0; i < truth.bodies.size(); ++i)
       if (truth.bodies[i].name == s.object) index = i;

@@ -11,6 +11,12 @@
 
 namespace opf::sim {
 
+/// Whether a sighting becomes a measurement: detected, and visible at least
+/// settings.min_visible_fraction.
+inline bool measured(const Sighting& s, const MeasurementSettings& settings) {
+  return s.detected && s.visible_fraction >= settings.min_visible_fraction;
+}
+
 /// Bodies whose sighting is undetected, or visible below settings.min_visible_fraction, are
 /// unobserved (absent from the frame). A partly covered body's detection states its partial view
 /// (Sighting::partial_view_offset) as its extra noise (Detection::extra_noise), and every detection

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace opf::experiments {
 namespace {
 
@@ -30,6 +33,25 @@ class SugarDropStart : public ::testing::Test {
   static ExperimentResults* results_;
 };
 ExperimentResults* SugarDropStart::results_ = nullptr;
+
+// What a closed loop's camera sees depends on the robot, so the check follows the run: with the
+// camera under the table no run estimates the mug, and none is scored as if it had.
+TEST(ClosedLoopRun, RefusesAnObjectOfInterestNoRunEstimates) {
+  sim::ExperimentConfig config =
+      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
+  config.frames = 5;
+  config.camera.position.z() = -5.0;
+  EstimatorSettings settings;
+  settings.pf.translation_particles = settings.pf.rotation_particles = 100;
+  try {
+    run_closed_loop(config, {"pf"}, settings, 1, 3);
+    FAIL() << "a closed loop that never measured the mug was scored";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the object of interest 'mug' in none of its 5 frames"),
+              std::string::npos)
+        << e.what();
+  }
+}
 
 TEST_F(SugarDropStart, TheHandWaitsThenTracksTheMugAndHidesItItself) {
   const auto hand = of("hand");

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace opf::experiments {
 namespace {
 
@@ -31,6 +34,24 @@ class GeneralOpStepOne : public ::testing::Test {
 sim::ExperimentConfig* GeneralOpStepOne::config_ = nullptr;
 Observation* GeneralOpStepOne::observation_ = nullptr;
 EstimatorSettings* GeneralOpStepOne::settings_ = nullptr;
+
+// A camera under the table sees no ball: the run would track and score nothing, so it is
+// refused before any estimator runs, naming the object and what to check.
+TEST(ObserveExperiment, RefusesAnObjectOfInterestTheCameraNeverMeasures) {
+  sim::ExperimentConfig config =
+      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml");
+  config.frames = 5;
+  config.camera.position.z() = -5.0;
+  try {
+    observe_experiment(config);
+    FAIL() << "an experiment whose camera never measures the ball was observed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("the camera measures the object of interest 'ball' in "
+                                         "none of its 5 frames"),
+              std::string::npos)
+        << e.what();
+  }
+}
 
 TEST_F(GeneralOpStepOne, TheCameraLosesTheBallUnderTheMugAndFindsItAgain) {
   // Visible while resting (frame 60), covered during the carry (frame 130), revealed (frame 159).

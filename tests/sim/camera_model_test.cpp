@@ -140,6 +140,16 @@ TEST(CameraModel, LookAtRejectsDegenerateInput) {
       std::invalid_argument);
 }
 
+// The experiment reader names the key from the same test (camera.look_at, camera.up).
+TEST(CameraModel, LookAtFaultNamesWhatIsDegenerate) {
+  const Eigen::Vector3d eye(0, 0, 1);
+  EXPECT_EQ(look_at_fault(eye, eye, Eigen::Vector3d::UnitX()), LookAtFault::kTargetAtEye);
+  EXPECT_EQ(look_at_fault(eye, Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 3)),
+            LookAtFault::kUpAlongView);
+  EXPECT_EQ(look_at_fault(eye, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()),
+            LookAtFault::kNone);
+}
+
 TEST(CameraModel, InImageUsesPixelEdges) {
   const CameraModel camera;
   EXPECT_TRUE(camera.in_image(Eigen::Vector2d(-0.5, -0.5)));

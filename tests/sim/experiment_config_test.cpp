@@ -141,6 +141,15 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
                 .measurement.position_noise,
             1e6);
 
+  // A camera no look-at can place: named at its key, where the renderer's own error had no line.
+  e = error_of(kMinimal + "camera:\n  position: [0, 0, 1]\n  look_at: [0, 0, 1]\n");
+  EXPECT_EQ(e.field(), "camera.look_at");
+  EXPECT_EQ(e.line(), 12u);
+  e = error_of(kMinimal +
+               "camera:\n  position: [0, 0, 1]\n  look_at: [0, 0, 0]\n  up: [0, 0, 2]\n");
+  EXPECT_EQ(e.field(), "camera.up");
+  EXPECT_EQ(e.line(), 13u);
+
   bad = kMinimal + "sensor: lidar\n";
   EXPECT_EQ(error_of(bad).field(), "sensor");
 
