@@ -5,6 +5,7 @@
 #include "opf/io/input_error.h"
 #include "opf/io/log_read_options.h"
 #include "opf/io/measurement_log.h"
+#include "opf/sim/colour_blob_detector.h"
 #include "opf/sim/experiment_config.h"
 #include "opf/vision/blob_pose.h"
 #include "opf/vision/object_segmenter.h"
@@ -55,7 +56,8 @@ void read_both_ways(const std::string& text, const LogReadOptions& options) {
 }
 
 // What the experiment reader accepts can be run: frames to step at most 10 s apart, a detector
-// noise within kMaxNoise, and bodies whose waypoints are finite and in time order.
+// noise within kMaxNoise, tracked bodies of a colour the camera can segment, and waypoints
+// within 1e6 m and in time order.
 void check_experiment(const sim::ExperimentConfig& config) {
   if (config.frames < 1) fail("an experiment of no frames was accepted");
   if (!(1.0 / config.rate <= kMaxPlausibleInterval)) fail("frames more than 10 s apart");
@@ -65,9 +67,12 @@ void check_experiment(const sim::ExperimentConfig& config) {
   if (config.bodies.empty() || config.objects_of_interest.empty()) fail("nothing to track");
   for (const sim::ScriptedBody& body : config.bodies) {
     if (body.waypoints.empty()) fail("a body without waypoints");
+    if (body.body.tracked && !sim::segmentable(body.body.colour))
+      fail("a tracked body the camera cannot segment");
     for (std::size_t k = 0; k < body.waypoints.size(); ++k) {
       const sim::Waypoint& w = body.waypoints[k];
-      if (!std::isfinite(w.t) || !w.position.allFinite()) fail("a non-finite waypoint");
+      if (!std::isfinite(w.t) || !(w.position.lpNorm<Eigen::Infinity>() <= 1e6))
+        fail("a waypoint that is not finite or past 1e6 m");
       if (k > 0 && !(body.waypoints[k - 1].t < w.t)) fail("waypoints out of order");
     }
   }

@@ -51,7 +51,7 @@ int render_command(const std::vector<std::string>& raw) {
 
   const sim::ScriptedScene scene(config.bodies);
   const sim::SceneSnapshot snapshot = scene.at(static_cast<double>(frame) / config.rate);
-  sim::CameraSensor sensor(experiments::camera_of(config));
+  sim::CameraSensor sensor(experiments::camera_of(config), {}, experiments::detection_of(config));
   const sim::CameraFrame seen = sensor.observe(snapshot);
   cv::Mat image = sensor.last_image().bgr.clone();
 

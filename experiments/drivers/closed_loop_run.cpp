@@ -117,7 +117,7 @@ ExperimentResults run_closed_loop(const sim::ExperimentConfig& config,
   const sim::ClosedLoopSettings& loop = *config.closed_loop;
   ExperimentResults results = results_to_fill(config, estimators, seeds, first_seed, settings);
   // One renderer for all runs: MRPT allows one off-screen renderer per process at a time.
-  sim::CameraSensor sensor(camera_of(config));
+  sim::CameraSensor sensor(camera_of(config), {}, detection_of(config));
   const double dt = 1.0 / config.rate;
 
   for (std::size_t s = first_seed; s < first_seed + seeds; ++s) {

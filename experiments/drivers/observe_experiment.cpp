@@ -5,6 +5,7 @@
 #include "opf/sim/scripted_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -16,6 +17,13 @@ sim::CameraModel camera_of(const sim::ExperimentConfig& config) {
   return sim::CameraModel::look_at(c.position, c.look_at, c.up,
                                    c.vertical_fov_deg * std::numbers::pi / 180.0, c.width,
                                    c.height);
+}
+
+sim::ColourBlobDetectorOptions detection_of(const sim::ExperimentConfig& config) {
+  sim::ColourBlobDetectorOptions options;
+  // The blob's area is a whole number of pixels: below x exactly when below ceil(x).
+  options.min_area_pixels = static_cast<int>(std::ceil(config.measurement.min_area_pixels));
+  return options;
 }
 
 void refuse_unseen_objects(const sim::ExperimentConfig& config,
@@ -63,7 +71,7 @@ Observation observe_experiment(const sim::ExperimentConfig& config, const Progre
     refuse_unseen_objects(config, observation.camera);
     return observation;
   }
-  sim::CameraSensor sensor(camera_of(config));
+  sim::CameraSensor sensor(camera_of(config), {}, detection_of(config));
   for (int k = 0; k < config.frames; ++k) {
     const sim::SceneSnapshot snapshot = scene.at(k / config.rate);
     observation.camera.push_back(sensor.observe(snapshot));

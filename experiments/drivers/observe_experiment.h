@@ -4,11 +4,14 @@
 
 #include "drivers/experiment_run.h"
 #include "opf/sim/camera_model.h"
+#include "opf/sim/colour_blob_detector.h"
 #include "opf/sim/experiment_config.h"
 
 namespace opf::experiments {
 
 sim::CameraModel camera_of(const sim::ExperimentConfig& config);
+/// The detector as the experiment's `measurement` sets it (min_area_pixels).
+sim::ColourBlobDetectorOptions detection_of(const sim::ExperimentConfig& config);
 
 /// Throws std::invalid_argument naming the experiment and the object if an object of interest
 /// is measured (sim::measured) in none of `camera`'s frames: the run would track and score nothing.

@@ -20,6 +20,11 @@ cv::Vec3b hsv_of(const Colour& colour) {
 
 }  // namespace
 
+bool segmentable(const Colour& colour, const ColourBlobDetectorOptions& options) {
+  const cv::Vec3b hsv = hsv_of(colour);
+  return hsv[1] >= options.min_saturation && hsv[2] >= options.min_value;
+}
+
 ColourBlobDetector::ColourBlobDetector(const ColourBlobDetectorOptions& options)
     : options_(options) {
   if (!(options_.hue_tolerance_deg >= 0.0 && options_.hue_tolerance_deg < 90.0)) {
@@ -59,12 +64,12 @@ std::vector<std::optional<BlobMeasurement>> ColourBlobDetector::detect_tracked(
 std::optional<BlobMeasurement> ColourBlobDetector::detect_in_hsv(const cv::Mat& depth,
                                                                  const Colour& colour,
                                                                  const CameraModel& camera) {
-  const cv::Vec3b target = hsv_of(colour);
-  if (target[1] < options_.min_saturation) {
+  if (!segmentable(colour, options_)) {
     throw std::invalid_argument(
-        "ColourBlobDetector: a tracked body's colour is less saturated than min_saturation; "
+        "ColourBlobDetector: a tracked body's colour is below min_saturation or min_value; "
         "pick a saturated colour (see opf::sim::palette)");
   }
+  const cv::Vec3b target = hsv_of(colour);
   // Hue is circular (0 and 179 are neighbours): a band crossing either end is split in two.
   const int hue = target[0];
   const int tolerance = static_cast<int>(std::lround(0.5 * options_.hue_tolerance_deg));

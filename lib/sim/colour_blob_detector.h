@@ -59,6 +59,10 @@ struct BlobMeasurement {
   Eigen::Vector3d surface_point_world = Eigen::Vector3d::Zero();
 };
 
+/// Whether the detector can segment `colour` at all: its HSV saturation and value reach the
+/// minimums (a grey or black body has no hue to find).
+bool segmentable(const Colour& colour, const ColourBlobDetectorOptions& options = {});
+
 /// Segments one colour: pixels whose hue is within the tolerance of the colour's hue and whose
 /// saturation and value pass the minimums, 8-connected components, the largest one kept.
 /// Holds scratch images between calls (so it is cheap per frame and not thread-safe).

@@ -6,6 +6,7 @@
 #include "opf/io/log_read_options.h"
 #include "opf/io/yaml_reader.h"
 #include "opf/sim/camera_model.h"
+#include "opf/sim/colour_blob_detector.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +15,9 @@
 
 namespace opf::sim {
 namespace {
+
+/// m: the farthest a waypoint may lie from the origin, on any axis.
+constexpr double kMaxSceneExtent = 1e6;
 
 Eigen::Vector3d vector3(YamlReader& yaml, std::string_view key, const Eigen::Vector3d& fallback) {
   std::vector<double> v;
@@ -60,11 +64,19 @@ ScriptedBody body(YamlReader& yaml) {
   b.body.size = size(yaml, b.body.shape);
   b.body.colour = colour(yaml);
   yaml.get("tracked", b.body.tracked);
+  if (b.body.tracked && !segmentable(b.body.colour))
+    yaml.fail("colour",
+              "expected a saturated colour for a tracked body, which the camera finds by its hue "
+              "(HSV saturation >= 100 and value >= 60 of 255, as [255, 0, 0]); an untracked "
+              "body may be grey");
   yaml.get("rolling", b.rolling);
   for (YamlReader* w : yaml.sequence("waypoints")) {
     Waypoint waypoint;
     w->get("t", waypoint.t);
     waypoint.position = vector3(*w, "position", Eigen::Vector3d::Zero());
+    // A rolling body turns by its path over its radius: far-off waypoints overflow the angle.
+    w->require("position", waypoint.position.lpNorm<Eigen::Infinity>() <= kMaxSceneExtent,
+               "coordinates within 1e6 m of the origin");
     std::vector<double> yaw_pitch_roll;
     w->get("yaw_pitch_roll", yaw_pitch_roll, 3);
     if (!yaw_pitch_roll.empty())
@@ -150,6 +162,10 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
       config.measurement.min_visible_fraction >= 0 && config.measurement.min_visible_fraction <= 1,
       "a fraction in [0, 1]");
   measurement.get_positive("min_area_pixels", config.measurement.min_area_pixels);
+  measurement.require("min_area_pixels",
+                      config.measurement.min_area_pixels <=
+                          static_cast<double>(config.camera.width) * config.camera.height,
+                      "a pixel count up to the image's (640 x 480)");
 
   if (yaml.has_key("estimator_config"))
     yaml.fail("estimator_config",

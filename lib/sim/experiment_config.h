@@ -37,6 +37,8 @@ struct MeasurementSettings {
   /// marker must be seen); the position is then the visible blob's centroid, biased when partly
   /// covered, as in reality.
   double min_visible_fraction = 0.3;
+  /// A largest blob smaller than this many pixels counts as no detection (the colour detector's
+  /// ColourBlobDetectorOptions::min_area_pixels).
   double min_area_pixels = 30.0;
 };
 

@@ -53,6 +53,20 @@ TEST(ObserveExperiment, RefusesAnObjectOfInterestTheCameraNeverMeasures) {
   }
 }
 
+// The experiment's min_area_pixels is the detector's: above the ball's blob (under a thousand
+// pixels: its 2.5 cm radius spans about 17 pixels from 0.47 m), the ball is never measured.
+TEST(ObserveExperiment, TheExperimentsMinimumAreaReachesTheDetector) {
+  sim::ExperimentConfig config =
+      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml");
+  config.frames = 2;
+  EXPECT_EQ(detection_of(config).min_area_pixels, 30);
+  config.measurement.min_area_pixels = 29.5;
+  EXPECT_EQ(detection_of(config).min_area_pixels, 30);
+  EXPECT_NO_THROW(observe_experiment(config));
+  config.measurement.min_area_pixels = 100000;
+  EXPECT_THROW(observe_experiment(config), std::invalid_argument);
+}
+
 TEST_F(GeneralOpStepOne, TheCameraLosesTheBallUnderTheMugAndFindsItAgain) {
   // Visible while resting (frame 60), covered during the carry (frame 130), revealed (frame 159).
   const auto ball_seen = [&](int k) {

@@ -150,6 +150,18 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
   EXPECT_EQ(e.field(), "camera.up");
   EXPECT_EQ(e.line(), 13u);
 
+  // The camera finds a tracked body by its hue: a black one could never be measured.
+  bad = kMinimal;
+  bad.replace(bad.find("[220, 30, 30]"), 13, "[0, 0, 0]");
+  e = error_of(bad);
+  EXPECT_EQ(e.field(), "bodies[0].colour");
+  EXPECT_EQ(e.line(), 8u);
+  bad = kMinimal;
+  bad.replace(bad.find("[0.5, 0, 0]"), 11, "[1e300, 0, 0]");
+  EXPECT_EQ(error_of(bad).field(), "bodies[0].waypoints[1].position");
+  EXPECT_EQ(error_of(kMinimal + "measurement: {min_area_pixels: 307201}\n").field(),
+            "measurement.min_area_pixels");
+
   bad = kMinimal + "sensor: lidar\n";
   EXPECT_EQ(error_of(bad).field(), "sensor");
 
