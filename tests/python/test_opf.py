@@ -212,6 +212,8 @@ CUP = [0.1, 0.2, 0.3, 0.0, 0.0, 0.0, 1.0]
      "object 'cup', field 'extra_noise': expected a standard deviation >= 0, got -0.01"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, math.nan],
      "object 'cup', field 'extra_noise': expected a standard deviation >= 0, got nan"),
+    (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 1e300],
+     "object 'cup', field 'extra_noise': expected a standard deviation up to 1e+06 m, got 1e+300"),
 ])
 def test_a_bad_input_is_refused_by_name_and_the_tracker_goes_on(t, pose, message):
     times = [k / 30.0 for k in range(4)]
