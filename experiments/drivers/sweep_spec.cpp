@@ -6,11 +6,14 @@
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/io/input_error.h"
 #include "opf/io/yaml_reader.h"
+#include "opf/particles/particle_filter_options.h"
+#include "opf/sim/experiment_config.h"
 
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -52,9 +55,9 @@ void check_settings(const SweepSpec& spec, const std::vector<SweepSetting>& sett
     if (s.key != kParticlesKey) continue;
     std::size_t count = 0;
     std::istringstream in(s.value);
-    if (!(in >> count) || !in.eof() || count == 0)
+    if (!(in >> count) || !in.eof() || count == 0 || count > kMaxParticlesPerPortion)
       throw InputError(spec.file.string(), s.line, s.key,
-                       "expected a positive integer, got \"" + s.value + "\"", kKey);
+                       "expected a positive integer below 2^31, got \"" + s.value + "\"", kKey);
   }
   try {
     parse_estimator_settings(settings_yaml(spec, settings), spec.file.string());
@@ -65,6 +68,22 @@ void check_settings(const SweepSpec& spec, const std::vector<SweepSetting>& sett
         throw InputError(spec.file.string(), s.line, s.key, e.message(), kKey);
     throw InputError(spec.file.string(), 0, e.field(), e.message(), kKey);
   }
+}
+
+// Expanding and checking the runs holds them all in memory: a grid of ten parameters of ten
+// values each is 10^10 runs, which would exhaust the memory before any error.
+void refuse_oversized(const SweepSpec& spec) {
+  std::size_t runs = spec.experiments.size() * spec.estimators.size() * spec.variants.size();
+  const auto times = [&runs](std::size_t factor) {
+    runs = factor != 0 && runs > kMaxSweepRuns / factor ? kMaxSweepRuns + 1 : runs * factor;
+  };
+  for (const SweepParameter& parameter : spec.parameters) times(parameter.values.size());
+  times(spec.seeds);
+  if (runs > kMaxSweepRuns)
+    throw InputError(spec.file.string(), 0, "",
+                     "more than " + std::to_string(kMaxSweepRuns) +
+                         " runs (experiments x estimators x variants x grid points x seeds): "
+                         "split the sweep into several files");
 }
 
 }  // namespace
@@ -118,12 +137,17 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   reader.get("estimators", estimators);
   if (experiments.empty()) reader.fail("experiments", "missing: which experiments to run");
   if (estimators.empty()) reader.fail("estimators", "missing: which estimators to run");
+  std::map<std::string, int> experiment_frames;  // by the name its results folder takes
   for (const std::string& entry : experiments) {
     const std::filesystem::path path = resolve_experiment(entry, file);
     if (!std::filesystem::is_regular_file(path))
       reader.fail("experiments", "no experiment file " + path.string() + " for '" + entry +
                                      "' (a bare name is experiments/<name>.yaml, a path is "
                                      "relative to the sweep file)");
+    const int frames = sim::load_experiment(path).frames;  // its own errors name its lines
+    if (!experiment_frames.emplace(path.stem().string(), frames).second)
+      reader.fail("experiments", "two experiments named '" + path.stem().string() +
+                                     "': their runs would share one results folder");
     spec.experiments.push_back(path);
   }
   const std::vector<std::string> known = estimator_names();
@@ -133,6 +157,10 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
     reader.fail("estimators", "unknown estimator '" + name + "'; expected one of " + list);
   }
+  for (std::size_t i = 0; i < estimators.size(); ++i)
+    if (std::find(estimators.begin(), estimators.begin() + i, estimators[i]) !=
+        estimators.begin() + i)
+      reader.fail("estimators", "estimator '" + estimators[i] + "' appears twice");
   spec.estimators = estimators;
 
   reader.get_positive("seeds", spec.seeds);
@@ -142,11 +170,17 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   if (reader.has_key("particles")) {
     std::size_t particles = 0;
     reader.get_positive("particles", particles);
+    reader.require("particles", particles <= kMaxParticlesPerPortion,
+                   "a particle count below 2^31");
     spec.particles = particles;
   }
   if (reader.has_key("frames")) {
     std::size_t frames = 0;
     reader.get_positive("frames", frames);
+    for (const auto& [experiment, count] : experiment_frames)
+      if (frames > static_cast<std::size_t>(count))
+        reader.fail("frames", "expected at most " + std::to_string(count) + " frames: '" +
+                                  experiment + "' has " + std::to_string(count));
     spec.frames = frames;
   }
   if (reader.has_key("config")) {
@@ -191,6 +225,7 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     spec.parameters.push_back(std::move(parameter));
   }
   reader.finish();
+  refuse_oversized(spec);
 
   for (const SweepVariant& variant : spec.variants)
     for (const auto& point : grid_points(spec)) {

@@ -61,6 +61,9 @@ struct SweepSpec {
   std::vector<SweepParameter> parameters;
 };
 
+/// The most runs a sweep file may expand to (its runs are expanded and checked in memory).
+inline constexpr std::size_t kMaxSweepRuns = 100000;
+
 /// The key that sets `opf run --particles` rather than an estimator option.
 inline constexpr const char* kParticlesKey = "particles";
 
@@ -74,8 +77,10 @@ std::string settings_yaml(const SweepSpec& spec, const std::vector<SweepSetting>
 std::vector<std::vector<SweepSetting>> grid_points(const SweepSpec& spec);
 
 /// Reads and checks a sweep file: InputError naming the file, the line and the key for a YAML
-/// error, an unknown or mistyped key, an unknown experiment or estimator, a duplicate variant
-/// name or value, and any setting the estimator settings reader rejects.
+/// error, an unknown or mistyped key, an unknown experiment or estimator (each experiment file
+/// is read, its own errors naming its lines), two experiments of one name or an estimator twice,
+/// `frames` past an experiment's, a duplicate variant name or value, more than kMaxSweepRuns
+/// runs, and any setting the estimator settings reader rejects.
 SweepSpec load_sweep(const std::filesystem::path& file);
 
 /// As load_sweep, from text; `file` names it in errors and anchors relative paths.

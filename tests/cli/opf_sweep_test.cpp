@@ -93,14 +93,24 @@ TEST_F(OpfSweep, RunsTheGridMatchesOpfRunAndResumes) {
 
 // Runs that fail are named with their logs, kept in the table as missing, and the exit status
 // says so.
+// The runs fail where the sweep file cannot tell: general_op's camera moved under the table,
+// where it never sees the ball (a refusal of `opf run`).
 TEST_F(OpfSweep, ReportsFailedRunsAndExitsNonZero) {
-  const fs::path sweep = write_sweep(tiny_sweep("frames: 100000\n"));
+  std::ifstream shipped(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml");
+  std::stringstream experiment;
+  experiment << shipped.rdbuf();
+  std::string text = experiment.str();
+  text.replace(text.find("position: [0.55, 0.0, 0.49]"), 27, "position: [0.55, 0.0, -5.0]");
+  std::ofstream(dir_ / "blind.yaml") << text;
+  std::string spec = tiny_sweep("frames: 40\n");
+  spec.replace(spec.find("[general_op]"), 12, "[blind.yaml]");
+  const fs::path sweep = write_sweep(spec);
   const fs::path results = dir_ / "out";
   EXPECT_EQ(run("sweep " + sweep.string() + " --out " + results.string()), 1);
   EXPECT_NE(err().find("4 runs failed; their logs:"), std::string::npos) << err();
-  const fs::path log = results / "general_op/opf/default/opf.uncertainty.kappa=1.1/seed_0/log.txt";
+  const fs::path log = results / "blind/opf/default/opf.uncertainty.kappa=1.1/seed_0/log.txt";
   EXPECT_NE(err().find(log.string()), std::string::npos) << err();
-  EXPECT_NE(read(log).find("has 330 frames"), std::string::npos) << read(log);
+  EXPECT_NE(read(log).find("in none of its 40 frames"), std::string::npos) << read(log);
   const auto rows = csv_rows(read(results / "tiny.csv"));
   ASSERT_EQ(rows.size(), 4u);
   for (const auto& row : rows) {

@@ -200,12 +200,65 @@ TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
       file + ":4: key 'parameters.opf.uncertainty.kappa': expected a non-empty list of values");
   EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nparameters:\n"
                      "  particles: [100, 0]\n"),
-            file + ":4: key 'particles': expected a positive integer, got \"0\"");
+            file + ":4: key 'particles': expected a positive integer below 2^31, got \"0\"");
+  // The resampler's marks are 32-bit: a count from 2^31 on could only fail in the run.
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nparameters:\n"
+                     "  particles: [100, 2147483648]\n"),
+            file +
+                ":4: key 'particles': expected a positive integer below 2^31, got "
+                "\"2147483648\"");
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nparticles: 2147483648\n"),
+            file +
+                ":3: key 'particles': expected a particle count below 2^31, got "
+                "\"2147483648\"");
+  // Every run of a sweep with more frames than an experiment has would fail (opf run --frames).
+  EXPECT_EQ(error_of("experiments: [general_op, baseball]\nestimators: [opf]\nframes: 91\n"),
+            file + ":3: key 'frames': expected at most 90 frames: 'baseball' has 90");
+  // Runs go to <experiment>/<estimator>/...: a name twice would run (and write) the same twice.
+  EXPECT_EQ(error_of("experiments: [general_op, ../general_op.yaml]\n"
+                     "estimators: [opf]\n"),
+            file +
+                ":1: key 'experiments': two experiments named 'general_op': their runs would "
+                "share one results folder");
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf, pf, opf]\n"),
+            file + ":2: key 'estimators': estimator 'opf' appears twice");
   EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf]\nvariants:\n"
                      "  - {name: a}\n  - {name: a}\n"),
             file + ":5: key 'variants[1].name': expected a name no other variant has, got \"a\"");
   EXPECT_EQ(error_of("estimators: [opf]\n"),
             file + ":1: key 'experiments': missing: which experiments to run");
+}
+
+// The runs are expanded and checked in memory: ten values of each of five options, twice, is
+// 200 000 runs, refused before any is expanded (a grid of 10^10 would exhaust the memory).
+TEST(SweepSpec, RefusesMoreRunsThanItCanHold) {
+  const std::string message = kFile.string() +
+                              ": more than 100000 runs (experiments x estimators x variants x "
+                              "grid points x seeds): split the sweep into several files";
+  std::string grid = "experiments: [general_op]\nestimators: [opf]\nseeds: 2\nparameters:\n";
+  for (const char* key : {"opf.uncertainty.kappa: [1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 2]",
+                          "opf.occluder.reach: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]",
+                          "opf.occluder.epsilon_occ: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]",
+                          "opf.feedback.epsilon_safe: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]",
+                          "pf.reset_gate: [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]"})
+    grid += std::string("  ") + key + "\n";
+  EXPECT_EQ(error_of(grid), message);
+  // Ten grid points of 10 000 seeds are 100 000 runs: the limit itself is taken.
+  const std::string ten =
+      "experiments: [general_op]\nestimators: [opf]\nparameters:\n"
+      "  opf.uncertainty.kappa: [1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, "
+      "2]\nseeds: ";
+  EXPECT_EQ(error_of(ten + "10000\n"), "");
+  EXPECT_EQ(error_of(ten + "10001\n"), message);
+}
+
+// Each experiment file is read when the sweep is: one that is not an experiment fails with its
+// own file and line, before any run.
+TEST(SweepSpec, ReadsEachExperimentFile) {
+  const std::string error =
+      error_of("experiments: [../configs/estimators.yaml]\nestimators: [opf]\n");
+  EXPECT_NE(error.find("estimators.yaml:"), std::string::npos) << error;
+  EXPECT_EQ(error.find(kFile.string()), std::string::npos) << error;
 }
 
 }  // namespace

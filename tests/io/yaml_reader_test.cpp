@@ -195,6 +195,21 @@ TEST(YamlReader, TopLevelMustBeAMapping) {
   EXPECT_TRUE(contains(e.message(), "got [a, b]")) << e.what();
 }
 
+// A file of one long line (not YAML at all) is one scalar: the message quotes its start and says
+// how long it is, rather than echoing a megabyte to the terminal.
+TEST(YamlReader, ALongScalarIsQuotedByItsStart) {
+  const std::string line(1 << 20, 'a');
+  const InputError e = error_of([&] { YamlReader::parse(line + "\n", "s.yaml"); });
+  EXPECT_EQ(e.message(), "expected a mapping of settings at the top level, got \"" +
+                             std::string(80, 'a') + "...\" (1048576 characters)");
+  double x = 0.0;
+  const InputError list = error_of([&] {
+    YamlReader::parse("x: [1, " + std::string(100, 'b') + "]\n", "s.yaml").get_positive("x", x);
+  });
+  EXPECT_TRUE(contains(list.message(), "[1, \"" + std::string(80, 'b') + "...\" (100 characters)]"))
+      << list.what();
+}
+
 TEST(YamlReader, SectionMustBeAMapping) {
   YamlReader yaml = YamlReader::parse("x: 1\npf: 5\n", "s.yaml");
   const InputError e = error_of([&] { yaml.child("pf"); });
