@@ -221,6 +221,11 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
     loop.get_positive("gravity", c.gravity);
     YamlReader& controller = loop.child("controller");
     controller.get_positive("kp_nominal", c.controller.kp_nominal);
+    // The hand moves by -k_p e dt a frame: the error shrinks by (1 - k_p dt), which overshoots
+    // from k_p dt > 1 and diverges from 2 (a gain of 1e300 sent the hand to infinity).
+    controller.require("kp_nominal", c.controller.kp_nominal <= config.rate,
+                       "a gain (1/s) up to the frame rate (k_p dt <= 1: no frame's step "
+                       "overshoots the error)");
     controller.get_positive("kd_nominal", c.controller.kd_nominal);
     controller.get_positive("epsilon_safe", c.controller.epsilon_safe);
     controller.get_positive("steepness", c.controller.steepness);

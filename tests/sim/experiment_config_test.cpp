@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+#include <string>
+
 namespace opf::sim {
 namespace {
 
@@ -179,6 +183,26 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
 
 // The default preset is one set of settings for every experiment: a file that would change it
 // for itself is refused, with where its settings can go instead.
+// The closed loop's hand moves by -k_p e dt a frame: a gain past the frame rate overshoots
+// every frame (1e300 sent the hand, and the frames CSV, to infinity).
+TEST(ExperimentConfig, TheControllersGainStopsAtTheFrameRate) {
+  std::ifstream file(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string shipped = text.str();
+  ASSERT_NE(shipped.find("kp_nominal: 3.0"), std::string::npos);
+  for (const char* gain : {"kp_nominal: 30.5", "kp_nominal: 1e300"}) {
+    std::string bad = shipped;
+    bad.replace(bad.find("kp_nominal: 3.0"), 15, gain);
+    const InputError e = error_of(bad);
+    EXPECT_EQ(e.field(), "closed_loop.controller.kp_nominal") << gain;
+    EXPECT_EQ(e.line(), 34u) << gain;
+  }
+  std::string at_rate = shipped;
+  at_rate.replace(at_rate.find("kp_nominal: 3.0"), 15, "kp_nominal: 30");
+  EXPECT_EQ(parse_experiment(at_rate, "sugar_drop.yaml").closed_loop->controller.kp_nominal, 30.0);
+}
+
 TEST(ExperimentConfig, AnExperimentCannotChangeTheDefaultSettings) {
   const InputError e = error_of(kMinimal + "estimator_config: configs/estimators.yaml\n");
   EXPECT_EQ(e.field(), "estimator_config");
