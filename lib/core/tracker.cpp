@@ -15,6 +15,9 @@ Tracker::Tracker(EstimatorFactory factory, std::uint64_t seed, std::size_t threa
 }
 
 const std::vector<Estimate>& Tracker::step(const Frame& frame) {
+  if (!refusal_.empty())
+    throw std::logic_error("Tracker: stopped at a refused estimate (" + refusal_ +
+                           "); a new tracker starts again");
   // A non-finite time would pass every later comparison as false and stop the tracker for good.
   if (!std::isfinite(frame.t)) {
     std::ostringstream msg;
@@ -48,14 +51,22 @@ const std::vector<Estimate>& Tracker::step(const Frame& frame) {
     estimates_.push_back(std::move(first));
   }
   hypotheses_.clear();
-  for (std::size_t i = 0; i < objects_.size(); ++i) {
-    estimates_[i].object = objects_[i];
-    refuse_non_finite(estimates_[i], estimators_[i]->name());
-    for (Estimate& extra : estimators_[i]->extra_hypotheses()) {
-      extra.object = objects_[i];
-      refuse_non_finite(extra, estimators_[i]->name());
-      hypotheses_.push_back(std::move(extra));
+  try {
+    for (std::size_t i = 0; i < objects_.size(); ++i) {
+      estimates_[i].object = objects_[i];
+      refuse_non_finite(estimates_[i], estimators_[i]->name());
+      for (Estimate& extra : estimators_[i]->extra_hypotheses()) {
+        extra.object = objects_[i];
+        refuse_non_finite(extra, estimators_[i]->name());
+        hypotheses_.push_back(std::move(extra));
+      }
     }
+  } catch (const std::runtime_error&) {
+    // The estimators have stepped into the non-finite state: no later step could be trusted.
+    std::ostringstream at;
+    at << "t = " << frame.t << " s";
+    refusal_ = at.str();
+    throw;
   }
   return estimates_;
 }
@@ -75,9 +86,9 @@ void refuse_non_finite(const Estimate& e, std::string_view estimator) {
   std::ostringstream msg;
   msg << estimator << ": the estimate of '" << e.object << "' at t = " << e.t << " s";
   if (e.hypothesis > 0) msg << " (hypothesis " << e.hypothesis << ")";
-  msg << " has a " << what << " that is not a finite number; no estimate is written from it. "
-      << "Noise settings near the limits of double precision cause this: check the estimator's "
-         "noise settings and the log's extra_noise column";
+  msg << " has a " << what << " that is not a finite number; no estimate is written from it, "
+      << "and the tracker's state is lost with it. Inputs or settings far beyond any physical "
+         "scale cause this: check the estimator's noise settings and the detections";
   throw std::runtime_error(msg.str());
 }
 

@@ -24,7 +24,7 @@ using EstimatorFactory =
 
 /// Throws std::runtime_error naming `estimator`, the object, its time and the field, if the
 /// estimate's pose, covariance, trace or probability is not finite: a NaN written to a result
-/// file would pass for an estimate.
+/// file would pass for an estimate. The estimator has stepped by then: its tracker cannot go on.
 void refuse_non_finite(const Estimate& estimate, std::string_view estimator);
 
 class Tracker {
@@ -34,7 +34,8 @@ class Tracker {
 
   /// Steps every known object through `frame` (timestamps finite and increasing, else
   /// std::invalid_argument and nothing changes) and returns one estimate per object seen so far,
-  /// in order of first appearance. An estimate that is not finite is refused (refuse_non_finite).
+  /// in order of first appearance. An estimate that is not finite is refused (refuse_non_finite),
+  /// and every later step throws std::logic_error: the estimators have stepped into that state.
   const std::vector<Estimate>& step(const Frame& frame);
 
   const std::vector<Estimate>& estimates() const { return estimates_; }
@@ -54,6 +55,7 @@ class Tracker {
   std::vector<Estimate> hypotheses_;
   std::vector<StatedRadius> stated_radii_;  ///< each object's last stated size
   bool has_stepped_ = false;
+  std::string refusal_;  ///< where an estimate was refused as not finite; empty while none was
   double last_t_ = 0.0;
   std::unique_ptr<WorkerPool> pool_;
 };

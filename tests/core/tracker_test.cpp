@@ -140,6 +140,15 @@ TEST(Tracker, RefusesAnEstimateThatIsNotFinite) {
         << message;
     EXPECT_NE(message.find("has a pose that is not a finite number"), std::string::npos) << message;
   }
+  // The estimator has stepped into that state: the tracker goes no further.
+  try {
+    tracker.step(frame(3.0, {{"a", 0.5}}));
+    FAIL() << "a tracker stepped on after a refused estimate";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("stopped at a refused estimate (t = 2 s)"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Tracker, RefusesEachNonFiniteFieldByName) {
