@@ -3,6 +3,7 @@
 #include "arguments.h"
 #include "command_help.h"
 #include "opf/io/atomic_file.h"
+#include "opf/io/log_read_options.h"
 #include "opf/vision/detection_overlay.h"
 #include "opf/vision/frame_source.h"
 #include "opf/vision/segmentation_spec.h"
@@ -101,7 +102,11 @@ int detect_command(const std::vector<std::string>& raw) {
   const std::filesystem::path spec_path = args.require("objects");
   const std::filesystem::path out = args.require("out");
   const std::optional<double> rate = args.get_number("rate");
-  if (rate && !(*rate > 0.0)) throw UsageError{"option '--rate' expects a frame rate > 0"};
+  // As the log reader's limit: a log at a lower rate would be refused as not in seconds.
+  if (rate && !(*rate >= kMinFrameRate))
+    throw UsageError{
+        "option '--rate' expects a frame rate in Hz of at least 0.1 (frames at most "
+        "10 s apart)"};
   const std::size_t first = args.get_count("first").value_or(0);
   std::optional<std::size_t> frames;
   if (const auto count = args.get_count("frames")) {

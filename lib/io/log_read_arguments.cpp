@@ -25,7 +25,7 @@ std::optional<double> box_frame_rate(const std::string& path) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       if (line.rfind("frameRate=", 0) != 0) continue;
       const auto rate = csv::parse_double(line.substr(10));
-      if (rate && *rate > 0.0 && std::isfinite(*rate)) return rate;
+      if (rate && *rate >= kMinFrameRate && std::isfinite(*rate)) return rate;
     }
   }
   return std::nullopt;
@@ -93,8 +93,9 @@ LogReadOptions log_read_options(const LogArguments& a, const std::string& path,
     options.frame_tolerance = *a.frame_tolerance;
   }
   if (a.rate) {
-    if (!(*a.rate > 0.0) || !std::isfinite(*a.rate))
-      refuse(name("rate"), " expects a frame rate in Hz > 0");
+    if (!(*a.rate >= kMinFrameRate) || !std::isfinite(*a.rate))
+      refuse(name("rate"),
+             " expects a frame rate in Hz of at least 0.1 (frames at most 10 s apart)");
     options.rate = *a.rate;
   }
   options.fill_gaps = a.fill;

@@ -73,6 +73,9 @@ struct LogReadOptions {
 inline constexpr double kMaxPlausibleSpeed = 100.0;
 /// One object's detections further apart than this (s, median) are taken as not in seconds.
 inline constexpr double kMaxPlausibleInterval = 10.0;
+/// Hz: the lowest frame rate a command takes (--rate), frames at most kMaxPlausibleInterval
+/// apart; a log at a lower rate would be refused as not in seconds.
+inline constexpr double kMinFrameRate = 1.0 / kMaxPlausibleInterval;
 /// Gaps longer than this (s) are not filled (reported instead): a clock jump, not a dropout.
 inline constexpr double kMaxFilledGap = 10.0;
 
