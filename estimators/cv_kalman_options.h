@@ -25,12 +25,7 @@ void describe_options(Visitor& v, CvKalmanOptions& o) {
            noise_scale("a positive number (m/s^2/sqrt(Hz)) up to 1e6"));
   v.number("angular_acceleration_noise", o.angular_acceleration_noise,
            noise_scale("a positive number (rad/s^2/sqrt(Hz)) up to 1e6"));
-  v.section("observation_noise", [&] {
-    v.number("translation", o.observation_noise_translation,
-             noise_scale("a positive number (m) up to 1e6"));
-    v.number("rotation", o.observation_noise_rotation,
-             noise_scale("a positive number (rad) up to 1e6"));
-  });
+  describe_observation_noise(v, o.observation_noise_translation, o.observation_noise_rotation);
   v.number("initial_velocity_std", o.initial_velocity_std,
            noise_scale("a positive number (m/s) up to 1e6"));
   v.number("initial_angular_velocity_std", o.initial_angular_velocity_std,

@@ -40,12 +40,7 @@ void describe_options(Visitor& v, ImmOptions& o) {
              noise_scale("a positive number (rad/s^2/sqrt(Hz)) up to 1e6"));
   });
   v.number("mean_sojourn", o.mean_sojourn, positive("a positive number (s)"));
-  v.section("observation_noise", [&] {
-    v.number("translation", o.observation_noise_translation,
-             noise_scale("a positive number (m) up to 1e6"));
-    v.number("rotation", o.observation_noise_rotation,
-             noise_scale("a positive number (rad) up to 1e6"));
-  });
+  describe_observation_noise(v, o.observation_noise_translation, o.observation_noise_rotation);
   v.number("initial_velocity_std", o.initial_velocity_std,
            noise_scale("a positive number (m/s) up to 1e6"));
   v.number("initial_acceleration_std", o.initial_acceleration_std,

@@ -56,8 +56,8 @@ void read_both_ways(const std::string& text, const LogReadOptions& options) {
 }
 
 // What the experiment reader accepts can be run: frames to step at most 10 s apart, a detector
-// noise within kMaxNoise, tracked bodies of a colour the camera can segment, and waypoints
-// within 1e6 m and in time order.
+// noise within kMaxNoise, tracked bodies of a colour the camera can segment and no other body of
+// their hue, and waypoints within 1e6 m and in time order.
 void check_experiment(const sim::ExperimentConfig& config) {
   if (config.frames < 1) fail("an experiment of no frames was accepted");
   if (!(1.0 / config.rate <= kMaxPlausibleInterval)) fail("frames more than 10 s apart");
@@ -69,6 +69,10 @@ void check_experiment(const sim::ExperimentConfig& config) {
     if (body.waypoints.empty()) fail("a body without waypoints");
     if (body.body.tracked && !sim::segmentable(body.body.colour))
       fail("a tracked body the camera cannot segment");
+    if (body.body.tracked && config.sensor == sim::SensorKind::kCamera)
+      for (const sim::ScriptedBody& other : config.bodies)
+        if (&other != &body && sim::confusable(body.body.colour, other.body.colour))
+          fail("a body the camera would take for a tracked one");
     for (std::size_t k = 0; k < body.waypoints.size(); ++k) {
       const sim::Waypoint& w = body.waypoints[k];
       if (!std::isfinite(w.t) || !(w.position.lpNorm<Eigen::Infinity>() <= 1e6))

@@ -71,6 +71,15 @@ inline constexpr double kMaxNoise = 1e6;
 constexpr Bounds noise_scale(std::string_view expectation) {
   return {0.0, true, kMaxNoise, false, expectation};
 }
+/// The `observation_noise:` section every filter's settings share: a standard deviation per
+/// axis of the position (m) and of the rotation (rad, tangent space).
+template <class Visitor>
+void describe_observation_noise(Visitor& v, double& translation, double& rotation) {
+  v.section("observation_noise", [&] {
+    v.number("translation", translation, noise_scale("a positive number (m) up to 1e6"));
+    v.number("rotation", rotation, noise_scale("a positive number (rad) up to 1e6"));
+  });
+}
 /// (0, 1]: a probability that may not be zero, an ESS fraction.
 constexpr Bounds unit_fraction(std::string_view expectation = "a number in (0, 1]") {
   return {0.0, true, 1.0, false, expectation};

@@ -75,12 +75,7 @@ void describe_options(Visitor& v, PoseParticleFilterOptions& o) {
     v.number("rotation", o.process_noise_rotation,
              noise_scale("a positive number (rad/sqrt(s)) up to 1e6"));
   });
-  v.section("observation_noise", [&] {
-    v.number("translation", o.observation_noise_translation,
-             noise_scale("a positive number (m) up to 1e6"));
-    v.number("rotation", o.observation_noise_rotation,
-             noise_scale("a positive number (rad) up to 1e6"));
-  });
+  describe_observation_noise(v, o.observation_noise_translation, o.observation_noise_rotation);
   v.section("resampling", [&] { describe_options(v, o.resampling); });
   v.number("reset_gate", o.reset_gate, non_negative("a number of sigmas >= 0 (0 disables)"));
 }

@@ -25,6 +25,15 @@ bool segmentable(const Colour& colour, const ColourBlobDetectorOptions& options)
   return hsv[1] >= options.min_saturation && hsv[2] >= options.min_value;
 }
 
+bool confusable(const Colour& tracked, const Colour& other,
+                const ColourBlobDetectorOptions& options) {
+  if (!segmentable(other, options)) return false;
+  // OpenCV's 8-bit hue is in 2-degree units, 0 to 179, circular.
+  const int apart = std::abs(int{hsv_of(tracked)[0]} - int{hsv_of(other)[0]});
+  const int tolerance = static_cast<int>(std::lround(0.5 * options.hue_tolerance_deg));
+  return std::min(apart, 180 - apart) <= 2 * tolerance;
+}
+
 ColourBlobDetector::ColourBlobDetector(const ColourBlobDetectorOptions& options)
     : options_(options) {
   if (!(options_.hue_tolerance_deg >= 0.0 && options_.hue_tolerance_deg < 90.0)) {

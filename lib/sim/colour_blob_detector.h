@@ -63,6 +63,11 @@ struct BlobMeasurement {
 /// minimums (a grey or black body has no hue to find).
 bool segmentable(const Colour& colour, const ColourBlobDetectorOptions& options = {});
 
+/// Whether the detector of `tracked` would take pixels of a body of colour `other` for it:
+/// `other` is segmentable and the hue bands of the two (each +- hue_tolerance_deg) overlap.
+bool confusable(const Colour& tracked, const Colour& other,
+                const ColourBlobDetectorOptions& options = {});
+
 /// Segments one colour: pixels whose hue is within the tolerance of the colour's hue and whose
 /// saturation and value pass the minimums, 8-connected components, the largest one kept.
 /// Holds scratch images between calls (so it is cheap per frame and not thread-safe).

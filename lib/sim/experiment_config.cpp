@@ -111,6 +111,23 @@ ScriptedBody body(YamlReader& yaml) {
   return b;
 }
 
+// The camera finds a tracked body by its hue: another body of a hue within its detector's band
+// would be taken for it (two red bodies: the ball's estimate follows the mug).
+void refuse_confusable_colours(const std::vector<ScriptedBody>& bodies,
+                               const std::vector<YamlReader*>& readers) {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].body.tracked) continue;
+    for (std::size_t j = 0; j < bodies.size(); ++j)
+      if (j != i && confusable(bodies[i].body.colour, bodies[j].body.colour))
+        readers[j]->fail("colour",
+                         "expected a hue more than 20 degrees from that of the tracked "
+                         "body '" +
+                             bodies[i].body.name +
+                             "', which the camera finds by its hue (or an unsaturated "
+                             "colour, for a body nobody tracks)");
+  }
+}
+
 }  // namespace
 
 ExperimentConfig parse_experiment(const std::string& yaml_text, const std::string& source) {
@@ -180,12 +197,14 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
       yaml.fail("paper_preset_config", "no file " + config.paper_preset_config.string());
   }
 
-  for (YamlReader* b : yaml.sequence("bodies")) config.bodies.push_back(body(*b));
+  const std::vector<YamlReader*> body_readers = yaml.sequence("bodies");
+  for (YamlReader* b : body_readers) config.bodies.push_back(body(*b));
   if (config.bodies.empty()) yaml.fail("bodies", "expected at least one body");
 
   std::vector<std::string> names;
   for (const auto& b : config.bodies) names.push_back(b.body.name);
   yaml.get("sensor", kSensorKindNames, config.sensor);
+  if (config.sensor == SensorKind::kCamera) refuse_confusable_colours(config.bodies, body_readers);
   for (YamlReader* d : yaml.sequence("dropouts")) {
     Dropout dropout;
     d->get("from", dropout.from);

@@ -73,6 +73,21 @@ class ColourBlobDetectorTest : public ::testing::Test {
 
 std::unique_ptr<SceneRenderer> ColourBlobDetectorTest::renderer_;
 
+// The palette's hues are 60 degrees apart: no detector takes another body's pixels. Within 20
+// degrees (the two +-10 degree bands overlap) a body would be taken for a tracked one; a grey or
+// black body never is.
+TEST(ColourConfusion, OverlappingHueBandsAndOnlyThose) {
+  using namespace palette;
+  for (const Colour& a : {kBall, kTray, kLeftMug, kEndEffector, kRightMug, kCup})
+    for (const Colour& b : {kBall, kTray, kLeftMug, kEndEffector, kRightMug, kCup})
+      EXPECT_EQ(confusable(a, b), a.r == b.r && a.g == b.g && a.b == b.b);
+  EXPECT_TRUE(confusable(kBall, Colour{255, 60, 0}));    // hue 14 degrees
+  EXPECT_TRUE(confusable(kBall, Colour{255, 0, 60}));    // 346 degrees: across the wrap
+  EXPECT_FALSE(confusable(kBall, Colour{255, 120, 0}));  // 28 degrees
+  EXPECT_FALSE(confusable(kBall, kTable));
+  EXPECT_FALSE(confusable(kBall, Colour{40, 0, 0}));  // dark: below min_value
+}
+
 TEST_F(ColourBlobDetectorTest, FullyVisibleBallIsFoundWithinAPixelOfItsProjectedCentre) {
   // On the axis, at the paper's hiding place, near the ball's end point and far out.
   for (const Eigen::Vector3d& centre :

@@ -166,6 +166,23 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
   EXPECT_EQ(error_of(kMinimal + "measurement: {min_area_pixels: 307201}\n").field(),
             "measurement.min_area_pixels");
 
+  // Another body of the ball's hue would be taken for it by the camera (a red mug: the ball's
+  // estimate followed the mug, 0.23 m off, and was never hidden).
+  const std::string red_cup =
+      "  - name: cup\n    shape: sphere\n    size: [0.03]\n    colour: [255, 20, 0]\n"
+      "    waypoints: [{t: 0, position: [0.2, 0, 0]}]\n";
+  e = error_of(kMinimal + red_cup);
+  EXPECT_EQ(e.field(), "bodies[1].colour");
+  EXPECT_EQ(e.line(), 13u);
+  EXPECT_NE(std::string(e.what()).find("tracked body 'ball'"), std::string::npos) << e.what();
+  e = error_of(kMinimal + red_cup + "    tracked: false\n");
+  EXPECT_EQ(e.field(), "bodies[1].colour");  // untracked, still seen as the ball
+  std::string grey_cup = red_cup;
+  grey_cup.replace(grey_cup.find("[255, 20, 0]"), 12, "[150, 150, 150]");
+  EXPECT_NO_THROW(parse_experiment(kMinimal + grey_cup + "    tracked: false\n", "tiny.yaml"));
+  // Motion capture identifies markers, not hues.
+  EXPECT_NO_THROW(parse_experiment(kMinimal + red_cup + "sensor: motion_capture\n", "tiny.yaml"));
+
   bad = kMinimal + "sensor: lidar\n";
   EXPECT_EQ(error_of(bad).field(), "sensor");
 
