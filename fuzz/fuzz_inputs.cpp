@@ -60,7 +60,7 @@ void read_both_ways(const std::string& text, const LogReadOptions& options) {
 // their hue, and waypoints within 1e6 m and in time order.
 void check_experiment(const sim::ExperimentConfig& config) {
   if (config.frames < 1) fail("an experiment of no frames was accepted");
-  if (!(1.0 / config.rate <= kMaxPlausibleInterval)) fail("frames more than 10 s apart");
+  if (!(config.rate >= kMinFrameRate)) fail("frames more than 10 s apart");
   if (!(config.measurement.position_noise <= kMaxNoise) ||
       !(config.measurement.orientation_noise <= kMaxNoise))
     fail("a detector noise past 1e6");
@@ -75,7 +75,7 @@ void check_experiment(const sim::ExperimentConfig& config) {
           fail("a body the camera would take for a tracked one");
     for (std::size_t k = 0; k < body.waypoints.size(); ++k) {
       const sim::Waypoint& w = body.waypoints[k];
-      if (!std::isfinite(w.t) || !(w.position.lpNorm<Eigen::Infinity>() <= 1e6))
+      if (!std::isfinite(w.t) || !(w.position.lpNorm<Eigen::Infinity>() <= sim::kMaxSceneExtent))
         fail("a waypoint that is not finite or past 1e6 m");
       if (k > 0 && !(body.waypoints[k - 1].t < w.t)) fail("waypoints out of order");
     }

@@ -62,10 +62,9 @@ std::vector<double> pose_fields(const std::string& object, const py::object& pos
   require_length(7, "extra_noise", "a standard deviation");
   // As the log's column: past kMaxNoise the estimates turn into NaN (core/option_schema.h).
   if (p.size() > 7 && p[7] > kMaxNoise)
-    throw std::invalid_argument(where +
-                                ", field 'extra_noise': expected a standard deviation up "
-                                "to 1e+06 m, got " +
-                                csv::format_double(p[7]));
+    throw std::invalid_argument(
+        where + ", field 'extra_noise': expected a standard deviation up to " +
+        csv::format_double(kMaxNoise) + " m, got " + csv::format_double(p[7]));
   require_length(8, "radius", "a radius");
   require_length(9, "box_x", "an extent", true);
   require_length(10, "box_y", "an extent", true);

@@ -104,9 +104,7 @@ int detect_command(const std::vector<std::string>& raw) {
   const std::optional<double> rate = args.get_number("rate");
   // As the log reader's limit: a log at a lower rate would be refused as not in seconds.
   if (rate && !(*rate >= kMinFrameRate))
-    throw UsageError{
-        "option '--rate' expects a frame rate in Hz of at least 0.1 (frames at most "
-        "10 s apart)"};
+    throw UsageError{"option '--rate' expects " + std::string(kFrameRateExpectation)};
   const std::size_t first = args.get_count("first").value_or(0);
   std::optional<std::size_t> frames;
   if (const auto count = args.get_count("frames")) {

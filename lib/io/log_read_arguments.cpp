@@ -94,8 +94,7 @@ LogReadOptions log_read_options(const LogArguments& a, const std::string& path,
   }
   if (a.rate) {
     if (!(*a.rate >= kMinFrameRate) || !std::isfinite(*a.rate))
-      refuse(name("rate"),
-             " expects a frame rate in Hz of at least 0.1 (frames at most 10 s apart)");
+      refuse(name("rate"), " expects " + std::string(kFrameRateExpectation));
     options.rate = *a.rate;
   }
   options.fill_gaps = a.fill;

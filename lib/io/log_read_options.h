@@ -76,6 +76,9 @@ inline constexpr double kMaxPlausibleInterval = 10.0;
 /// Hz: the lowest frame rate a command takes (--rate), frames at most kMaxPlausibleInterval
 /// apart; a log at a lower rate would be refused as not in seconds.
 inline constexpr double kMinFrameRate = 1.0 / kMaxPlausibleInterval;
+/// What an error says a rate must be, wherever kMinFrameRate is checked.
+inline constexpr std::string_view kFrameRateExpectation =
+    "a frame rate in Hz of at least 0.1 (frames at most 10 s apart)";
 /// Gaps longer than this (s) are not filled (reported instead): a clock jump, not a dropout.
 inline constexpr double kMaxFilledGap = 10.0;
 

@@ -16,9 +16,6 @@
 namespace opf::sim {
 namespace {
 
-/// m: the farthest a waypoint may lie from the origin, on any axis.
-constexpr double kMaxSceneExtent = 1e6;
-
 Eigen::Vector3d vector3(YamlReader& yaml, std::string_view key, const Eigen::Vector3d& fallback) {
   std::vector<double> v;
   yaml.get(key, v, 3);
@@ -137,8 +134,7 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   yaml.get_positive("rate", config.rate);
   // As a log's (io/log_read_options.h): frames further apart are not a tracking run, and a rate
   // near zero makes the frame interval overflow.
-  yaml.require("rate", 1.0 / config.rate <= kMaxPlausibleInterval,
-               "a frame rate of at least 0.1 Hz (frames at most 10 s apart)");
+  yaml.require("rate", config.rate >= kMinFrameRate, std::string(kFrameRateExpectation));
   std::size_t frames = 0;
   yaml.get_positive("frames", frames);
   // The frame counter is an int: a larger count would wrap around to a few frames or none.

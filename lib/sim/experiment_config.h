@@ -27,6 +27,9 @@ struct CameraSettings {
 
 /// How the rendered image becomes a measurement (paper Sec. IV-B): colour blobs give the
 /// position; a marker-style sensor gives the orientation.
+/// m: the farthest a waypoint may lie from the origin, on any axis.
+inline constexpr double kMaxSceneExtent = 1e6;
+
 struct MeasurementSettings {
   /// Extra noise on the detected position, m per axis: the renderer is exact, a real camera and
   /// detector are not.
