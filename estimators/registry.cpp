@@ -1,6 +1,5 @@
 #include "opf/estimators/registry.h"
 
-#include "opf/core/closest_name.h"
 #include "opf/estimators/cv_kalman.h"
 #include "opf/estimators/imm_kalman.h"
 #include "opf/estimators/object_permanence_filter.h"
@@ -10,19 +9,6 @@
 #include <stdexcept>
 
 namespace opf {
-
-std::vector<std::string> estimator_names() {
-  return {"opf", "pf", "cvkf", "imm", "oapf"};
-}
-
-std::string unknown_estimator_message(const std::string& name) {
-  std::string known;
-  for (const auto& n : estimator_names()) known += (known.empty() ? "" : ", ") + n;
-  std::string message = "unknown estimator '" + name + "' (known: " + known + ")";
-  if (const auto closest = closest_name(name, estimator_names()))
-    message += "; did you mean '" + *closest + "'?";
-  return message;
-}
 
 EstimatorFactory make_estimator_factory(const std::string& name,
                                         const EstimatorSettings& settings) {

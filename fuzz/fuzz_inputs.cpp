@@ -1,6 +1,10 @@
 #include "fuzz_inputs.h"
 
+#include "drivers/sweep_runs.h"
+#include "drivers/sweep_spec.h"
+
 #include "opf/core/option_schema.h"
+#include "opf/estimators/estimator_names.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/io/input_error.h"
 #include "opf/io/log_read_options.h"
@@ -11,8 +15,11 @@
 #include "opf/vision/object_segmenter.h"
 #include "opf/vision/segmentation_spec.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -98,6 +105,43 @@ void check_segmentation(const vision::SegmentationSpec& spec) {
   }
 }
 
+// What the sweep reader accepts, `opf sweep` can run: known estimators and experiment files, each
+// once, at most kMaxSweepRuns runs, each grid point in a folder of its own, and every run's
+// settings file read by the settings reader.
+void check_sweep(const experiments::SweepSpec& spec) {
+  if (spec.experiments.empty() || spec.estimators.empty()) fail("a sweep of nothing");
+  std::set<std::string> names;
+  for (const std::filesystem::path& file : spec.experiments)
+    if (!std::filesystem::is_regular_file(file) || !names.insert(file.stem().string()).second)
+      fail("an experiment missing or twice: " + file.string());
+  const std::vector<std::string> known = estimator_names();
+  for (std::size_t i = 0; i < spec.estimators.size(); ++i)
+    if (std::count(known.begin(), known.end(), spec.estimators[i]) != 1 ||
+        std::count(spec.estimators.begin(), spec.estimators.end(), spec.estimators[i]) != 1)
+      fail("an estimator unknown or twice: " + spec.estimators[i]);
+  if (spec.seeds < 1 || spec.variants.empty()) fail("no seeds or no variants");
+  const auto folder_name = [](const std::string& name) {
+    return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos;
+  };
+  if (!folder_name(spec.name)) fail("a sweep name that is not a folder: " + spec.name);
+  for (const experiments::SweepVariant& variant : spec.variants)
+    if (!folder_name(variant.name)) fail("a variant name that is not a folder: " + variant.name);
+  experiments::SweepSpec one_seed = spec;  // the seeds only add seed_<k> folders
+  one_seed.seeds = 1;
+  const std::vector<experiments::SweepRun> runs = experiments::expand_sweep(one_seed);
+  if (runs.size() * spec.seeds > experiments::kMaxSweepRuns) fail("more runs than the limit");
+  std::set<std::filesystem::path> folders;
+  for (const experiments::SweepRun& run : runs) {
+    if (!folders.insert(run.directory.lexically_normal()).second)
+      fail("two runs share the folder " + run.directory.string());
+    try {
+      parse_estimator_settings(run.settings_yaml, "settings.yaml");
+    } catch (const InputError& e) {
+      fail(std::string("a run's settings are refused: ") + e.what());
+    }
+  }
+}
+
 }  // namespace
 
 // Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes.
@@ -125,6 +169,17 @@ void segmentation_spec(const std::uint8_t* data, std::size_t size) {
   try {
     check_segmentation(vision::parse_segmentation_spec(
         std::string(reinterpret_cast<const char*>(data), size), "fuzz.yaml"));
+  } catch (const InputError&) {
+  }
+}
+
+void sweep_file(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  for (const char* special : {"/proc", "/sys", "/dev"})
+    if (text.find(special) != std::string::npos) return;
+  try {
+    check_sweep(experiments::parse_sweep(
+        text, std::filesystem::path(OPF_SOURCE_DIR) / "experiments" / "sweeps" / "fuzz.yaml"));
   } catch (const InputError&) {
   }
 }

@@ -22,4 +22,10 @@ void experiment_file(const std::uint8_t* data, std::size_t size);
 /// A segmentation spec for `opf detect` (vision/segmentation_spec.h).
 void segmentation_spec(const std::uint8_t* data, std::size_t size);
 
+/// A sweep file of `opf sweep` (experiments/drivers/sweep_spec.h), as if it were
+/// experiments/sweeps/fuzz.yaml of the source tree (its relative paths resolve there; a bare
+/// experiment name is a bundled one, from $OPF_DATA_DIR or beside the program). A text that names
+/// /proc, /sys or /dev is skipped: reading the machine's special files could block.
+void sweep_file(const std::uint8_t* data, std::size_t size);
+
 }  // namespace opf::fuzz

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Fuzzes the readers of user input with libFuzzer (clang, with AddressSanitizer and
 # UndefinedBehaviorSanitizer): the measurement log, the estimator settings file, the experiment
-# file and opf detect's segmentation spec, each for SECONDS (default 60), starting from
-# tests/fuzz/corpus/<target>/ (the grown corpus goes to a scratch directory). A crash stops the run; its input is kept as
-# tests/fuzz/regressions/<target>/<crash file> (replayed by the test suite from then on) and
-# printed in hex, and the script exits 1.
+# file, opf detect's segmentation spec and opf sweep's sweep file, each for SECONDS (default 60),
+# starting from tests/fuzz/corpus/<target>/ (the grown corpus goes to a scratch directory). A
+# crash stops the run; its input is kept as tests/fuzz/regressions/<target>/<crash file>
+# (replayed by the test suite from then on) and printed in hex, and the script exits 1.
 #   bash scripts/run_fuzzers.sh [SECONDS]        (CI runs it after the tests)
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -21,7 +21,9 @@ if ! { cmake -S "$repo/fuzz" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ &
   exit 1
 fi
 status=0
-for target in measurement_log estimator_settings experiment_file segmentation_spec; do
+# A sweep file names bundled experiments, read from the source tree's experiments/.
+export OPF_DATA_DIR="$repo"
+for target in measurement_log estimator_settings experiment_file segmentation_spec sweep_file; do
   scratch="$(mktemp -d)"
   cp "$repo/tests/fuzz/corpus/$target/"* "$scratch/"
   regressions="$repo/tests/fuzz/regressions/$target"

@@ -1,18 +1,6 @@
 #include "drivers/sweep_runs.h"
 
-#include <algorithm>
-
 namespace opf::experiments {
-namespace {
-
-// A value as a path component: '/' and whitespace would split or blur it.
-std::string path_safe(std::string text) {
-  std::replace_if(
-      text.begin(), text.end(), [](char c) { return c == '/' || c == ' ' || c == '\t'; }, '_');
-  return text;
-}
-
-}  // namespace
 
 std::filesystem::path SweepRun::result_file() const {
   return directory / (experiment + "_runs.csv");
@@ -55,9 +43,7 @@ std::vector<SweepRun> expand_sweep(const SweepSpec& spec) {
           std::optional<std::size_t> particles = spec.particles;
           for (const SweepSetting& s : settings)
             if (s.key == kParticlesKey) particles = std::stoul(s.value);
-          std::string point_name;
-          for (const SweepSetting& s : point)
-            point_name += (point_name.empty() ? "" : ",") + s.key + "=" + path_safe(s.value);
+          const std::string point_name = point_folder(point);
           const std::string experiment = experiment_file.stem().string();
           std::filesystem::path base = std::filesystem::path(experiment) / estimator / variant.name;
           if (!point_name.empty()) base /= point_name;

@@ -2,7 +2,7 @@
 
 #include "drivers/data_directory.h"
 
-#include "opf/estimators/registry.h"
+#include "opf/estimators/estimator_names.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/io/input_error.h"
 #include "opf/io/yaml_reader.h"
@@ -21,6 +21,13 @@ namespace opf::experiments {
 namespace {
 
 constexpr auto kKey = InputError::FieldKind::kKey;
+
+// Whether a path names a file to read; a path the system cannot look up (too long, say) names
+// none, rather than failing with the system's words.
+bool regular_file(const std::filesystem::path& path) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error);
+}
 
 // A bare name is a bundled experiment (experiments/<name>.yaml); anything with a slash or a
 // .yaml suffix is a path relative to the sweep file.
@@ -46,6 +53,44 @@ std::vector<std::string> split_path(const std::string& key) {
   std::stringstream stream(key);
   for (std::string part; std::getline(stream, part, '.');) parts.push_back(part);
   return parts;
+}
+
+// A setting's key: option names joined by dots, none empty (`opf..kappa` and "" name nothing).
+void require_key_path(const std::string& key, const std::string& source, std::size_t line,
+                      const std::string& where) {
+  const std::vector<std::string> parts = split_path(key);
+  const bool whole = !key.empty() && key.back() != '.' &&
+                     std::none_of(parts.begin(), parts.end(),
+                                  [](const std::string& part) { return part.empty(); });
+  if (!whole)
+    throw InputError(source, line, where,
+                     "expected an option's key path, names joined by dots (e.g. "
+                     "opf.uncertainty.kappa), got " +
+                         quoted_scalar(key),
+                     kKey);
+}
+
+// A sweep's or a variant's name is a folder of the results: "." and ".." would name another.
+bool folder_name(const std::string& name) {
+  return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos;
+}
+constexpr const char* kFolderName = "a name without slashes, other than . and ..";
+
+// Each grid point's runs go to a folder of its own: values that differ only where the folder
+// name writes '_' would share one, and the second would find the first's results done.
+void refuse_shared_folders(const SweepSpec& spec) {
+  std::map<std::string, std::vector<SweepSetting>> seen;
+  for (const auto& point : grid_points(spec)) {
+    const auto [at, fresh] = seen.emplace(point_folder(point), point);
+    if (fresh) continue;
+    for (std::size_t i = 0; i < point.size(); ++i)
+      if (point[i].value != at->second[i].value)
+        throw InputError(spec.file.string(), point[i].line, "parameters." + point[i].key,
+                         "values " + quoted_scalar(at->second[i].value) + " and " +
+                             quoted_scalar(point[i].value) + " name one results folder ('" +
+                             at->first + "'): '/' and whitespace are written as '_'",
+                         kKey);
+  }
 }
 
 // Checks one combination of settings with the estimator settings reader; its errors name the
@@ -86,7 +131,31 @@ void refuse_oversized(const SweepSpec& spec) {
                          "split the sweep into several files");
 }
 
+// A value as written in the sweep file, read again as YAML (so that "[a, b]" sets a list).
+YAML::Node value_node(const SweepSpec& spec, const SweepSetting& setting) {
+  try {
+    return YAML::Load(setting.value);
+  } catch (const YAML::Exception& e) {
+    throw InputError(spec.file.string(), setting.line, setting.key,
+                     "expected a value YAML reads on its own (a number, a name, or a list in "
+                     "quotes such as \"[a, b]\"), got " +
+                         quoted_scalar(setting.value) + ": " + e.msg,
+                     kKey);
+  }
+}
+
 }  // namespace
+
+std::string point_folder(const std::vector<SweepSetting>& point) {
+  std::string folder;
+  for (const SweepSetting& s : point) {
+    std::string value = s.value;
+    std::replace_if(
+        value.begin(), value.end(), [](char c) { return c == '/' || c == ' ' || c == '\t'; }, '_');
+    folder += (folder.empty() ? "" : ",") + s.key + "=" + value;
+  }
+  return folder;
+}
 
 std::string settings_yaml(const SweepSpec& spec, const std::vector<SweepSetting>& settings) {
   YAML::Node root = spec.config ? YAML::LoadFile(spec.config->string()) : YAML::Node();
@@ -101,7 +170,7 @@ std::string settings_yaml(const SweepSpec& spec, const std::vector<SweepSetting>
       chain.back()[parts[i]] = next;
       chain.push_back(next);
     }
-    chain.back()[parts.back()] = YAML::Load(s.value);
+    chain.back()[parts.back()] = value_node(spec, s);
   }
   YAML::Emitter out;
   out << root;
@@ -129,8 +198,7 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   spec.file = file;
   spec.name = file.stem().string();
   reader.get("name", spec.name);
-  reader.require("name", !spec.name.empty() && spec.name.find('/') == std::string::npos,
-                 "a name without slashes");
+  reader.require("name", folder_name(spec.name), kFolderName);
 
   std::vector<std::string> experiments, estimators;
   reader.get("experiments", experiments);
@@ -140,7 +208,7 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   std::map<std::string, int> experiment_frames;  // by the name its results folder takes
   for (const std::string& entry : experiments) {
     const std::filesystem::path path = resolve_experiment(entry, file);
-    if (!std::filesystem::is_regular_file(path))
+    if (!regular_file(path))
       reader.fail("experiments", "no experiment file " + path.string() + " for '" + entry +
                                      "' (a bare name is experiments/<name>.yaml, a path is "
                                      "relative to the sweep file)");
@@ -151,12 +219,9 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     spec.experiments.push_back(path);
   }
   const std::vector<std::string> known = estimator_names();
-  for (const std::string& name : estimators) {
-    if (std::find(known.begin(), known.end(), name) != known.end()) continue;
-    std::string list;
-    for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-    reader.fail("estimators", "unknown estimator '" + name + "'; expected one of " + list);
-  }
+  for (const std::string& name : estimators)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      reader.fail("estimators", unknown_estimator_message(name));
   for (std::size_t i = 0; i < estimators.size(); ++i)
     if (std::find(estimators.begin(), estimators.begin() + i, estimators[i]) !=
         estimators.begin() + i)
@@ -188,8 +253,7 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     reader.get("config", config);
     std::filesystem::path path(config);
     if (!path.is_absolute()) path = file.parent_path() / path;
-    if (!std::filesystem::is_regular_file(path))
-      reader.fail("config", "no estimator settings file " + path.string());
+    if (!regular_file(path)) reader.fail("config", "no estimator settings file " + path.string());
     load_estimator_settings(path);  // its own errors name its lines
     spec.config = path;
   }
@@ -200,12 +264,13 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     item->get("name", variant.name);
     if (variant.name.empty()) item->fail("name", "missing: each variant needs a name");
     item->require("name", variant_names.insert(variant.name).second, "a name no other variant has");
-    item->require("name", variant.name.find('/') == std::string::npos, "a name without slashes");
-    for (const YamlReader::Item& setting : item->items("settings"))
-      variant.settings.push_back({setting.key,
-                                  scalar_text(setting.value, source, setting.line,
-                                              item->key_path("settings") + "." + setting.key),
-                                  setting.line});
+    item->require("name", folder_name(variant.name), kFolderName);
+    for (const YamlReader::Item& setting : item->items("settings")) {
+      const std::string where = item->key_path("settings") + "." + setting.key;
+      require_key_path(setting.key, source, setting.line, where);
+      variant.settings.push_back(
+          {setting.key, scalar_text(setting.value, source, setting.line, where), setting.line});
+    }
     spec.variants.push_back(std::move(variant));
   }
   if (spec.variants.empty()) spec.variants.push_back({"default", {}});
@@ -213,6 +278,7 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   for (const YamlReader::Item& item : reader.items("parameters")) {
     SweepParameter parameter{item.key, {}, item.line};
     const std::string path = "parameters." + item.key;
+    require_key_path(item.key, source, item.line, path);
     if (!item.value.IsSequence() || item.value.size() == 0)
       throw InputError(source, item.line, path, "expected a non-empty list of values", kKey);
     std::set<std::string> seen;
@@ -226,6 +292,7 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   }
   reader.finish();
   refuse_oversized(spec);
+  refuse_shared_folders(spec);
 
   for (const SweepVariant& variant : spec.variants)
     for (const auto& point : grid_points(spec)) {

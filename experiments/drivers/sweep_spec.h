@@ -72,6 +72,10 @@ inline constexpr const char* kParticlesKey = "particles";
 /// not an estimator option and is left out.
 std::string settings_yaml(const SweepSpec& spec, const std::vector<SweepSetting>& settings);
 
+/// A grid point's folder, under its variant's: `key=value` for each parameter, joined by commas,
+/// with '/' and whitespace in a value written as '_' (empty for no parameters).
+std::string point_folder(const std::vector<SweepSetting>& point);
+
 /// Every combination of one value per parameter, in file order (the last parameter varies
 /// fastest); one empty combination when there are no parameters.
 std::vector<std::vector<SweepSetting>> grid_points(const SweepSpec& spec);
@@ -79,8 +83,10 @@ std::vector<std::vector<SweepSetting>> grid_points(const SweepSpec& spec);
 /// Reads and checks a sweep file: InputError naming the file, the line and the key for a YAML
 /// error, an unknown or mistyped key, an unknown experiment or estimator (each experiment file
 /// is read, its own errors naming its lines), two experiments of one name or an estimator twice,
-/// `frames` past an experiment's, a duplicate variant name or value, more than kMaxSweepRuns
-/// runs, and any setting the estimator settings reader rejects.
+/// `frames` past an experiment's, a sweep or variant name that is not a folder name, a duplicate
+/// variant name or value, a setting's key that is not a key path, a value YAML cannot read on its
+/// own, two grid points of one folder, more than kMaxSweepRuns runs, and any setting the
+/// estimator settings reader rejects.
 SweepSpec load_sweep(const std::filesystem::path& file);
 
 /// As load_sweep, from text; `file` names it in errors and anchors relative paths.

@@ -14,6 +14,18 @@
 namespace opf {
 
 namespace {
+constexpr std::size_t kShownCharacters = 80;
+}  // namespace
+
+// Whole when short, else its start and its length: a file of one long line read as YAML is one
+// scalar, which would otherwise be echoed whole.
+std::string quoted_scalar(const std::string& scalar) {
+  if (scalar.size() <= kShownCharacters) return "\"" + scalar + "\"";
+  return "\"" + scalar.substr(0, kShownCharacters) + "...\" (" + std::to_string(scalar.size()) +
+         " characters)";
+}
+
+namespace {
 
 constexpr auto kKey = InputError::FieldKind::kKey;
 
@@ -22,20 +34,10 @@ std::size_t line_of(const YAML::Node& node) {
   return mark.is_null() || mark.line < 0 ? 0 : static_cast<std::size_t>(mark.line) + 1;
 }
 
-// A scalar as an error message quotes it: whole when short, else its start and its length (a
-// file of one long line read as YAML is one scalar, which would otherwise be echoed whole).
-constexpr std::size_t kShownCharacters = 80;
-
-std::string quoted(const std::string& scalar) {
-  if (scalar.size() <= kShownCharacters) return "\"" + scalar + "\"";
-  return "\"" + scalar.substr(0, kShownCharacters) + "...\" (" + std::to_string(scalar.size()) +
-         " characters)";
-}
-
 /// How the value reads in a message: the scalar as written (quoted), a short list of scalars as
 /// written (so that a message shows which entry is wrong), or what kind of node it is.
 std::string describe(const YAML::Node& node) {
-  if (node.IsScalar()) return quoted(node.Scalar());
+  if (node.IsScalar()) return quoted_scalar(node.Scalar());
   if (node.IsMap()) return "a mapping";
   if (!node.IsSequence()) return "nothing";
   if (node.size() == 0) return "an empty list";
@@ -45,8 +47,9 @@ std::string describe(const YAML::Node& node) {
   if (!flat || node.size() > kShown) return "a list of " + std::to_string(node.size()) + " entries";
   std::string text = "[";
   for (const YAML::Node& item : node)
-    text += (text.size() > 1 ? ", " : "") +
-            (item.Scalar().size() <= kShownCharacters ? item.Scalar() : quoted(item.Scalar()));
+    text +=
+        (text.size() > 1 ? ", " : "") +
+        (item.Scalar().size() <= kShownCharacters ? item.Scalar() : quoted_scalar(item.Scalar()));
   return text + "]";
 }
 

@@ -14,6 +14,10 @@
 
 namespace opf {
 
+/// A scalar as an error message quotes it: in double quotes, whole up to 80 characters, else its
+/// first 80 and its length.
+std::string quoted_scalar(const std::string& scalar);
+
 /// Usage: read every key the struct knows with get() (only keys present in the file are
 /// assigned, so defaults stay), descend with child(), then call finish() on the top-level reader to
 /// reject the keys nobody read. Every error is an InputError naming `source`, the line and the key

@@ -180,8 +180,12 @@ TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
                 "systematic, got \"sorted\"");
   EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [opf, kalman]\n"),
             file +
-                ":2: key 'estimators': unknown estimator 'kalman'; expected one of opf, pf, "
-                "cvkf, imm, oapf");
+                ":2: key 'estimators': unknown estimator 'kalman' (known: opf, pf, cvkf, imm, "
+                "oapf)");
+  EXPECT_EQ(error_of("experiments: [general_op]\nestimators: [cvfk]\n"),
+            file +
+                ":2: key 'estimators': unknown estimator 'cvfk' (known: opf, pf, cvkf, imm, "
+                "oapf); did you mean 'cvkf'?");
   EXPECT_EQ(error_of("experiments: [no_such_experiment]\nestimators: [opf]\n"),
             file + ":1: key 'experiments': no experiment file " +
                 (opf::experiments::bundled_experiments() / "no_such_experiment.yaml").string() +
@@ -227,6 +231,63 @@ TEST(SweepSpec, ErrorsNameTheFileLineAndKey) {
             file + ":5: key 'variants[1].name': expected a name no other variant has, got \"a\"");
   EXPECT_EQ(error_of("estimators: [opf]\n"),
             file + ":1: key 'experiments': missing: which experiments to run");
+}
+
+// Settings are written into each run's settings file by their key paths, and the runs into
+// folders named after the sweep, its variants and its values: what cannot be either is refused
+// at its line. An empty key used to crash the program; a value YAML cannot read again, or a
+// long file name, failed with the library's words and no line.
+TEST(SweepSpec, RefusesWhatCannotNameASettingOrAFolder) {
+  const std::string file = kFile.string();
+  const std::string head = "experiments: [general_op]\nestimators: [opf]\n";
+  EXPECT_EQ(error_of(head + "variants:\n  - {name: a, settings: {\"\": 1}}\n"),
+            file +
+                ":4: key 'variants[0].settings.': expected an option's key path, names joined "
+                "by dots (e.g. opf.uncertainty.kappa), got \"\"");
+  EXPECT_EQ(error_of(head + "parameters:\n  \"\": [1, 2]\n"),
+            file +
+                ":4: key 'parameters.': expected an option's key path, names joined by dots "
+                "(e.g. opf.uncertainty.kappa), got \"\"");
+  for (const char* key : {"opf..kappa", ".opf", "opf.", "."})
+    EXPECT_EQ(error_of(head + "parameters:\n  \"" + key + "\": [1]\n"),
+              file + ":4: key 'parameters." + key +
+                  "': expected an option's key path, names joined by dots (e.g. "
+                  "opf.uncertainty.kappa), got \"" +
+                  key + "\"")
+        << key;
+  EXPECT_EQ(error_of(head + "parameters:\n  opf.uncertainty.kappa: [\"[1\"]\n"),
+            file +
+                ":4: key 'opf.uncertainty.kappa': expected a value YAML reads on its own (a "
+                "number, a name, or a list in quotes such as \"[a, b]\"), got \"[1\": end of "
+                "sequence flow not found");
+  // A list in quotes is read as a list: each model left out in turn.
+  EXPECT_EQ(error_of(head + "parameters:\n  opf.dynamics.models: [\"[position, velocity]\", "
+                            "\"[damped]\"]\n"),
+            "");
+  for (const char* name : {".", ".."}) {
+    EXPECT_EQ(error_of(head + "name: \"" + name + "\"\n"),
+              file +
+                  ":3: key 'name': expected a name without slashes, other than . and .., got \"" +
+                  name + "\"");
+    EXPECT_EQ(error_of(head + "variants:\n  - {name: \"" + name + "\"}\n"),
+              file +
+                  ":4: key 'variants[0].name': expected a name without slashes, other than . and "
+                  ".., got \"" +
+                  name + "\"");
+  }
+  EXPECT_EQ(error_of(head + "parameters:\n  opf.dynamics.models: [\"[position, velocity]\", "
+                            "\"[position,\tvelocity]\"]\n"),
+            file +
+                ":4: key 'parameters.opf.dynamics.models': values \"[position, velocity]\" and "
+                "\"[position,\tvelocity]\" name one results folder "
+                "('opf.dynamics.models=[position,_velocity]'): '/' and whitespace are written as "
+                "'_'");
+  const std::string long_name(5000, 'x');
+  EXPECT_EQ(error_of("experiments: [" + long_name + "]\nestimators: [opf]\n"),
+            file + ":1: key 'experiments': no experiment file " +
+                (opf::experiments::bundled_experiments() / (long_name + ".yaml")).string() +
+                " for '" + long_name +
+                "' (a bare name is experiments/<name>.yaml, a path is relative to the sweep file)");
 }
 
 // The runs are expanded and checked in memory: ten values of each of five options, twice, is

@@ -51,5 +51,9 @@ TEST(FuzzCorpus, SegmentationSpecInputsAreAcceptedOrRejectedCleanly) {
   EXPECT_GE(replay("segmentation_spec", fuzz::segmentation_spec), 3u);
 }
 
+TEST(FuzzCorpus, SweepFileInputsAreAcceptedOrRejectedCleanly) {
+  EXPECT_GE(replay("sweep_file", fuzz::sweep_file), 11u);
+}
+
 }  // namespace
 }  // namespace opf
