@@ -293,8 +293,9 @@ int track_command(const std::vector<std::string>& raw) {
               << 1.0 / assembly.frame_period << " Hz; mode +filled; --no-fill keeps only the "
               << "log's frames)\n";
   if (assembly.long_gaps > 0)
-    std::cerr << "opf track: warning: " << assembly.long_gaps
-              << " gaps longer than 10 s left unfilled (a clock jump or a pause)\n";
+    std::cerr << "opf track: warning: " << assembly.long_gaps << " gaps left unfilled: longer than "
+              << kMaxFilledGap << " s (a clock jump or a pause) or than " << kMaxFilledFrames
+              << " frames at " << 1.0 / assembly.frame_period << " Hz\n";
   if (written.empty())
     written = std::to_string(writer.frames()) + " frames, " + std::to_string(writer.objects()) +
               " objects: " + std::to_string(writer.rows()) + " estimates written to " + out;

@@ -19,9 +19,6 @@ constexpr std::size_t kMaxCalibrationRows = 4096;
 constexpr std::size_t kRecentIntervals = 31;
 /// A frame interval longer than this many periods is a gap.
 constexpr double kGapPeriods = 1.5;
-/// More frames than this in one gap are not filled: a period of microseconds over seconds is not
-/// a frame rate (and would fill without bound).
-constexpr double kMaxFilledFrames = 1e5;
 /// The inferred tolerance as a share of the median interval between one object's detections.
 constexpr double kToleranceShare = 0.25;
 

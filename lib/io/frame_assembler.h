@@ -24,7 +24,8 @@ struct FrameAssemblyReport {
   std::size_t frames = 0;         ///< frames out, filled ones included
   std::size_t filled_frames = 0;  ///< frames inserted inside gaps
   std::size_t gaps = 0;           ///< gaps filled
-  std::size_t long_gaps = 0;     ///< gaps longer than kMaxFilledGap (or 1e5 periods), left unfilled
+  std::size_t long_gaps =
+      0;  ///< gaps longer than kMaxFilledGap or kMaxFilledFrames periods, left unfilled
   double frame_tolerance = 0.0;  ///< seconds, as given or inferred
   double frame_period = 0.0;     ///< seconds, the latest gap-filling period (0 before known)
 };

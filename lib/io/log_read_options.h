@@ -81,6 +81,9 @@ inline constexpr std::string_view kFrameRateExpectation =
     "a frame rate in Hz of at least 0.1 (frames at most 10 s apart)";
 /// Gaps longer than this (s) are not filled (reported instead): a clock jump, not a dropout.
 inline constexpr double kMaxFilledGap = 10.0;
+/// More frames than this in one gap are not filled either: a period of microseconds over seconds
+/// is not a frame rate (and would fill without bound).
+inline constexpr double kMaxFilledFrames = 1e5;
 
 /// "csv", "tum", "mot": the names of --format.
 std::optional<LogFormat> parse_log_format(std::string_view name);

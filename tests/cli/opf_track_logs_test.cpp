@@ -117,6 +117,15 @@ TEST_F(OpfProgram, TrackFillsGapsAndSaysSoInTheModeColumn) {
   EXPECT_EQ(read_estimate_csv(est).size(), 45u);
   EXPECT_EQ(err(), "");
   EXPECT_EQ(out(), "");
+  // A rate at which each 33 ms interval would hold more than 10^5 frames: left unfilled, and the
+  // warning says why (it said the gaps were longer than 10 s).
+  ASSERT_EQ(run("track --in " + log.string() + " --out " + est.string() + " --rate 1e7" + kFast), 0)
+      << err();
+  EXPECT_EQ(read_estimate_csv(est).size(), 45u);
+  EXPECT_TRUE(contains(err(),
+                       "warning: 44 gaps left unfilled: longer than 10 s (a clock jump or a "
+                       "pause) or than 100000 frames at 1e+07 Hz"))
+      << err();
 }
 
 TEST_F(OpfProgram, TrackMapsTheLogsOwnColumnNames) {
