@@ -5,6 +5,7 @@
 #include "drivers/data_directory.h"
 #include "estimator_arguments.h"
 #include "log_arguments.h"
+#include "opf/core/closest_name.h"
 #include "opf/core/error_accumulator.h"
 #include "opf/core/metrics.h"
 #include "opf/core/random.h"
@@ -23,6 +24,7 @@
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -73,6 +75,28 @@ class TruthTable {
     for (const Frame& frame : truth.frames)
       for (const Detection& d : frame.detections) poses_[d.object].emplace_back(frame.t, d.pose);
   }
+  /// Why there is no truth for `object` at t: the object is missing from the truth (its objects
+  /// named, with a near miss), or its rows do not reach that time (their span given).
+  std::string missing(const std::string& object, double t) const {
+    std::ostringstream msg;
+    msg << "no ground truth for object '" << object << "' at t = " << t;
+    const auto series = poses_.find(object);
+    if (series == poses_.end()) {
+      std::vector<std::string> names;
+      for (const auto& [name, rows] : poses_) names.push_back(name);
+      msg << ": the truth has no such object (its objects: ";
+      for (std::size_t i = 0; i < names.size(); ++i) msg << (i ? ", " : "") << names[i];
+      msg << ")";
+      if (const auto closest = closest_name(object, names))
+        msg << "; did you mean '" << *closest << "'?";
+    } else {
+      msg << " (its rows run from " << series->second.front().first << " to "
+          << series->second.back().first << " s; a log frame matches a row within " << tolerance_
+          << " s)";
+    }
+    return msg.str();
+  }
+
   const mrpt::poses::CPose3D* find(const std::string& object, double t) const {
     const auto series = poses_.find(object);
     if (series == poses_.end()) return nullptr;
@@ -116,17 +140,28 @@ ScoredRun run_once(const MeasurementLog& log, const TruthTable& truth, const std
         ++run.unscored;  // a frame the log never had: no truth there is no fault
         continue;
       }
-      if (!pose) {
-        std::ostringstream msg;
-        msg << truth_path << ": no ground truth for object '" << estimate.object
-            << "' at t = " << frame.t;
-        throw std::runtime_error(msg.str());
-      }
+      if (!pose)
+        throw std::runtime_error(truth_path + ": " + truth.missing(estimate.object, frame.t));
       errors.add(estimate, *pose);
     }
   }
   run.errors = errors.result();
   return run;
+}
+
+/// Every estimate a run writes is scored: each object at every frame of the log from its first
+/// detection on (filled frames excepted). A truth that misses one is refused before any run, not
+/// after the first.
+void require_truth_for_every_estimate(const MeasurementLog& log, const TruthTable& truth,
+                                      const std::string& truth_path) {
+  std::set<std::string> started;
+  for (const Frame& frame : log.frames) {
+    for (const Detection& d : frame.detections) started.insert(d.object);
+    if (frame.filled) continue;
+    for (const std::string& object : started)
+      if (!truth.find(object, frame.t))
+        throw std::runtime_error(truth_path + ": " + truth.missing(object, frame.t));
+  }
 }
 
 /// A JSON number, null when not finite (a seed with no hidden frame).
@@ -352,6 +387,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   truth_options.rate.reset();
   const TruthTable truth(read_measurement_log(truth_path, truth_options),
                          std::max(log.report.frame_tolerance, kExactTimeTolerance));
+  require_truth_for_every_estimate(log, truth, truth_path);
 
   std::printf("opf evaluate: %s, %zu frames, %zu objects, %zu %s, %zu + %zu particles\n\n",
               in.c_str(), log.frames.size(), log.objects.size(), seeds,

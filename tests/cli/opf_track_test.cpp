@@ -373,6 +373,36 @@ TEST_F(OpfProgram, EvaluateRefusesMeaninglessRunsBeforeRunning) {
       0);
   EXPECT_NE(err().find("no detections"), std::string::npos) << err();
   EXPECT_FALSE(fs::exists(dir_ / "est.csv"));
+  // A truth that misses an estimate the runs would write: refused before the first run, saying
+  // what the truth has instead (it failed after the first run, naming the object and time only).
+  const std::string truth = kData + "example_truth.csv";
+  std::ifstream truth_in(truth);
+  std::ofstream renamed(dir_ / "renamed_truth.csv"), short_truth(dir_ / "short_truth.csv");
+  for (std::string line; std::getline(truth_in, line);) {
+    const std::size_t ball = line.find(",ball,");
+    renamed << (ball == std::string::npos ? line : std::string(line).replace(ball, 6, ",balls,"))
+            << "\n";
+    if (line.rfind("t,", 0) == 0 || std::stod(line) < 3.0) short_truth << line << "\n";
+  }
+  renamed.close();
+  short_truth.close();
+  EXPECT_EQ(run("evaluate --in " + log + " --truth " + (dir_ / "renamed_truth.csv").string() +
+                " --seeds 1 --estimators cvkf"),
+            1);
+  EXPECT_NE(err().find((dir_ / "renamed_truth.csv").string() +
+                       ": no ground truth for object 'ball' at t = 0: the truth has no such object "
+                       "(its objects: balls, mug); did you mean 'balls'?"),
+            std::string::npos)
+      << err();
+  EXPECT_EQ(out(), "");
+  EXPECT_EQ(run("evaluate --in " + log + " --truth " + (dir_ / "short_truth.csv").string() +
+                " --seeds 1 --estimators cvkf"),
+            1);
+  EXPECT_NE(err().find(": no ground truth for object 'ball' at t = 3 (its rows run from 0 to "
+                       "2.96667 s; a log frame matches a row within "),
+            std::string::npos)
+      << err();
+  EXPECT_EQ(out(), "");
   // The bundled log itself needs no --truth (the quick look of the help text).
   EXPECT_EQ(run("evaluate --in " + log + " --seeds 1 --particles 200 --estimators cvkf"), 0)
       << err();
