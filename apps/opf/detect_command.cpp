@@ -8,6 +8,7 @@
 #include "opf/vision/frame_source.h"
 #include "opf/vision/segmentation_spec.h"
 #include "opf/vision/video_detection.h"
+#include "output_paths.h"
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -101,6 +102,8 @@ int detect_command(const std::vector<std::string>& raw) {
   const std::filesystem::path video = args.require("video");
   const std::filesystem::path spec_path = args.require("objects");
   const std::filesystem::path out = args.require("out");
+  refuse_output_over_input({"--out", out.string()},
+                           {{"--video", video.string()}, {"--objects", spec_path.string()}});
   const std::optional<double> rate = args.get_number("rate");
   // As the log reader's limit: a log at a lower rate would be refused as not in seconds.
   if (rate && !(*rate >= kMinFrameRate))

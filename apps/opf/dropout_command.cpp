@@ -6,6 +6,7 @@
 #include "opf/io/input_file.h"
 #include "opf/io/measurement_dropout.h"
 #include "opf/io/measurement_log.h"
+#include "output_paths.h"
 
 #include <fstream>
 #include <iostream>
@@ -47,6 +48,8 @@ int dropout_command(const std::vector<std::string>& raw) {
   }
   const std::string in = args.require("in");
   const std::string out = args.require("out");
+  // The input is the truth of the removed frames: it must survive.
+  refuse_output_over_input({"--out", out}, {{"--in", in}});
   DropoutWindows windows;
   args.require("length");
   windows.length = *args.get_number("length");

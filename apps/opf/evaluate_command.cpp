@@ -15,6 +15,7 @@
 #include "opf/io/csv.h"
 #include "opf/io/json_text.h"
 #include "opf/io/measurement_log.h"
+#include "output_paths.h"
 #include "provenance.h"
 
 #include <algorithm>
@@ -359,6 +360,12 @@ int evaluate_command(const std::vector<std::string>& raw) {
       throw UsageError{"option '--out': expected a file name ending in .csv or .json, got \"" +
                        *path + "\""};
   }
+  const std::string config = args.get("config").value_or("");
+  for (const char* output : {"out", "hidden-profile"})
+    refuse_output_over_input({"--" + std::string(output), args.get(output).value_or("")},
+                             {{"--in", in}, {"--truth", truth_path}, {"--config", config}});
+  refuse_output_over_input({"--hidden-profile", args.get("hidden-profile").value_or("")},
+                           {{"--out", args.get("out").value_or("")}});
   const std::size_t seeds = args.get_count("seeds").value_or(5);
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   const EstimatorSettings settings = settings_from(args);

@@ -5,6 +5,7 @@
 #include "drivers/observe_experiment.h"
 #include "opf/sim/camera_sensor.h"
 #include "opf/sim/scripted_scene.h"
+#include "output_paths.h"
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -48,6 +49,7 @@ int render_command(const std::vector<std::string>& raw) {
                      " frames"};
   const std::string out =
       args.get("out").value_or(config.name + "_frame" + std::to_string(frame) + ".png");
+  refuse_output_over_input({"--out", out}, {{"the experiment file", positional[0]}});
 
   const sim::ScriptedScene scene(config.bodies);
   const sim::SceneSnapshot snapshot = scene.at(static_cast<double>(frame) / config.rate);

@@ -11,6 +11,7 @@
 #include "opf/io/estimate_tum.h"
 #include "opf/io/input_file.h"
 #include "opf/io/measurement_log.h"
+#include "output_paths.h"
 
 #include <cerrno>
 #include <cstring>
@@ -30,16 +31,6 @@ namespace opf::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The estimates must not replace the measurements: an output that is the input (the same file,
-// also through a link) is refused.
-void refuse_writing_over_the_input(const std::string& in, const std::string& out) {
-  if (in == "-" || out == "-") return;
-  std::error_code ec;
-  if (fs::equivalent(in, out, ec))
-    throw UsageError{"--out '" + out + "' is the input log '" + in +
-                     "': the estimates would replace it; write them to another file"};
-}
 
 // A FIFO, a character device or anything else that exists and is not a regular file is written
 // through, not replaced by a new regular file (a FIFO's reader would wait for ever).
@@ -179,7 +170,8 @@ std::vector<fs::path> track_to_tum(Tracker& tracker, const MeasurementLog& log,
     for (const Estimate& estimate : tracker.step(frame))
       write_tum_row(rows[estimate.object], estimate);
   const std::vector<fs::path> paths = tum_paths(out, log.objects);
-  for (const fs::path& path : paths) refuse_writing_over_the_input(in, path.string());
+  for (const fs::path& path : paths)
+    refuse_output_over_input({"--out", path.string()}, {{"--in", in}});
   for (std::size_t i = 0; i < paths.size(); ++i) {
     const std::string text = rows[log.objects[i]].str();
     const std::string name = paths[i].string();
@@ -214,7 +206,8 @@ int track_command(const std::vector<std::string>& raw) {
   }
   const std::string in = args.require("in");
   const std::string out = args.require("out");
-  refuse_writing_over_the_input(in, out);
+  refuse_output_over_input({"--out", out},
+                           {{"--in", in}, {"--config", args.get("config").value_or("")}});
   const std::string estimator = args.get("estimator").value_or("opf");
   require_known_estimators("estimator", {estimator});
   const EstimatorSettings settings = settings_from(args);

@@ -35,8 +35,10 @@ void check_dropout_windows(const DropoutWindows& windows) {
 }
 
 bool in_dropout_window(double t, const DropoutWindows& windows) {
-  const double since = t - windows.start;
-  if (since < -kDropoutTimeTolerance) return false;
+  if (t - windows.start < -kDropoutTimeTolerance) return false;
+  // Measured from the start's own phase (std::fmod is exact): a start far from t, say -1e300 s,
+  // would otherwise leave t - start no digits of t.
+  const double since = t - std::fmod(windows.start, windows.period);
   const double k = std::floor((since + kDropoutTimeTolerance) / windows.period);
   const double phase = since - k * windows.period;  // in [-tolerance, period)
   return phase < windows.length - kDropoutTimeTolerance;
@@ -61,9 +63,10 @@ DropoutCounts apply_dropout(std::istream& in, const std::string& source, std::os
     for (std::size_t i = 0; i < fields.size(); ++i) fields[i] = reader.field(i);
     const double t = reader.number(t_column);
     const std::string& object = fields[object_column];
-    const auto chosen = std::find(objects.begin(), objects.end(), object);
-    if (chosen != objects.end()) seen[chosen - objects.begin()] = true;
-    if ((objects.empty() || chosen != objects.end()) && in_dropout_window(t, windows)) {
+    bool chosen = objects.empty();
+    for (std::size_t i = 0; i < objects.size(); ++i)
+      if (objects[i] == object) chosen = seen[i] = true;  // an object named twice, each time
+    if (chosen && in_dropout_window(t, windows)) {
       bool had_pose = false;
       for (const std::size_t column : pose_columns) {
         had_pose = had_pose || !fields[column].empty();

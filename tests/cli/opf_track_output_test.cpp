@@ -1,6 +1,6 @@
-// `opf track` loses no data: it never writes over its input, writes through FIFOs and devices,
-// checks every write, leaves no temporary file when interrupted, and takes a bounded number of
-// threads.
+// `opf track` loses no data: it never writes over its input (nor does any other command),
+// writes through FIFOs and devices, checks every write, leaves no temporary file when
+// interrupted, and takes a bounded number of threads.
 
 #include "cli/opf_program.h"
 
@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 
 namespace opf {
@@ -36,9 +37,53 @@ TEST_F(OpfProgram, TrackRefusesToWriteOverItsInput) {
   for (const fs::path& out : {log, link})
     for (const char* mode : {"", " --stream"}) {
       EXPECT_EQ(run("track --in " + log.string() + " --out " + out.string() + mode), 2) << mode;
-      EXPECT_NE(err().find("is the input log"), std::string::npos) << err();
+      EXPECT_NE(err().find("--out '" + out.string() + "' is the same file as --in '" +
+                           log.string() + "': one would overwrite the other"),
+                std::string::npos)
+          << err();
     }
   EXPECT_EQ(read(log), before);
+}
+
+// No command writes over a file it reads, nor two outputs over each other: `opf dropout` and
+// `opf evaluate --out` replaced the log, `--hidden-profile` the truth, without a word.
+TEST_F(OpfProgram, NoCommandWritesOverItsInputs) {
+  const fs::path log = dir_ / "log.csv", truth = dir_ / "truth.csv", settings = dir_ / "s.yaml",
+                 spec = dir_ / "spec.yaml", experiment = dir_ / "experiment.yaml";
+  fs::copy_file(kLog, log);
+  fs::copy_file(std::string(OPF_SOURCE_DIR) + "/experiments/data/example_truth.csv", truth);
+  fs::copy_file(std::string(OPF_SOURCE_DIR) + "/experiments/configs/paper.yaml", settings);
+  fs::copy_file(std::string(OPF_SOURCE_DIR) + "/experiments/real_video/box.yaml", spec);
+  fs::copy_file(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml", experiment);
+  std::map<fs::path, std::string> before;
+  for (const fs::path& file : {log, truth, settings, spec, experiment}) before[file] = read(file);
+  const std::string evaluate =
+      "evaluate --seeds 1 --estimators cvkf --in " + log.string() + " --truth " + truth.string();
+  const fs::path profile = dir_ / "profile.csv";
+  const std::map<std::string, std::string> refused = {
+      {"dropout --length 0.5 --in " + log.string() + " --out " + log.string(),
+       "--out '" + log.string() + "' is the same file as --in"},
+      {evaluate + " --out " + log.string(),
+       "--out '" + log.string() + "' is the same file as --in"},
+      {evaluate + " --hidden-profile " + truth.string(),
+       "--hidden-profile '" + truth.string() + "' is the same file as --truth"},
+      {evaluate + " --out " + (dir_ / "." / "truth.csv").string(), "is the same file as --truth"},
+      {evaluate + " --out " + profile.string() + " --hidden-profile " + profile.string(),
+       "--hidden-profile '" + profile.string() + "' is the same file as --out"},
+      {"track --in " + log.string() + " --config " + settings.string() + " --out " +
+           settings.string(),
+       "--out '" + settings.string() + "' is the same file as --config"},
+      {"detect --video " + (dir_ / "none.mp4").string() + " --objects " + spec.string() +
+           " --out " + spec.string(),
+       "--out '" + spec.string() + "' is the same file as --objects"},
+      {"render " + experiment.string() + " --out " + experiment.string(),
+       "--out '" + experiment.string() + "' is the same file as the experiment file"}};
+  for (const auto& [command, message] : refused) {
+    EXPECT_EQ(run(command), 2) << command;
+    EXPECT_NE(err().find(message), std::string::npos) << command << "\n" << err();
+  }
+  for (const auto& [file, text] : before) EXPECT_EQ(read(file), text) << file;
+  EXPECT_FALSE(fs::exists(profile));
 }
 
 TEST_F(OpfProgram, TrackReportsAFullDeviceAndExitsNonZero) {

@@ -32,6 +32,15 @@ TEST(MeasurementDropout, WindowsAreHalfOpenAtFrameTimes) {
   EXPECT_TRUE(in_dropout_window(1.0 - 1e-12, windows));  // on the edge within the tolerance
   EXPECT_TRUE(in_dropout_window(201.0, windows));        // k = 100
   EXPECT_FALSE(in_dropout_window(201.3, windows));
+  // A start long before the log keeps its phase: t - start kept no digit of t, so rows fell in
+  // or out alike. -1e300 is a whole number of 2 s periods (windows from t = 0), 1 - 2e15 s one
+  // more than that (windows from t = 1, as above).
+  const DropoutWindows early{-1e300, 2.0, 0.3}, from_zero{0.0, 2.0, 0.3};
+  const DropoutWindows also_early{1.0 - 2e15, 2.0, 0.3};
+  for (int k = 0; k < 120; ++k) {
+    EXPECT_EQ(in_dropout_window(k / 30.0, early), in_dropout_window(k / 30.0, from_zero)) << k;
+    EXPECT_EQ(in_dropout_window(k / 30.0, also_early), in_dropout_window(k / 30.0, windows)) << k;
+  }
 }
 
 TEST(MeasurementDropout, RejectsWindowsThatCannotBeMeant) {
@@ -92,6 +101,11 @@ TEST(MeasurementDropout, ErrorsNameTheLog) {
     EXPECT_EQ(e.file(), "log.csv");
     EXPECT_NE(e.message().find("'ball'"), std::string::npos) << e.what();
   }
+  // An object named twice is dropped once (it was reported as having no row).
+  std::istringstream twice_in(kLog);
+  std::ostringstream twice_out;
+  EXPECT_EQ(apply_dropout(twice_in, "log.csv", twice_out, {"box", "box"}, {1.0, 2.0, 0.3}).blanked,
+            1u);
   std::istringstream bad("t,object,x,y,z,qx,qy,qz,qw\nnope,box,1,2,3,0,0,0,1\n");
   try {
     apply_dropout(bad, "bad.csv", out, {}, {1.0, 2.0, 0.3});
