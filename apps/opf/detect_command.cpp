@@ -121,6 +121,7 @@ int detect_command(const std::vector<std::string>& raw) {
   if (overlay_every == 0) throw UsageError{"option '--overlay-every' expects at least 1"};
   if (args.has("overlay-every") && !overlay_dir)
     throw UsageError{"option '--overlay-every' needs --overlay"};
+  if (overlay_dir) require_folder({"--overlay", overlay_dir->string()});
 
   const vision::SegmentationSpec spec = vision::load_segmentation_spec(spec_path);
   vision::FrameSource source(video);

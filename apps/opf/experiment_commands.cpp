@@ -13,6 +13,7 @@
 #include "opf/estimators/registry.h"
 #include "opf/io/atomic_file.h"
 #include "opf/io/estimator_settings_yaml.h"
+#include "output_paths.h"
 #include "provenance.h"
 
 #include <unistd.h>
@@ -86,6 +87,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   std::vector<std::filesystem::path> figures;
   std::size_t logs = 0;
   std::vector<std::string> replays;
+  require_folder({"--out", out.string()});
   std::filesystem::create_directories(out);
   // A progress line redrawn in place: on a terminal only, so that no escape codes reach a file.
   const bool show_progress = !args.has("quiet") && isatty(STDERR_FILENO) != 0;

@@ -37,4 +37,12 @@ void refuse_output_over_input(const NamedPath& output, std::initializer_list<Nam
   }
 }
 
+void require_folder(const NamedPath& folder) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(folder.path, ec);
+  if (ec || !fs::exists(status) || fs::is_directory(status)) return;
+  throw UsageError{folder.argument + " '" + folder.path +
+                   "' is a file: it names the folder the results go to"};
+}
+
 }  // namespace opf::cli

@@ -21,4 +21,8 @@ struct NamedPath {
 /// not exist yet: two outputs of one path would overwrite each other.
 void refuse_output_over_input(const NamedPath& output, std::initializer_list<NamedPath> inputs);
 
+/// Throws UsageError when `folder` (an output folder, created where missing) names something that
+/// exists and is not a folder: "--out 'X' is a file: it names the folder the results go to".
+void require_folder(const NamedPath& folder);
+
 }  // namespace opf::cli

@@ -10,6 +10,7 @@
 #include "opf/io/atomic_file.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/sim/experiment_config.h"
+#include "output_paths.h"
 #include "provenance.h"
 
 #include <unistd.h>
@@ -88,6 +89,7 @@ int sweep_command(const std::vector<std::string>& raw) {
   const std::string default_name = preset == "default" ? spec.name : spec.name + "-" + preset;
   const std::filesystem::path out = args.get("out").value_or(
       (std::filesystem::path("results") / "sweeps" / default_name).string());
+  require_folder({"--out", out.string()});
   const std::size_t jobs =
       args.get_count("jobs").value_or(std::max(1u, std::thread::hardware_concurrency()));
   if (jobs == 0) throw UsageError{"option '--jobs' must be at least 1"};

@@ -46,7 +46,8 @@ TEST_F(OpfProgram, TrackRefusesToWriteOverItsInput) {
 }
 
 // No command writes over a file it reads, nor two outputs over each other: `opf dropout` and
-// `opf evaluate --out` replaced the log, `--hidden-profile` the truth, without a word.
+// `opf evaluate --out` replaced the log, `--hidden-profile` the truth, without a word. Nor does
+// one take a file for the folder its results go to.
 TEST_F(OpfProgram, NoCommandWritesOverItsInputs) {
   const fs::path log = dir_ / "log.csv", truth = dir_ / "truth.csv", settings = dir_ / "s.yaml",
                  spec = dir_ / "spec.yaml", experiment = dir_ / "experiment.yaml";
@@ -60,7 +61,7 @@ TEST_F(OpfProgram, NoCommandWritesOverItsInputs) {
   const std::string evaluate =
       "evaluate --seeds 1 --estimators cvkf --in " + log.string() + " --truth " + truth.string();
   const fs::path profile = dir_ / "profile.csv";
-  const std::map<std::string, std::string> refused = {
+  std::map<std::string, std::string> refused = {
       {"dropout --length 0.5 --in " + log.string() + " --out " + log.string(),
        "--out '" + log.string() + "' is the same file as --in"},
       {evaluate + " --out " + log.string(),
@@ -78,6 +79,15 @@ TEST_F(OpfProgram, NoCommandWritesOverItsInputs) {
        "--out '" + spec.string() + "' is the same file as --objects"},
       {"render " + experiment.string() + " --out " + experiment.string(),
        "--out '" + experiment.string() + "' is the same file as the experiment file"}};
+  // A folder for the results that is a file: refused in the program's words (it was the
+  // library's "filesystem error: cannot create directories").
+  for (const std::string& command :
+       {"run " + experiment.string() + " --seeds 1 --estimators cvkf --out " + log.string(),
+        "sweep " + std::string(OPF_SOURCE_DIR) + "/experiments/sweeps/smoke.yaml --list --out " +
+            log.string(),
+        "detect --video " + (dir_ / "none.mp4").string() + " --objects " + spec.string() +
+            " --out " + (dir_ / "new.csv").string() + " --overlay " + log.string()})
+    refused[command] = "'" + log.string() + "' is a file: it names the folder the results go to";
   for (const auto& [command, message] : refused) {
     EXPECT_EQ(run(command), 2) << command;
     EXPECT_NE(err().find(message), std::string::npos) << command << "\n" << err();
