@@ -1,7 +1,7 @@
 #pragma once
-// Outputs must not replace the command's own inputs: `opf dropout --in log.csv --out log.csv`
-// would destroy the log the removed frames are scored against, `opf evaluate --out` over its
-// truth the truth.
+// Outputs must not replace the command's own inputs (`opf dropout --in log.csv --out log.csv`
+// would destroy the log its removed frames are scored against), nor each other, and a folder
+// for results must not be a file.
 
 #include <initializer_list>
 #include <string>
