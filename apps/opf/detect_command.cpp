@@ -121,7 +121,11 @@ int detect_command(const std::vector<std::string>& raw) {
   if (overlay_every == 0) throw UsageError{"option '--overlay-every' expects at least 1"};
   if (args.has("overlay-every") && !overlay_dir)
     throw UsageError{"option '--overlay-every' needs --overlay"};
-  if (overlay_dir) require_folder({"--overlay", overlay_dir->string()});
+  if (overlay_dir) {
+    require_folder({"--overlay", overlay_dir->string()});
+    // A folder of images read as the video would get the overlays among its frames.
+    refuse_output_over_input({"--overlay", overlay_dir->string()}, {{"--video", video.string()}});
+  }
 
   const vision::SegmentationSpec spec = vision::load_segmentation_spec(spec_path);
   vision::FrameSource source(video);

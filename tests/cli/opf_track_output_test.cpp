@@ -77,6 +77,9 @@ TEST_F(OpfProgram, NoCommandWritesOverItsInputs) {
       {"detect --video " + (dir_ / "none.mp4").string() + " --objects " + spec.string() +
            " --out " + spec.string(),
        "--out '" + spec.string() + "' is the same file as --objects"},
+      {"detect --video " + dir_.string() + " --objects " + spec.string() + " --out " +
+           (dir_ / "new.csv").string() + " --overlay " + (dir_ / ".").string(),
+       "--overlay '" + (dir_ / ".").string() + "' is the same file as --video"},
       {"render " + experiment.string() + " --out " + experiment.string(),
        "--out '" + experiment.string() + "' is the same file as the experiment file"}};
   // A folder for the results that is a file: refused in the program's words (it was the
