@@ -38,8 +38,8 @@ std::vector<OptionSpec> log_option_specs() {
       {"columns", "NAME=COL,...",
        "the log's own column names, e.g. qx=rx,qy=ry,qz=rz,qw=rw (default: the format's names)"},
       {"frame-tolerance", "S",
-       "rows this close in time (s) form one frame (default: a quarter of the median interval "
-       "between one object's detections; 0: equal times only)"},
+       "rows this close in time (s) form one frame (default: a quarter of the lower quartile of "
+       "the intervals between one object's detections; 0: equal times only)"},
       {"rate", "HZ", "frame rate at which gaps in the log are filled (default: inferred from it)"},
       {"no-fill", "", "keep only the log's frames: no estimates inside gaps"},
   };

@@ -19,8 +19,20 @@ constexpr std::size_t kMaxCalibrationRows = 4096;
 constexpr std::size_t kRecentIntervals = 31;
 /// A frame interval longer than this many periods is a gap.
 constexpr double kGapPeriods = 1.5;
-/// The inferred tolerance as a share of the median interval between one object's detections.
+/// The inferred tolerance as a share of the lower quartile of the intervals between one object's
+/// detections: the quartile rather than the median, so that a detector that sees an object in
+/// pairs or short bursts (half its intervals the gaps between them) still gives its frame period.
 constexpr double kToleranceShare = 0.25;
+constexpr double kToleranceQuantile = 0.25;
+
+/// The element at `share` of the sorted values (0.5: the median, the upper one of an even count).
+double quantile(std::vector<double> values, double share) {
+  if (values.empty()) return 0.0;
+  const auto at = values.begin() +
+                  static_cast<std::ptrdiff_t>(share * static_cast<double>(values.size() - 1) + 0.5);
+  std::nth_element(values.begin(), at, values.end());
+  return *at;
+}
 
 double median(std::vector<double> values) {
   if (values.empty()) return 0.0;
@@ -141,7 +153,8 @@ void FrameAssembler::calibrate() {
                " m/s); the positions look like millimetres: pass --length-unit mm (or "
                "--length-unit m if they are metres)");
   }
-  report_.frame_tolerance = options_.frame_tolerance.value_or(kToleranceShare * object_interval_);
+  report_.frame_tolerance =
+      options_.frame_tolerance.value_or(kToleranceShare * quantile(intervals, kToleranceQuantile));
 
   std::vector<LogRow> rows = std::move(pending_);
   pending_ = {};

@@ -56,8 +56,8 @@ struct LogReadOptions {
   /// The unit of x, y, z. Unset: metres, and a log whose objects move faster than
   /// kMaxPlausibleSpeed between detections (median) is refused as millimetres.
   std::optional<LengthUnit> length_unit;
-  /// Rows this close in time (seconds) belong to one frame. Unset: a quarter of the median
-  /// interval between one object's detections; 0: only equal times share a frame.
+  /// Rows this close in time (seconds) belong to one frame. Unset: a quarter of the lower quartile
+  /// of the intervals between one object's detections; 0: only equal times share a frame.
   std::optional<double> frame_tolerance;
   /// Column names of the file for the canonical ones (t, object, x, y, z, qx, qy, qz, qw), e.g.
   /// {"qx", "rx"}; columns not named keep their canonical name.

@@ -72,6 +72,23 @@ TEST(FrameAssembly, JitteredClocksGiveOneFramePerRealFrame) {
   EXPECT_EQ(exact.frames.size(), 180u);
 }
 
+// A detector that sees the objects now and then: every 2 s in two consecutive frames of 30 Hz,
+// and once more 1 s later. Two of one object's three intervals are gaps; the tolerance comes from
+// the frame period all the same (the median interval, a gap, made it 0.24 s, and each pair's two
+// rows were refused as one frame).
+TEST(FrameAssembly, ADetectorSeeingObjectsNowAndThenGivesItsFramePeriod) {
+  std::string text = kHeader;
+  for (int block = 0; block < 6; ++block)
+    for (const double offset : {0.0, 1.0 / 30.0, 1.0}) {
+      const double t = 2.0 * block + offset;
+      text += row(t, "ball", 0.1 * t) + row(t + 0.0003, "mug", 1.0);
+    }
+  const MeasurementLog log = parse(text, with([](LogReadOptions& o) { o.fill_gaps = false; }));
+  EXPECT_NEAR(log.report.frame_tolerance, 0.25 / 30.0, 1e-9);
+  ASSERT_EQ(log.frames.size(), 18u);
+  for (const Frame& frame : log.frames) EXPECT_EQ(frame.detections.size(), 2u) << frame.t;
+}
+
 TEST(FrameAssembly, EqualTimesKeepTheirExactTimeAndRowOrder) {
   const MeasurementLog log = parse(std::string(kHeader) + row(0.1, "mug", 4) + row(0.1, "ball", 1) +
                                    row(0.2, "ball", 1) + row(0.2, "mug", 4));
