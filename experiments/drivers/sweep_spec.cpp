@@ -5,6 +5,7 @@
 #include "opf/estimators/estimator_names.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/io/input_error.h"
+#include "opf/io/input_file.h"
 #include "opf/io/yaml_reader.h"
 #include "opf/particles/particle_filter_options.h"
 #include "opf/sim/experiment_config.h"
@@ -21,13 +22,6 @@ namespace opf::experiments {
 namespace {
 
 constexpr auto kKey = InputError::FieldKind::kKey;
-
-// Whether a path names a file to read; a path the system cannot look up (too long, say) names
-// none, rather than failing with the system's words.
-bool regular_file(const std::filesystem::path& path) {
-  std::error_code error;
-  return std::filesystem::is_regular_file(path, error);
-}
 
 // A bare name is a bundled experiment (experiments/<name>.yaml); anything with a slash or a
 // .yaml suffix is a path relative to the sweep file.
@@ -78,9 +72,10 @@ constexpr const char* kFolderName = "a name without slashes, other than . and ..
 
 // Each grid point's runs go to a folder of its own: values that differ only where the folder
 // name writes '_' would share one, and the second would find the first's results done.
-void refuse_shared_folders(const SweepSpec& spec) {
+void refuse_shared_folders(const SweepSpec& spec,
+                           const std::vector<std::vector<SweepSetting>>& points) {
   std::map<std::string, std::vector<SweepSetting>> seen;
-  for (const auto& point : grid_points(spec)) {
+  for (const auto& point : points) {
     const auto [at, fresh] = seen.emplace(point_folder(point), point);
     if (fresh) continue;
     for (std::size_t i = 0; i < point.size(); ++i)
@@ -208,7 +203,7 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   std::map<std::string, int> experiment_frames;  // by the name its results folder takes
   for (const std::string& entry : experiments) {
     const std::filesystem::path path = resolve_experiment(entry, file);
-    if (!regular_file(path))
+    if (!names_regular_file(path))
       reader.fail("experiments", "no experiment file " + path.string() + " for '" + entry +
                                      "' (a bare name is experiments/<name>.yaml, a path is "
                                      "relative to the sweep file)");
@@ -253,7 +248,8 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     reader.get("config", config);
     std::filesystem::path path(config);
     if (!path.is_absolute()) path = file.parent_path() / path;
-    if (!regular_file(path)) reader.fail("config", "no estimator settings file " + path.string());
+    if (!names_regular_file(path))
+      reader.fail("config", "no estimator settings file " + path.string());
     load_estimator_settings(path);  // its own errors name its lines
     spec.config = path;
   }
@@ -292,10 +288,11 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   }
   reader.finish();
   refuse_oversized(spec);
-  refuse_shared_folders(spec);
+  const std::vector<std::vector<SweepSetting>> points = grid_points(spec);  // within the limit
+  refuse_shared_folders(spec, points);
 
   for (const SweepVariant& variant : spec.variants)
-    for (const auto& point : grid_points(spec)) {
+    for (const auto& point : points) {
       std::vector<SweepSetting> settings = variant.settings;
       settings.insert(settings.end(), point.begin(), point.end());
       check_settings(spec, settings);

@@ -35,10 +35,7 @@ double quantile(std::vector<double> values, double share) {
 }
 
 double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
+  return quantile(std::move(values), 0.5);
 }
 
 std::string seconds_text(double seconds) {

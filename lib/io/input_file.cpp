@@ -25,4 +25,9 @@ std::ifstream open_input_file(const std::filesystem::path& path, std::string_vie
   return in;
 }
 
+bool names_regular_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
 }  // namespace opf

@@ -12,4 +12,9 @@ namespace opf {
 /// `what` names the file's role in messages, e.g. "measurement log".
 std::ifstream open_input_file(const std::filesystem::path& path, std::string_view what);
 
+/// Whether `path` names a regular file. A path the system cannot look up (too long for a file
+/// name, say) names none, rather than throwing std::filesystem::filesystem_error: readers that
+/// resolve a path from a file's text report it as missing, at the key that names it.
+bool names_regular_file(const std::filesystem::path& path);
+
 }  // namespace opf

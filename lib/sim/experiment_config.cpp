@@ -12,7 +12,6 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <system_error>
 
 namespace opf::sim {
 namespace {
@@ -190,8 +189,7 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   yaml.get("paper_preset_config", paper_preset_config);
   if (!paper_preset_config.empty()) {
     config.paper_preset_config = std::filesystem::path(source).parent_path() / paper_preset_config;
-    std::error_code error;  // a path the system cannot look up (too long, say) names no file
-    if (!std::filesystem::is_regular_file(config.paper_preset_config, error))
+    if (!names_regular_file(config.paper_preset_config))
       yaml.fail("paper_preset_config", "no file " + config.paper_preset_config.string());
   }
 
