@@ -125,6 +125,126 @@ void refuse_confusable_colours(const std::vector<ScriptedBody>& bodies,
   }
 }
 
+CameraSettings camera_settings(YamlReader& camera) {
+  CameraSettings c;
+  c.position = vector3(camera, "position", c.position);
+  c.look_at = vector3(camera, "look_at", c.look_at);
+  c.up = vector3(camera, "up", c.up);
+  switch (look_at_fault(c.position, c.look_at, c.up)) {
+    case LookAtFault::kTargetAtEye:
+      camera.fail("look_at", "expected a point other than the camera's position");
+    case LookAtFault::kUpAlongView:
+      camera.fail("up", "expected a direction across the line of sight (position to look_at)");
+    case LookAtFault::kNone:
+      break;
+  }
+  camera.get_positive("vertical_fov_deg", c.vertical_fov_deg);
+  camera.require("vertical_fov_deg", c.vertical_fov_deg < 170, "an angle below 170");
+  return c;
+}
+
+MeasurementSettings measurement_settings(YamlReader& measurement, const CameraSettings& camera) {
+  MeasurementSettings m;
+  measurement.get("position_noise", m.position_noise);
+  // Up to kMaxNoise, as an estimator's noise settings (core/option_schema.h).
+  measurement.require("position_noise", m.position_noise >= 0 && m.position_noise <= kMaxNoise,
+                      "a std (m) from 0 to 1e6");
+  measurement.get("orientation_noise", m.orientation_noise);
+  measurement.require("orientation_noise",
+                      m.orientation_noise >= 0 && m.orientation_noise <= kMaxNoise,
+                      "a std (rad) from 0 to 1e6");
+  measurement.get("min_visible_fraction", m.min_visible_fraction);
+  measurement.require("min_visible_fraction",
+                      m.min_visible_fraction >= 0 && m.min_visible_fraction <= 1,
+                      "a fraction in [0, 1]");
+  measurement.get_positive("min_area_pixels", m.min_area_pixels);
+  measurement.require("min_area_pixels",
+                      m.min_area_pixels <= static_cast<double>(camera.width) * camera.height,
+                      "a pixel count up to the image's (640 x 480)");
+  return m;
+}
+
+/// The paper preset's settings for this experiment, beside the experiment file; empty: none.
+std::filesystem::path paper_preset_config(YamlReader& yaml, const std::string& source) {
+  if (yaml.has_key("estimator_config"))
+    yaml.fail("estimator_config",
+              "an experiment runs the default preset's one set of settings: pass your own to "
+              "the command (--config FILE.yaml), or name the paper preset's settings for this "
+              "experiment as paper_preset_config");
+  std::string name;
+  yaml.get("paper_preset_config", name);
+  if (name.empty()) return {};
+  const std::filesystem::path path = std::filesystem::path(source).parent_path() / name;
+  if (!names_regular_file(path)) yaml.fail("paper_preset_config", "no file " + path.string());
+  return path;
+}
+
+std::vector<Dropout> dropouts(YamlReader& yaml, SensorKind sensor) {
+  std::vector<Dropout> result;
+  for (YamlReader* d : yaml.sequence("dropouts")) {
+    Dropout dropout;
+    d->get("from", dropout.from);
+    d->get("to", dropout.to);
+    d->require("to", dropout.to > dropout.from, "a time after 'from'");
+    result.push_back(dropout);
+  }
+  if (!result.empty() && sensor != SensorKind::kMotionCapture)
+    yaml.fail("dropouts", "dropouts are scheduled for the motion-capture sensor only");
+  return result;
+}
+
+std::vector<std::string> objects_of_interest(YamlReader& yaml,
+                                             const std::vector<std::string>& names) {
+  std::vector<std::string> result;
+  std::string interest;
+  yaml.get("objects_of_interest", interest);
+  for (std::stringstream list(interest); std::getline(list, interest, ',');) {
+    if (std::find(names.begin(), names.end(), interest) == names.end())
+      yaml.fail("objects_of_interest", "no body named '" + interest + "'");
+    result.push_back(interest);
+  }
+  if (result.empty())
+    yaml.fail("objects_of_interest", "expected the comma-separated names of scored bodies");
+  return result;
+}
+
+CautiousControllerOptions controller_settings(YamlReader& controller, double rate) {
+  CautiousControllerOptions c;
+  controller.get_positive("kp_nominal", c.kp_nominal);
+  // The hand moves by -k_p e dt a frame: the error shrinks by (1 - k_p dt), which overshoots
+  // from k_p dt > 1 and diverges from 2 (a gain of 1e300 sent the hand to infinity).
+  controller.require("kp_nominal", c.kp_nominal <= rate,
+                     "a gain (1/s) up to the frame rate (k_p dt <= 1: no frame's step "
+                     "overshoots the error)");
+  controller.get_positive("kd_nominal", c.kd_nominal);
+  controller.get_positive("epsilon_safe", c.epsilon_safe);
+  controller.get_positive("steepness", c.steepness);
+  try {
+    validate(c);
+  } catch (const std::invalid_argument& e) {
+    controller.fail("kd_nominal", e.what());
+  }
+  return c;
+}
+
+ClosedLoopSettings closed_loop(YamlReader& loop, const std::vector<std::string>& names,
+                               double rate) {
+  ClosedLoopSettings c;
+  for (auto [key, out] : {std::pair{"robot", &c.robot}, std::pair{"payload", &c.payload},
+                          std::pair{"target", &c.target}}) {
+    loop.get(key, *out);
+    if (std::find(names.begin(), names.end(), *out) == names.end())
+      loop.fail(key, "expected the name of a body, got \"" + *out + "\"");
+  }
+  loop.get("start_below_y", c.start_below_y);
+  loop.get_positive("hover_height", c.hover_height);
+  loop.get_positive("release_distance", c.release_distance);
+  loop.get_positive("release_trace_ratio", c.release_trace_ratio);
+  loop.get_positive("gravity", c.gravity);
+  c.controller = controller_settings(loop.child("controller"), rate);
+  return c;
+}
+
 }  // namespace
 
 ExperimentConfig parse_experiment(const std::string& yaml_text, const std::string& source) {
@@ -141,116 +261,21 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   yaml.require("frames", frames <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
                "a frame count below 2^31");
   config.frames = static_cast<int>(frames);
-
-  YamlReader& camera = yaml.child("camera");
-  config.camera.position = vector3(camera, "position", config.camera.position);
-  config.camera.look_at = vector3(camera, "look_at", config.camera.look_at);
-  config.camera.up = vector3(camera, "up", config.camera.up);
-  switch (look_at_fault(config.camera.position, config.camera.look_at, config.camera.up)) {
-    case LookAtFault::kTargetAtEye:
-      camera.fail("look_at", "expected a point other than the camera's position");
-    case LookAtFault::kUpAlongView:
-      camera.fail("up", "expected a direction across the line of sight (position to look_at)");
-    case LookAtFault::kNone:
-      break;
-  }
-  camera.get_positive("vertical_fov_deg", config.camera.vertical_fov_deg);
-  camera.require("vertical_fov_deg", config.camera.vertical_fov_deg < 170, "an angle below 170");
-
-  YamlReader& measurement = yaml.child("measurement");
-  measurement.get("position_noise", config.measurement.position_noise);
-  // Up to kMaxNoise, as an estimator's noise settings (core/option_schema.h).
-  measurement.require(
-      "position_noise",
-      config.measurement.position_noise >= 0 && config.measurement.position_noise <= kMaxNoise,
-      "a std (m) from 0 to 1e6");
-  measurement.get("orientation_noise", config.measurement.orientation_noise);
-  measurement.require("orientation_noise",
-                      config.measurement.orientation_noise >= 0 &&
-                          config.measurement.orientation_noise <= kMaxNoise,
-                      "a std (rad) from 0 to 1e6");
-  measurement.get("min_visible_fraction", config.measurement.min_visible_fraction);
-  measurement.require(
-      "min_visible_fraction",
-      config.measurement.min_visible_fraction >= 0 && config.measurement.min_visible_fraction <= 1,
-      "a fraction in [0, 1]");
-  measurement.get_positive("min_area_pixels", config.measurement.min_area_pixels);
-  measurement.require("min_area_pixels",
-                      config.measurement.min_area_pixels <=
-                          static_cast<double>(config.camera.width) * config.camera.height,
-                      "a pixel count up to the image's (640 x 480)");
-
-  if (yaml.has_key("estimator_config"))
-    yaml.fail("estimator_config",
-              "an experiment runs the default preset's one set of settings: pass your own to "
-              "the command (--config FILE.yaml), or name the paper preset's settings for this "
-              "experiment as paper_preset_config");
-  std::string paper_preset_config;
-  yaml.get("paper_preset_config", paper_preset_config);
-  if (!paper_preset_config.empty()) {
-    config.paper_preset_config = std::filesystem::path(source).parent_path() / paper_preset_config;
-    if (!names_regular_file(config.paper_preset_config))
-      yaml.fail("paper_preset_config", "no file " + config.paper_preset_config.string());
-  }
+  config.camera = camera_settings(yaml.child("camera"));
+  config.measurement = measurement_settings(yaml.child("measurement"), config.camera);
+  config.paper_preset_config = paper_preset_config(yaml, source);
 
   const std::vector<YamlReader*> body_readers = yaml.sequence("bodies");
   for (YamlReader* b : body_readers) config.bodies.push_back(body(*b));
   if (config.bodies.empty()) yaml.fail("bodies", "expected at least one body");
-
   std::vector<std::string> names;
   for (const auto& b : config.bodies) names.push_back(b.body.name);
   yaml.get("sensor", kSensorKindNames, config.sensor);
   if (config.sensor == SensorKind::kCamera) refuse_confusable_colours(config.bodies, body_readers);
-  for (YamlReader* d : yaml.sequence("dropouts")) {
-    Dropout dropout;
-    d->get("from", dropout.from);
-    d->get("to", dropout.to);
-    d->require("to", dropout.to > dropout.from, "a time after 'from'");
-    config.dropouts.push_back(dropout);
-  }
-  if (!config.dropouts.empty() && config.sensor != SensorKind::kMotionCapture)
-    yaml.fail("dropouts", "dropouts are scheduled for the motion-capture sensor only");
-
-  std::string interest;
-  yaml.get("objects_of_interest", interest);
-  for (std::stringstream list(interest); std::getline(list, interest, ',');) {
-    if (std::find(names.begin(), names.end(), interest) == names.end())
-      yaml.fail("objects_of_interest", "no body named '" + interest + "'");
-    config.objects_of_interest.push_back(interest);
-  }
-  if (config.objects_of_interest.empty())
-    yaml.fail("objects_of_interest", "expected the comma-separated names of scored bodies");
-  if (yaml.has_key("closed_loop")) {
-    YamlReader& loop = yaml.child("closed_loop");
-    ClosedLoopSettings c;
-    for (auto [key, out] : {std::pair{"robot", &c.robot}, std::pair{"payload", &c.payload},
-                            std::pair{"target", &c.target}}) {
-      loop.get(key, *out);
-      if (std::find(names.begin(), names.end(), *out) == names.end())
-        loop.fail(key, "expected the name of a body, got \"" + *out + "\"");
-    }
-    loop.get("start_below_y", c.start_below_y);
-    loop.get_positive("hover_height", c.hover_height);
-    loop.get_positive("release_distance", c.release_distance);
-    loop.get_positive("release_trace_ratio", c.release_trace_ratio);
-    loop.get_positive("gravity", c.gravity);
-    YamlReader& controller = loop.child("controller");
-    controller.get_positive("kp_nominal", c.controller.kp_nominal);
-    // The hand moves by -k_p e dt a frame: the error shrinks by (1 - k_p dt), which overshoots
-    // from k_p dt > 1 and diverges from 2 (a gain of 1e300 sent the hand to infinity).
-    controller.require("kp_nominal", c.controller.kp_nominal <= config.rate,
-                       "a gain (1/s) up to the frame rate (k_p dt <= 1: no frame's step "
-                       "overshoots the error)");
-    controller.get_positive("kd_nominal", c.controller.kd_nominal);
-    controller.get_positive("epsilon_safe", c.controller.epsilon_safe);
-    controller.get_positive("steepness", c.controller.steepness);
-    try {
-      validate(c.controller);
-    } catch (const std::invalid_argument& e) {
-      controller.fail("kd_nominal", e.what());
-    }
-    config.closed_loop = c;
-  }
+  config.dropouts = dropouts(yaml, config.sensor);
+  config.objects_of_interest = objects_of_interest(yaml, names);
+  if (yaml.has_key("closed_loop"))
+    config.closed_loop = closed_loop(yaml.child("closed_loop"), names, config.rate);
   yaml.finish();
   if (config.frames == 0) throw InputError(source, 0, "frames", "expected a frame count >= 1");
   try {
