@@ -328,6 +328,126 @@ void print_calibration(const std::vector<Row>& rows, double alert_distance) {
       alert_distance);
 }
 
+/// What a command line asks evaluate to do, checked before anything is read.
+struct EvaluateRequest {
+  std::string in;
+  std::string truth_path;
+  std::vector<std::string> names;
+  std::size_t seeds = 5;
+  EstimatorSettings settings;
+  std::uint64_t base_seed = 0;
+  std::size_t threads = 1;
+  double alert_distance = ErrorAccumulator::kDefaultAlertDistance;
+};
+
+/// An output path's extension, one of `allowed` (".csv" or ".json"); a usage error otherwise.
+void require_extension(const Arguments& args, const char* option,
+                       const std::vector<std::string>& allowed, const std::string& expected) {
+  const auto path = args.get(option);
+  if (!path) return;
+  const std::string extension = std::filesystem::path(*path).extension().string();
+  if (std::find(allowed.begin(), allowed.end(), extension) == allowed.end())
+    throw UsageError{"option '--" + std::string(option) + "': expected a file name ending in " +
+                     expected + ", got \"" + *path + "\""};
+}
+
+EvaluateRequest evaluate_request(const Arguments& args) {
+  EvaluateRequest r;
+  const std::string data = (experiments::bundled_experiments() / "data").string() + "/";
+  const std::string example = data + "example_log.csv";
+  r.in = args.get("in").value_or(example);
+  // The bundled truth belongs to the bundled log only: compared with another log it would score
+  // the estimators against the wrong motion.
+  std::error_code ignored;
+  if (!args.has("truth") && !std::filesystem::equivalent(r.in, example, ignored))
+    throw UsageError{"option '--truth' is required with --in " + r.in +
+                     " (the bundled example_truth.csv belongs to the bundled example log only)"};
+  r.truth_path = args.get("truth").value_or(data + "example_truth.csv");
+  r.names = args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
+  require_known_estimators("estimators", r.names);  // all before the first run
+  require_extension(args, "out", {".csv", ".json"}, ".csv or .json");
+  const std::string config = args.get("config").value_or("");
+  for (const char* output : {"out", "hidden-profile"})
+    refuse_output_over_input({"--" + std::string(output), args.get(output).value_or("")},
+                             {{"--in", r.in}, {"--truth", r.truth_path}, {"--config", config}});
+  refuse_output_over_input({"--hidden-profile", args.get("hidden-profile").value_or("")},
+                           {{"--out", args.get("out").value_or("")}});
+  r.seeds = args.get_count("seeds").value_or(5);
+  if (r.seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
+  r.settings = settings_from(args);
+  require_camera_for_line_of_sight(r.settings);
+  r.base_seed = seed_from(args);
+  r.threads = threads_from(args);
+  r.alert_distance =
+      args.get_number("alert-distance").value_or(ErrorAccumulator::kDefaultAlertDistance);
+  if (!(r.alert_distance > 0.0) || !std::isfinite(r.alert_distance))
+    throw UsageError{"option '--alert-distance' must be a positive distance in metres"};
+  require_extension(args, "hidden-profile", {".csv"}, ".csv");
+  return r;
+}
+
+/// The truth, read as the log is (its units and columns) but never filled, its frames matched
+/// to the log's within the log's frame tolerance.
+TruthTable read_truth(const Arguments& args, const std::string& truth_path,
+                      const MeasurementLog& log) {
+  LogReadOptions truth_options = log_options_from(args, truth_path);
+  // A TUM truth of the log's one object is that object's, whatever the two files are called.
+  if (truth_options.format == LogFormat::kTum && !args.has("object") && log.objects.size() == 1)
+    truth_options.object = log.objects.front();
+  truth_options.fill_gaps = false;
+  truth_options.rate.reset();
+  return TruthTable(read_measurement_log(truth_path, truth_options),
+                    std::max(log.report.frame_tolerance, kExactTimeTolerance));
+}
+
+/// Every estimator over every seed, each printed as its seeds end: the first table.
+std::vector<Row> run_every_estimator(const EvaluateRequest& r, const MeasurementLog& log,
+                                     const TruthTable& truth, std::size_t& unscored) {
+  if (r.seeds == 1)
+    std::printf("errors against the truth, each run's mean over frames (1 seed: no spread)\n");
+  else
+    std::printf(
+        "errors against the truth, each run's mean over frames (mean +- std over %zu seeds)\n",
+        r.seeds);
+  std::printf("%-10s %-22s %-22s %-22s %-22s\n", "estimator", "translation [m]",
+              "rotation paper [rad]", "rotation geodesic", "transl. unobserved [m]");
+  std::vector<Row> rows;
+  for (const std::string& name : r.names) {
+    Row row;
+    row.name = name;
+    for (std::size_t k = 0; k < r.seeds; ++k) {
+      const ScoredRun run = run_once(log, truth, name, r.settings, derive_seed(r.base_seed, k),
+                                     r.threads, r.truth_path, r.alert_distance);
+      unscored = std::max(unscored, run.unscored);
+      row.add(run.errors);
+    }
+    std::printf("%-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
+                cell(mean_std(row.translation)).c_str(), cell(mean_std(row.paper)).c_str(),
+                cell(mean_std(row.geodesic)).c_str(),
+                cell(mean_std(row.hidden_translation)).c_str());
+    std::fflush(stdout);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+/// The second table: the same runs split by whether the object was measured, and how honest the
+/// reported position covariance was while it was not.
+void print_hidden_and_visible(const std::vector<Row>& rows) {
+  std::printf("\n%-10s %-13s %-13s %-13s %-13s %-10s %-10s\n", "estimator", "hidden [m]",
+              "hidden [rad]", "visible [m]", "visible [rad]", "coverage", "err/sd");
+  for (const Row& row : rows) {
+    std::printf("%-10s %-13.5f %-13.5f %-13.5f %-13.5f %-10.3f %-10.3f\n", row.name.c_str(),
+                mean_std(row.hidden_translation).mean, mean_std(row.hidden_rotation).mean,
+                mean_std(row.visible_translation).mean, mean_std(row.visible_rotation).mean,
+                mean_std(row.coverage).mean, mean_std(row.normalised).mean);
+  }
+  std::printf(
+      "\ncoverage: share of unobserved frames whose translation error is within 2 sqrt(trace) of "
+      "the estimate's\nposition covariance; err/sd: median of error / sqrt(trace) over them (means "
+      "over seeds)\n");
+}
+
 }  // namespace
 
 CommandHelp evaluate_help() {
@@ -341,110 +461,27 @@ int evaluate_command(const std::vector<std::string>& raw) {
     std::cout << usage(evaluate_help());
     return 0;
   }
-  const std::string data = (experiments::bundled_experiments() / "data").string() + "/";
-  const std::string example = data + "example_log.csv";
-  const std::string in = args.get("in").value_or(example);
-  // The bundled truth belongs to the bundled log only: compared with another log it would score
-  // the estimators against the wrong motion.
-  std::error_code ignored;
-  if (!args.has("truth") && !std::filesystem::equivalent(in, example, ignored))
-    throw UsageError{"option '--truth' is required with --in " + in +
-                     " (the bundled example_truth.csv belongs to the bundled example log only)"};
-  const std::string truth_path = args.get("truth").value_or(data + "example_truth.csv");
-  const auto names =
-      args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
-  require_known_estimators("estimators", names);  // all before the first run
-  if (const auto path = args.get("out")) {
-    const auto extension = std::filesystem::path(*path).extension();
-    if (extension != ".csv" && extension != ".json")
-      throw UsageError{"option '--out': expected a file name ending in .csv or .json, got \"" +
-                       *path + "\""};
-  }
-  const std::string config = args.get("config").value_or("");
-  for (const char* output : {"out", "hidden-profile"})
-    refuse_output_over_input({"--" + std::string(output), args.get(output).value_or("")},
-                             {{"--in", in}, {"--truth", truth_path}, {"--config", config}});
-  refuse_output_over_input({"--hidden-profile", args.get("hidden-profile").value_or("")},
-                           {{"--out", args.get("out").value_or("")}});
-  const std::size_t seeds = args.get_count("seeds").value_or(5);
-  if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
-  const EstimatorSettings settings = settings_from(args);
-  require_camera_for_line_of_sight(settings);
-  const std::uint64_t base_seed = seed_from(args);
-  const std::size_t threads = threads_from(args);
-  const double alert_distance =
-      args.get_number("alert-distance").value_or(ErrorAccumulator::kDefaultAlertDistance);
-  if (!(alert_distance > 0.0) || !std::isfinite(alert_distance))
-    throw UsageError{"option '--alert-distance' must be a positive distance in metres"};
-  if (const auto path = args.get("hidden-profile");
-      path && std::filesystem::path(*path).extension() != ".csv")
-    throw UsageError{"option '--hidden-profile': expected a file name ending in .csv, got \"" +
-                     *path + "\""};
-
-  const LogReadOptions log_options = log_options_from(args, in);
-  const MeasurementLog log = read_whole_log(in, log_options, "evaluate", false);
-  if (log.objects.size() > 1 && assumes_top_down_camera(settings) &&
-      std::find(names.begin(), names.end(), "opf") != names.end())
+  const EvaluateRequest r = evaluate_request(args);
+  const LogReadOptions log_options = log_options_from(args, r.in);
+  const MeasurementLog log = read_whole_log(r.in, log_options, "evaluate", false);
+  if (log.objects.size() > 1 && assumes_top_down_camera(r.settings) &&
+      std::find(r.names.begin(), r.names.end(), "opf") != r.names.end())
     std::cerr << missing_camera_warning("evaluate");
-  LogReadOptions truth_options = log_options_from(args, truth_path);
-  // A TUM truth of the log's one object is that object's, whatever the two files are called.
-  if (truth_options.format == LogFormat::kTum && !args.has("object") && log.objects.size() == 1)
-    truth_options.object = log.objects.front();
-  truth_options.fill_gaps = false;
-  truth_options.rate.reset();
-  const TruthTable truth(read_measurement_log(truth_path, truth_options),
-                         std::max(log.report.frame_tolerance, kExactTimeTolerance));
-  require_truth_for_every_estimate(log, truth, truth_path);
+  const TruthTable truth = read_truth(args, r.truth_path, log);
+  require_truth_for_every_estimate(log, truth, r.truth_path);
 
   std::printf("opf evaluate: %s, %zu frames, %zu objects, %zu %s, %zu + %zu particles\n\n",
-              in.c_str(), log.frames.size(), log.objects.size(), seeds,
-              seeds == 1 ? "seed" : "seeds", settings.pf.translation_particles,
-              settings.pf.rotation_particles);
-  if (seeds == 1)
-    std::printf("errors against the truth, each run's mean over frames (1 seed: no spread)\n");
-  else
-    std::printf(
-        "errors against the truth, each run's mean over frames (mean +- std over %zu seeds)\n",
-        seeds);
-  std::printf("%-10s %-22s %-22s %-22s %-22s\n", "estimator", "translation [m]",
-              "rotation paper [rad]", "rotation geodesic", "transl. unobserved [m]");
-  std::vector<Row> rows;
+              r.in.c_str(), log.frames.size(), log.objects.size(), r.seeds,
+              r.seeds == 1 ? "seed" : "seeds", r.settings.pf.translation_particles,
+              r.settings.pf.rotation_particles);
   std::size_t unscored = 0;
-  for (const std::string& name : names) {
-    Row row;
-    row.name = name;
-    for (std::size_t k = 0; k < seeds; ++k) {
-      const ScoredRun run = run_once(log, truth, name, settings, derive_seed(base_seed, k), threads,
-                                     truth_path, alert_distance);
-      unscored = std::max(unscored, run.unscored);
-      row.add(run.errors);
-    }
-    std::printf("%-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
-                cell(mean_std(row.translation)).c_str(), cell(mean_std(row.paper)).c_str(),
-                cell(mean_std(row.geodesic)).c_str(),
-                cell(mean_std(row.hidden_translation)).c_str());
-    std::fflush(stdout);
-    rows.push_back(std::move(row));
-  }
-  // The same runs split by whether the object was measured, and how honest the reported
-  // position covariance was while it was not.
-  std::printf("\n%-10s %-13s %-13s %-13s %-13s %-10s %-10s\n", "estimator", "hidden [m]",
-              "hidden [rad]", "visible [m]", "visible [rad]", "coverage", "err/sd");
-  for (const Row& row : rows) {
-    std::printf("%-10s %-13.5f %-13.5f %-13.5f %-13.5f %-10.3f %-10.3f\n", row.name.c_str(),
-                mean_std(row.hidden_translation).mean, mean_std(row.hidden_rotation).mean,
-                mean_std(row.visible_translation).mean, mean_std(row.visible_rotation).mean,
-                mean_std(row.coverage).mean, mean_std(row.normalised).mean);
-  }
-  std::printf(
-      "\ncoverage: share of unobserved frames whose translation error is within 2 sqrt(trace) of "
-      "the estimate's\nposition covariance; err/sd: median of error / sqrt(trace) over them (means "
-      "over seeds)\n");
-  print_calibration(rows, alert_distance);
+  const std::vector<Row> rows = run_every_estimator(r, log, truth, unscored);
+  print_hidden_and_visible(rows);
+  print_calibration(rows, r.alert_distance);
   if (const auto path = args.get("hidden-profile")) write_hidden_profile(*path, rows);
   if (const auto path = args.get("out"))
     write_evaluation(*path, rows,
-                     provenance_json(command_line("evaluate", raw), {{"", settings}}, 2));
+                     provenance_json(command_line("evaluate", raw), {{"", r.settings}}, 2));
   if (unscored > 0)
     std::printf(
         "%zu estimates of frames filled inside gaps of the log had no ground truth and "
