@@ -86,87 +86,75 @@ std::string range_text(double low, double high) {
 // Frames a video's container may state beyond the ones it holds without anything being wrong.
 constexpr std::size_t kCountSlack = 2;
 
-}  // namespace
-
-CommandHelp detect_help() {
-  return {"detect", kSummary, specs()};
-}
-
-int detect_command(const std::vector<std::string>& raw) {
-  const auto option_specs = specs();
-  const Arguments args(raw, option_specs);
-  if (args.help()) {
-    std::cout << usage(detect_help());
-    return 0;
-  }
-  const std::filesystem::path video = args.require("video");
-  const std::filesystem::path spec_path = args.require("objects");
-  const std::filesystem::path out = args.require("out");
-  refuse_output_over_input({"--out", out.string()},
-                           {{"--video", video.string()}, {"--objects", spec_path.string()}});
-  const std::optional<double> rate = args.get_number("rate");
-  // As the log reader's limit: a log at a lower rate would be refused as not in seconds.
-  if (rate && !(*rate >= kMinFrameRate))
-    throw UsageError{"option '--rate' expects " + std::string(kFrameRateExpectation)};
-  const std::size_t first = args.get_count("first").value_or(0);
+/// What a command line asks detect to do, checked before the video is opened.
+struct DetectRequest {
+  std::filesystem::path video, spec_path, out;
+  std::optional<double> rate;
+  std::size_t first = 0;
   std::optional<std::size_t> frames;
+  std::optional<std::filesystem::path> overlay_dir;
+  std::size_t overlay_every = 10;
+};
+
+DetectRequest detect_request(const Arguments& args) {
+  DetectRequest r;
+  r.video = args.require("video");
+  r.spec_path = args.require("objects");
+  r.out = args.require("out");
+  refuse_output_over_input({"--out", r.out.string()},
+                           {{"--video", r.video.string()}, {"--objects", r.spec_path.string()}});
+  r.rate = args.get_number("rate");
+  // As the log reader's limit: a log at a lower rate would be refused as not in seconds.
+  if (r.rate && !(*r.rate >= kMinFrameRate))
+    throw UsageError{"option '--rate' expects " + std::string(kFrameRateExpectation)};
+  r.first = args.get_count("first").value_or(0);
   if (const auto count = args.get_count("frames")) {
     if (*count == 0) throw UsageError{"option '--frames' expects at least 1"};
-    frames = *count;
+    r.frames = *count;
   }
-  const std::optional<std::filesystem::path> overlay_dir =
-      args.has("overlay") ? std::optional<std::filesystem::path>(*args.get("overlay"))
-                          : std::nullopt;
-  const std::size_t overlay_every = args.get_count("overlay-every").value_or(10);
-  if (overlay_every == 0) throw UsageError{"option '--overlay-every' expects at least 1"};
-  if (args.has("overlay-every") && !overlay_dir)
+  if (args.has("overlay")) r.overlay_dir = *args.get("overlay");
+  r.overlay_every = args.get_count("overlay-every").value_or(10);
+  if (r.overlay_every == 0) throw UsageError{"option '--overlay-every' expects at least 1"};
+  if (args.has("overlay-every") && !r.overlay_dir)
     throw UsageError{"option '--overlay-every' needs --overlay"};
-  if (overlay_dir) {
-    require_folder({"--overlay", overlay_dir->string()});
+  if (r.overlay_dir) {
+    require_folder({"--overlay", r.overlay_dir->string()});
     // A folder of images read as the video would get the overlays among its frames.
-    refuse_output_over_input({"--overlay", overlay_dir->string()}, {{"--video", video.string()}});
+    refuse_output_over_input({"--overlay", r.overlay_dir->string()},
+                             {{"--video", r.video.string()}});
   }
+  return r;
+}
 
-  const vision::SegmentationSpec spec = vision::load_segmentation_spec(spec_path);
-  vision::FrameSource source(video);
-  const std::optional<double> fps = rate ? rate : source.fps();
-  if (!fps)
-    throw UsageError{"option '--rate' is required: " + video.string() + " states no frame rate"};
-  if (overlay_dir) std::filesystem::create_directories(*overlay_dir);
-
+/// Detects the spec's objects in the requested frames, with a progress bar and, every
+/// overlay_every frames, the overlay image.
+vision::VideoDetection detect_frames(const DetectRequest& r, const vision::SegmentationSpec& spec,
+                                     vision::FrameSource& source) {
   std::vector<std::string> names;
   for (const auto& object : spec.objects) names.push_back(object.name);
   std::optional<std::size_t> total;
   if (source.frame_count())
-    total = *source.frame_count() > first ? *source.frame_count() - first : 0;
-  if (frames) total = total ? std::min(*total, *frames) : *frames;
+    total = *source.frame_count() > r.first ? *source.frame_count() - r.first : 0;
+  if (r.frames) total = total ? std::min(*total, *r.frames) : *r.frames;
   ProgressBar progress(total);
   std::size_t done = 0;
-  const vision::VideoDetection detection =
-      vision::detect_in_video(source, spec, first, frames, [&](const vision::FrameResult& result) {
+  vision::VideoDetection detection = vision::detect_in_video(
+      source, spec, r.first, r.frames, [&](const vision::FrameResult& result) {
         progress.update(++done);
-        if (overlay_dir && (result.frame - first) % overlay_every == 0) {
+        if (r.overlay_dir && (result.frame - r.first) % r.overlay_every == 0) {
           char name[32];
           std::snprintf(name, sizeof name, "frame_%06zu.png", result.frame);
-          const std::filesystem::path file = *overlay_dir / name;
+          const std::filesystem::path file = *r.overlay_dir / name;
           if (!cv::imwrite(file.string(), vision::draw_detection_overlay(result, names)))
             throw std::runtime_error("cannot write " + file.string());
         }
       });
   progress.finish();
+  return detection;
+}
 
-  // The frames' own timestamps where the container says they are not evenly spaced at its rate
-  // (frames dropped as it was recorded): frame / fps would squeeze the motion in time. A rate
-  // given on the command line is the user's word and is kept.
-  const std::optional<vision::UnevenFrames> uneven =
-      rate ? std::nullopt : vision::uneven_frames(detection, *fps);
-  write_file_atomically(out, [&](std::ostream& os) {
-    vision::write_detection_log(os, detection, *fps, uneven.has_value());
-  });
-
-  const std::size_t last = detection.first_frame + detection.frames - 1;
-  std::cout << "opf detect: " << video.string() << ", frames " << detection.first_frame << "-"
-            << last << " (" << detection.frames << " frames at " << *fps << " Hz)\n";
+/// Per object: in how many frames it was found, over which frames and where in the image.
+void print_objects_found(const vision::VideoDetection& detection) {
   for (const vision::ObjectTrack& object : detection.objects) {
     std::cout << "  " << object.name << ": found in " << object.sightings.size() << " of "
               << detection.frames << " frames";
@@ -186,6 +174,43 @@ int detect_command(const std::vector<std::string>& raw) {
     if (object.sightings.empty())
       std::cerr << "opf detect: warning: object '" << object.name << "' was never found\n";
   }
+}
+
+}  // namespace
+
+CommandHelp detect_help() {
+  return {"detect", kSummary, specs()};
+}
+
+int detect_command(const std::vector<std::string>& raw) {
+  const auto option_specs = specs();
+  const Arguments args(raw, option_specs);
+  if (args.help()) {
+    std::cout << usage(detect_help());
+    return 0;
+  }
+  const DetectRequest r = detect_request(args);
+  const vision::SegmentationSpec spec = vision::load_segmentation_spec(r.spec_path);
+  vision::FrameSource source(r.video);
+  const std::optional<double> fps = r.rate ? r.rate : source.fps();
+  if (!fps)
+    throw UsageError{"option '--rate' is required: " + r.video.string() + " states no frame rate"};
+  if (r.overlay_dir) std::filesystem::create_directories(*r.overlay_dir);
+  const vision::VideoDetection detection = detect_frames(r, spec, source);
+
+  // The frames' own timestamps where the container says they are not evenly spaced at its rate
+  // (frames dropped as it was recorded): frame / fps would squeeze the motion in time. A rate
+  // given on the command line is the user's word and is kept.
+  const std::optional<vision::UnevenFrames> uneven =
+      r.rate ? std::nullopt : vision::uneven_frames(detection, *fps);
+  write_file_atomically(r.out, [&](std::ostream& os) {
+    vision::write_detection_log(os, detection, *fps, uneven.has_value());
+  });
+
+  const std::size_t last = detection.first_frame + detection.frames - 1;
+  std::cout << "opf detect: " << r.video.string() << ", frames " << detection.first_frame << "-"
+            << last << " (" << detection.frames << " frames at " << *fps << " Hz)\n";
+  print_objects_found(detection);
   // z grows away from the camera along every line of sight: the occluder module's default view,
   // straight down (-z), would take the nearer of two objects for the one behind.
   if (detection.objects.size() > 1)
@@ -194,16 +219,16 @@ int detect_command(const std::vector<std::string>& raw) {
   if (const std::size_t missing =
           vision::frames_missing_at_end(detection, *fps, uneven.has_value());
       missing > kCountSlack)
-    std::cerr << "opf detect: warning: " << video.string() << ": decoding ended after frame "
+    std::cerr << "opf detect: warning: " << r.video.string() << ": decoding ended after frame "
               << last << ", about " << missing << " frames (" << static_cast<double>(missing) / *fps
               << " s) before the end the video states: they are missing from the log (a truncated "
                  "or damaged file? re-encoding it may recover them)\n";
   if (uneven)
-    std::cerr << "opf detect: warning: " << video.string()
+    std::cerr << "opf detect: warning: " << r.video.string()
               << ": the frames are not evenly spaced at " << *fps << " Hz (frame " << uneven->frame
               << " is stamped " << uneven->timestamp << " s, not " << uneven->at_the_rate
               << " s): each row's t is its frame's timestamp; --rate HZ for t = frame / HZ\n";
-  std::cout << "  log written to " << out.string() << "\n";
+  std::cout << "  log written to " << r.out.string() << "\n";
   return 0;
 }
 
