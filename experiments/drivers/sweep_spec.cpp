@@ -186,23 +186,16 @@ std::vector<std::vector<SweepSetting>> grid_points(const SweepSpec& spec) {
   return points;
 }
 
-SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file) {
-  const std::string source = file.string();
-  YamlReader reader = YamlReader::parse(text, source);
-  SweepSpec spec;
-  spec.file = file;
-  spec.name = file.stem().string();
-  reader.get("name", spec.name);
-  reader.require("name", folder_name(spec.name), kFolderName);
+namespace {
 
-  std::vector<std::string> experiments, estimators;
-  reader.get("experiments", experiments);
-  reader.get("estimators", estimators);
-  if (experiments.empty()) reader.fail("experiments", "missing: which experiments to run");
-  if (estimators.empty()) reader.fail("estimators", "missing: which estimators to run");
-  std::map<std::string, int> experiment_frames;  // by the name its results folder takes
+/// The experiment files (a bare name is experiments/<name>.yaml), each loaded to check it; the
+/// frame count of each by the name its results folder takes.
+std::map<std::string, int> read_experiments(YamlReader& reader,
+                                            const std::vector<std::string>& experiments,
+                                            SweepSpec& spec) {
+  std::map<std::string, int> experiment_frames;
   for (const std::string& entry : experiments) {
-    const std::filesystem::path path = resolve_experiment(entry, file);
+    const std::filesystem::path path = resolve_experiment(entry, spec.file);
     if (!names_regular_file(path))
       reader.fail("experiments", "no experiment file " + path.string() + " for '" + entry +
                                      "' (a bare name is experiments/<name>.yaml, a path is "
@@ -213,6 +206,11 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
                                      "': their runs would share one results folder");
     spec.experiments.push_back(path);
   }
+  return experiment_frames;
+}
+
+std::vector<std::string> read_estimators(YamlReader& reader,
+                                         const std::vector<std::string>& estimators) {
   const std::vector<std::string> known = estimator_names();
   for (const std::string& name : estimators)
     if (std::find(known.begin(), known.end(), name) == known.end())
@@ -221,8 +219,12 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
     if (std::find(estimators.begin(), estimators.begin() + i, estimators[i]) !=
         estimators.begin() + i)
       reader.fail("estimators", "estimator '" + estimators[i] + "' appears twice");
-  spec.estimators = estimators;
+  return estimators;
+}
 
+/// seeds, seed, particles and frames (at most every experiment's own count).
+void read_run_size(YamlReader& reader, const std::map<std::string, int>& experiment_frames,
+                   SweepSpec& spec) {
   reader.get_positive("seeds", spec.seeds);
   std::size_t base_seed = spec.seed;
   reader.get("seed", base_seed);
@@ -243,17 +245,26 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
                                   experiment + "' has " + std::to_string(count));
     spec.frames = frames;
   }
-  if (reader.has_key("config")) {
-    std::string config;
-    reader.get("config", config);
-    std::filesystem::path path(config);
-    if (!path.is_absolute()) path = file.parent_path() / path;
-    if (!names_regular_file(path))
-      reader.fail("config", "no estimator settings file " + path.string());
-    load_estimator_settings(path);  // its own errors name its lines
-    spec.config = path;
-  }
+}
 
+/// The estimator settings file (relative to the sweep file), loaded to check it; none: empty.
+std::optional<std::filesystem::path> read_config(YamlReader& reader,
+                                                 const std::filesystem::path& file) {
+  if (!reader.has_key("config")) return std::nullopt;
+  std::string config;
+  reader.get("config", config);
+  std::filesystem::path path(config);
+  if (!path.is_absolute()) path = file.parent_path() / path;
+  if (!names_regular_file(path))
+    reader.fail("config", "no estimator settings file " + path.string());
+  load_estimator_settings(path);  // its own errors name its lines
+  return path;
+}
+
+/// The variants, each named (a folder name no other variant has) with its settings; none: one
+/// variant, `default`, of no settings.
+std::vector<SweepVariant> read_variants(YamlReader& reader, const std::string& source) {
+  std::vector<SweepVariant> variants;
   std::set<std::string> variant_names;
   for (YamlReader* item : reader.sequence("variants")) {
     SweepVariant variant;
@@ -267,10 +278,15 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
       variant.settings.push_back(
           {setting.key, scalar_text(setting.value, source, setting.line, where), setting.line});
     }
-    spec.variants.push_back(std::move(variant));
+    variants.push_back(std::move(variant));
   }
-  if (spec.variants.empty()) spec.variants.push_back({"default", {}});
+  if (variants.empty()) variants.push_back({"default", {}});
+  return variants;
+}
 
+/// The grid's parameters: each a settings key with a non-empty list of distinct values.
+std::vector<SweepParameter> read_parameters(YamlReader& reader, const std::string& source) {
+  std::vector<SweepParameter> parameters;
   for (const YamlReader::Item& item : reader.items("parameters")) {
     SweepParameter parameter{item.key, {}, item.line};
     const std::string path = "parameters." + item.key;
@@ -284,8 +300,32 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
         throw InputError(source, item.line, path,
                          "value \"" + parameter.values.back() + "\" appears twice", kKey);
     }
-    spec.parameters.push_back(std::move(parameter));
+    parameters.push_back(std::move(parameter));
   }
+  return parameters;
+}
+
+}  // namespace
+
+SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file) {
+  const std::string source = file.string();
+  YamlReader reader = YamlReader::parse(text, source);
+  SweepSpec spec;
+  spec.file = file;
+  spec.name = file.stem().string();
+  reader.get("name", spec.name);
+  reader.require("name", folder_name(spec.name), kFolderName);
+  std::vector<std::string> experiments, estimators;
+  reader.get("experiments", experiments);
+  reader.get("estimators", estimators);
+  if (experiments.empty()) reader.fail("experiments", "missing: which experiments to run");
+  if (estimators.empty()) reader.fail("estimators", "missing: which estimators to run");
+  const std::map<std::string, int> experiment_frames = read_experiments(reader, experiments, spec);
+  spec.estimators = read_estimators(reader, estimators);
+  read_run_size(reader, experiment_frames, spec);
+  spec.config = read_config(reader, file);
+  spec.variants = read_variants(reader, source);
+  spec.parameters = read_parameters(reader, source);
   reader.finish();
   refuse_oversized(spec);
   const std::vector<std::vector<SweepSetting>> points = grid_points(spec);  // within the limit
