@@ -191,6 +191,66 @@ std::vector<fs::path> track_to_tum(Tracker& tracker, const MeasurementLog& log,
   return paths;
 }
 
+// A stream: each frame's rows written and flushed as soon as the next frame begins.
+FrameAssemblyReport track_stream(const std::string& in, const std::string& out,
+                                 const LogReadOptions& log_options, const EstimateColumns& columns,
+                                 EstimateWriter& writer) {
+  std::optional<std::ifstream> file;
+  if (in != "-") file = open_input_file(in, "measurement log");
+  std::istream& input = file ? static_cast<std::istream&>(*file) : std::cin;
+  MeasurementStream frames(input, in == "-" ? "<stdin>" : in, log_options);
+  std::optional<std::ofstream> out_file;
+  if (out != "-") {
+    out_file.emplace(out, std::ios::binary);
+    if (!*out_file) throw std::runtime_error("cannot write " + out);
+  }
+  std::ostream& output = out_file ? static_cast<std::ostream&>(*out_file) : std::cout;
+  write_estimate_header(output, columns);
+  flush_checked(output, out);
+  while (const std::optional<Frame> frame = frames.next()) {
+    write_checked(writer, output, *frame, out);
+    flush_checked(output, out);  // answered now, not when the input ends
+  }
+  if (out_file) out_file->close();
+  if (out_file) check_written(*out_file, out);
+  return frames.report();
+}
+
+// A whole log's estimates as CSV: to a file only once the whole run succeeded (a device such as
+// a pipe is written through).
+void track_whole_log(const MeasurementLog& log, const std::string& out,
+                     const EstimateColumns& columns, EstimateWriter& writer) {
+  const auto write_all = [&](std::ostream& os) {
+    write_estimate_header(os, columns);
+    for (const Frame& frame : log.frames) write_checked(writer, os, frame, out);
+    flush_checked(os, out);
+  };
+  if (out == "-") {
+    write_all(std::cout);
+  } else if (written_through(out)) {
+    std::ofstream device(out, std::ios::binary);
+    if (!device) throw std::runtime_error("cannot open '" + out + "' for writing");
+    write_all(device);
+    device.close();
+    check_written(device, out);
+  } else {
+    write_file_atomically(out, write_all);
+  }
+}
+
+// How the log's gaps were filled, and which were too long to fill.
+void report_filled_gaps(const FrameAssemblyReport& assembly) {
+  if (assembly.filled_frames > 0)
+    std::cerr << "opf track: " << assembly.filled_frames << " frames filled inside "
+              << assembly.gaps << (assembly.gaps == 1 ? " gap" : " gaps") << " of the log (at "
+              << 1.0 / assembly.frame_period << " Hz; mode +filled; --no-fill keeps only the "
+              << "log's frames)\n";
+  if (assembly.long_gaps > 0)
+    std::cerr << "opf track: warning: " << assembly.long_gaps << " gaps left unfilled: longer than "
+              << kMaxFilledGap << " s (a clock jump or a pause) or than " << kMaxFilledFrames
+              << " frames at " << 1.0 / assembly.frame_period << " Hz\n";
+}
+
 }  // namespace
 
 CommandHelp track_help() {
@@ -240,55 +300,14 @@ int track_command(const std::vector<std::string>& raw) {
     written = std::to_string(log.frames.size()) + " frames, " + std::to_string(log.objects.size()) +
               " objects: main estimates written as TUM to " + names;
   } else if (stream) {
-    std::optional<std::ifstream> file;
-    if (in != "-") file = open_input_file(in, "measurement log");
-    std::istream& input = file ? static_cast<std::istream&>(*file) : std::cin;
-    MeasurementStream frames(input, in == "-" ? "<stdin>" : in, log_options);
-    std::optional<std::ofstream> out_file;
-    if (out != "-") {
-      out_file.emplace(out, std::ios::binary);
-      if (!*out_file) throw std::runtime_error("cannot write " + out);
-    }
-    std::ostream& output = out_file ? static_cast<std::ostream&>(*out_file) : std::cout;
-    write_estimate_header(output, columns);
-    flush_checked(output, out);
-    while (const std::optional<Frame> frame = frames.next()) {
-      write_checked(writer, output, *frame, out);
-      flush_checked(output, out);  // answered now, not when the input ends
-    }
-    if (out_file) out_file->close();
-    if (out_file) check_written(*out_file, out);
-    assembly = frames.report();
+    assembly = track_stream(in, out, log_options, columns, writer);
   } else {
     const MeasurementLog log = read_whole_log(in, log_options, "track", quiet);
     assembly = log.report;
-    const auto write_all = [&](std::ostream& os) {
-      write_estimate_header(os, columns);
-      for (const Frame& frame : log.frames) write_checked(writer, os, frame, out);
-      flush_checked(os, out);
-    };
-    if (out == "-") {
-      write_all(std::cout);
-    } else if (written_through(out)) {
-      std::ofstream device(out, std::ios::binary);
-      if (!device) throw std::runtime_error("cannot open '" + out + "' for writing");
-      write_all(device);
-      device.close();
-      check_written(device, out);
-    } else {
-      write_file_atomically(out, write_all);
-    }
+    track_whole_log(log, out, columns, writer);
   }
   if (quiet) return 0;
-  if (assembly.filled_frames > 0)
-    std::cerr << "opf track: " << assembly.filled_frames << " frames filled inside "
-              << assembly.gaps << (assembly.gaps == 1 ? " gap" : " gaps") << " of the log (at "
-              << 1.0 / assembly.frame_period << " Hz; mode +filled; --no-fill keeps only the "
-              << "log's frames)\n";
-  if (assembly.long_gaps > 0)
-    std::cerr << "opf track: warning: " << assembly.long_gaps << " gaps left unfilled: longer than "
-              << kMaxFilledGap << " s (a clock jump or a pause) or than " << kMaxFilledFrames
-              << " frames at " << 1.0 / assembly.frame_period << " Hz\n";
+  report_filled_gaps(assembly);
   if (written.empty())
     written = std::to_string(writer.frames()) + " frames, " + std::to_string(writer.objects()) +
               " objects: " + std::to_string(writer.rows()) + " estimates written to " + out;
