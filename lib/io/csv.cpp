@@ -139,6 +139,16 @@ std::string format_double(double value) {
   return std::string(buffer, ptr);
 }
 
+std::string format_time(double value) {
+  // The shortest fixed text of a finite double has at most 309 digits before the point and 324
+  // after it (a sign and the point besides).
+  char buffer[1400];
+  const auto [ptr, ec] =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed);
+  if (ec != std::errc()) throw std::logic_error("format_time: buffer too small");
+  return std::string(buffer, ptr);
+}
+
 std::string quote_if_needed(std::string_view text) {
   if (text.find_first_of("\r\n") != std::string_view::npos)
     throw std::invalid_argument("a CSV field cannot hold a line break: \"" + std::string(text) +

@@ -27,6 +27,11 @@ std::optional<double> parse_double(std::string_view text);
 /// The shortest text that reads back as exactly `value` (std::to_chars), e.g. "0.033333".
 std::string format_double(double value);
 
+/// A time: the shortest fixed-notation text that reads back as exactly `value`, never an exponent,
+/// so that a column of times reads evenly (a whole-second stamp 1600000000 is not "1.6e+09" beside
+/// "1600000000.033", nor 0.0001 s "1e-04").
+std::string format_time(double value);
+
 /// `text` as one field: quoted when it holds a comma or quote or has surrounding whitespace, so
 /// that split_line gives it back unchanged.
 std::string quote_if_needed(std::string_view text);

@@ -48,7 +48,7 @@ void write_estimate_row(std::ostream& out, const Estimate& estimate, double epsi
   if (q.w() < 0.0) q.coeffs() = -q.coeffs();
   const double qw = q.w() + 0.0;
 
-  std::string row = csv::format_double(estimate.t);
+  std::string row = csv::format_time(estimate.t);
   row += ',' + csv::quote_if_needed(estimate.object);
   for (const double value :
        {mean.x(), mean.y(), mean.z(), q.x(), q.y(), q.z(), qw, estimate.observation_trace})

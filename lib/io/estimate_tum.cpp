@@ -17,7 +17,7 @@ void write_tum_row(std::ostream& out, const Estimate& estimate) {
   const Eigen::Vector3d p = translation_of(estimate.pose.mean);
   Eigen::Quaterniond q = orientation_of(estimate.pose.mean);
   if (q.w() < 0.0) q.coeffs() = -q.coeffs();
-  out << csv::format_double(estimate.t);
+  out << csv::format_time(estimate.t);
   for (const double v : {p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w()})
     out << ' ' << csv::format_double(v);
   out << '\n';

@@ -11,7 +11,7 @@ void write_pose(std::ostream& out, double t, const std::string& object,
                 const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation) {
   Eigen::Quaterniond q = orientation.normalized();
   if (q.w() < 0.0) q.coeffs() *= -1.0;
-  out << csv::format_double(t) << ',' << csv::quote_if_needed(object);
+  out << csv::format_time(t) << ',' << csv::quote_if_needed(object);
   for (const double value : {position.x(), position.y(), position.z(), q.x(), q.y(), q.z(), q.w()})
     out << ',' << csv::format_double(value);
 }

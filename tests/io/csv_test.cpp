@@ -61,6 +61,24 @@ TEST(CsvFormatDouble, IsShortestRoundTrip) {
     EXPECT_EQ(parse_double(format_double(value)), value) << format_double(value);
 }
 
+TEST(CsvFormatTime, IsShortestRoundTripWithoutAnExponent) {
+  // Where format_double would take an exponent (shorter), a time keeps its digits.
+  EXPECT_EQ(format_double(1600000000.0), "1.6e+09");
+  EXPECT_EQ(format_time(1600000000.0), "1600000000");
+  EXPECT_EQ(format_time(1600000000.033), "1600000000.033");
+  EXPECT_EQ(format_time(1e-4), "0.0001");
+  EXPECT_EQ(format_time(100000.0), "100000");
+  EXPECT_EQ(format_time(0.033333), "0.033333");
+  EXPECT_EQ(format_time(-2.5), "-2.5");
+  EXPECT_EQ(format_time(0.0), "0");
+  for (const double value : {1.0 / 3.0, 1e-300, 6.02214076e23, std::numeric_limits<double>::max(),
+                             -std::numeric_limits<double>::denorm_min()}) {
+    const std::string text = format_time(value);
+    EXPECT_EQ(text.find_first_of("eE"), std::string::npos) << text;
+    EXPECT_EQ(parse_double(text), value) << text;
+  }
+}
+
 TEST(CsvQuoteIfNeeded, RoundTripsThroughSplitLine) {
   EXPECT_EQ(quote_if_needed("ball"), "ball");
   EXPECT_EQ(quote_if_needed("a,b"), "\"a,b\"");

@@ -89,6 +89,12 @@ TEST(EstimateCsvFormat, RowUsesShortestNumbersModeAndStandardDeviations) {
   estimate.t = 1.0 / 3.0;
   write_estimate_row(third, estimate, kEpsilonSafe);
   EXPECT_EQ(split_row(third.str())[0], "0.3333333333333333");
+
+  // A whole-second epoch stamp keeps its digits, as the next frame's does.
+  std::ostringstream stamped;
+  estimate.t = 1600000000.0;
+  write_estimate_row(stamped, estimate, kEpsilonSafe);
+  EXPECT_EQ(split_row(stamped.str())[0], "1600000000");
 }
 
 TEST(EstimateCsvFormat, CovarianceColumnsAreTheUpperTriangleOnRequest) {
