@@ -13,7 +13,9 @@ opf="${OPF:-$repo/build/bin/opf}"
 out="$(mkdir -p "$1" && cd "$1" && pwd)"
 source "$repo/scripts/output_folder_guard.sh"
 sweep_logs=()
-for sweep in "$repo"/notebooks/small_sweeps/*.yaml; do sweep_logs+=("sweep_$(basename "$sweep" .yaml).log"); done
+for sweep in "$repo"/notebooks/small_sweeps/*.yaml; do
+  sweep_logs+=("sweep_$(basename "$sweep" .yaml).log")
+done
 refuse_unless_made_here "$out" .made-by-make_small_results results sweeps dynamics_ablation \
   general_op.log sugar_drop.log dynamics_ablation.log "${sweep_logs[@]}"
 rm -rf "$out/results" "$out/sweeps" "$out/dynamics_ablation"  # sweeps resume: start from nothing

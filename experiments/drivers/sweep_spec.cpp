@@ -23,6 +23,12 @@ namespace {
 
 constexpr auto kKey = InputError::FieldKind::kKey;
 
+// A path a sweep file names: absolute, or relative to the sweep file's folder.
+std::filesystem::path beside(const std::filesystem::path& sweep_file,
+                             const std::filesystem::path& path) {
+  return path.is_absolute() ? path : sweep_file.parent_path() / path;
+}
+
 // A bare name is a bundled experiment (experiments/<name>.yaml); anything with a slash or a
 // .yaml suffix is a path relative to the sweep file.
 std::filesystem::path resolve_experiment(const std::string& entry,
@@ -30,8 +36,7 @@ std::filesystem::path resolve_experiment(const std::string& entry,
   const bool is_path =
       entry.find('/') != std::string::npos || std::filesystem::path(entry).extension() == ".yaml";
   if (!is_path) return bundled_experiments() / (entry + ".yaml");
-  const std::filesystem::path path(entry);
-  return path.is_absolute() ? path : sweep_file.parent_path() / path;
+  return beside(sweep_file, entry);
 }
 
 std::string scalar_text(const YAML::Node& node, const std::string& source, std::size_t line,
@@ -209,8 +214,8 @@ std::map<std::string, int> read_experiments(YamlReader& reader,
   return experiment_frames;
 }
 
-std::vector<std::string> read_estimators(YamlReader& reader,
-                                         const std::vector<std::string>& estimators) {
+/// Every estimator registered, none twice.
+void check_estimators(YamlReader& reader, const std::vector<std::string>& estimators) {
   const std::vector<std::string> known = estimator_names();
   for (const std::string& name : estimators)
     if (std::find(known.begin(), known.end(), name) == known.end())
@@ -219,7 +224,6 @@ std::vector<std::string> read_estimators(YamlReader& reader,
     if (std::find(estimators.begin(), estimators.begin() + i, estimators[i]) !=
         estimators.begin() + i)
       reader.fail("estimators", "estimator '" + estimators[i] + "' appears twice");
-  return estimators;
 }
 
 /// seeds, seed, particles and frames (at most every experiment's own count).
@@ -253,8 +257,7 @@ std::optional<std::filesystem::path> read_config(YamlReader& reader,
   if (!reader.has_key("config")) return std::nullopt;
   std::string config;
   reader.get("config", config);
-  std::filesystem::path path(config);
-  if (!path.is_absolute()) path = file.parent_path() / path;
+  const std::filesystem::path path = beside(file, config);
   if (!names_regular_file(path))
     reader.fail("config", "no estimator settings file " + path.string());
   load_estimator_settings(path);  // its own errors name its lines
@@ -321,7 +324,8 @@ SweepSpec parse_sweep(const std::string& text, const std::filesystem::path& file
   if (experiments.empty()) reader.fail("experiments", "missing: which experiments to run");
   if (estimators.empty()) reader.fail("estimators", "missing: which estimators to run");
   const std::map<std::string, int> experiment_frames = read_experiments(reader, experiments, spec);
-  spec.estimators = read_estimators(reader, estimators);
+  check_estimators(reader, estimators);
+  spec.estimators = estimators;
   read_run_size(reader, experiment_frames, spec);
   spec.config = read_config(reader, file);
   spec.variants = read_variants(reader, source);
