@@ -6,6 +6,7 @@
 #include "opf/io/estimator_settings_yaml.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <thread>
 #include <vector>
@@ -108,6 +109,23 @@ void require_known_estimators(const std::string& option, const std::vector<std::
 
 std::uint64_t seed_from(const Arguments& args) {
   return args.get_count("seed").value_or(kDefaultSeed);
+}
+
+std::size_t seeds_from(const Arguments& args, std::size_t runs_per_seed) {
+  const unsigned long long seeds = args.get_count("seeds").value_or(5);
+  if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
+  const std::size_t per_seed = std::max<std::size_t>(runs_per_seed, 1);
+  if (seeds > kMaxRunsPerCommand / per_seed)
+    throw UsageError{"option '--seeds' must be at most " +
+                     std::to_string(kMaxRunsPerCommand / per_seed) + " here (" +
+                     std::to_string(per_seed) + (per_seed == 1 ? " run" : " runs") +
+                     " a seed, at most " + std::to_string(kMaxRunsPerCommand) +
+                     " runs a command), got " + std::to_string(seeds)};
+  const unsigned long long first = args.get_count("first-seed").value_or(0);
+  if (first > std::numeric_limits<std::uint64_t>::max() - seeds)
+    throw UsageError{"option '--first-seed' must leave room for " + std::to_string(seeds) +
+                     " seeds below 2^64, got " + std::to_string(first)};
+  return static_cast<std::size_t>(seeds);
 }
 
 }  // namespace opf::cli

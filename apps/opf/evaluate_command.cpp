@@ -43,7 +43,8 @@ std::vector<OptionSpec> specs() {
       {"truth", "TRUTH.csv",
        "ground truth: a log in the same units and columns with every object at every frame"},
       {"estimators", "A,B,...", "estimators to compare (default: all registered)"},
-      {"seeds", "N", "runs per estimator, seeds derived from --seed (default 5)"},
+      {"seeds", "N",
+       "runs per estimator, seeds derived from --seed (default 5; 100000 runs at most)"},
       {"out", "FILE.csv|FILE.json",
        "also write the tables: a row per estimator (csv), or with the provenance (json)"},
       {"hidden-profile", "FILE.csv",
@@ -372,8 +373,7 @@ EvaluateRequest evaluate_request(const Arguments& args) {
                              {{"--in", r.in}, {"--truth", r.truth_path}, {"--config", config}});
   refuse_output_over_input({"--hidden-profile", args.get("hidden-profile").value_or("")},
                            {{"--out", args.get("out").value_or("")}});
-  r.seeds = args.get_count("seeds").value_or(5);
-  if (r.seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
+  r.seeds = seeds_from(args, r.names.size());
   r.settings = settings_from(args);
   require_camera_for_line_of_sight(r.settings);
   r.base_seed = seed_from(args);

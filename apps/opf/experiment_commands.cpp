@@ -29,7 +29,8 @@ namespace {
 std::vector<OptionSpec> specs(bool reproduce) {
   std::vector<OptionSpec> s = {
       {"estimators", "A,B,...", "estimators to compare (default: all registered)"},
-      {"seeds", "N", "runs per estimator, each with its own sensor noise (default 5)"},
+      {"seeds", "N",
+       "runs per estimator, each with its own sensor noise (default 5; 100000 runs at most)"},
       {"out", "DIR",
        reproduce ? "where results go (default: results)"
                  : "where results go (default: results/<experiment name>)"},
@@ -71,8 +72,7 @@ int run_experiments(const std::vector<std::string>& paths, const Arguments& args
   const auto names =
       args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
   require_known_estimators("estimators", names);  // before any rendering
-  const std::size_t seeds = args.get_count("seeds").value_or(5);
-  if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
+  const std::size_t seeds = seeds_from(args, names.size() * paths.size());
   settings_from(args);  // a bad --config fails before any rendering
   const std::uint64_t seed = seed_from(args);
   const std::size_t threads = threads_from(args);

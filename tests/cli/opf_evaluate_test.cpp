@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -70,6 +71,27 @@ TEST_F(OpfProgram, EvaluateRefusesABadAlertDistanceOrProfileName) {
   EXPECT_NE(err().find("--alert-distance"), std::string::npos) << err();
   EXPECT_EQ(run("evaluate --seeds 1 --estimators cvkf --hidden-profile p.txt"), 2);
   EXPECT_NE(err().find("--hidden-profile"), std::string::npos) << err();
+}
+
+// A mistyped --seeds would run for years: a command makes at most 100 000 runs, seeds times the
+// estimators (times the experiments), and the last seed's index fits in 64 bits.
+TEST_F(OpfProgram, SeedsAreBoundedByTheRunsTheyMake) {
+  EXPECT_EQ(run("evaluate --estimators cvkf,pf --seeds 50001"), 2);
+  EXPECT_NE(err().find("'--seeds' must be at most 50000 here (2 runs a seed, at most 100000 runs "
+                       "a command), got 50001"),
+            std::string::npos)
+      << err();
+  EXPECT_EQ(run("evaluate --estimators cvkf --seeds 0"), 2);
+  EXPECT_NE(err().find("'--seeds' must be at least 1"), std::string::npos) << err();
+  const std::string experiment = std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml";
+  const std::string out = " --out " + (dir_ / "results").string();
+  EXPECT_EQ(run("run " + experiment + out + " --estimators opf,pf,cvkf --seeds 33334"), 2);
+  EXPECT_NE(err().find("'--seeds' must be at most 33333 here (3 runs a seed"), std::string::npos)
+      << err();
+  EXPECT_EQ(run("run " + experiment + out + " --seeds 2 --first-seed 18446744073709551614"), 2);
+  EXPECT_NE(err().find("'--first-seed' must leave room for 2 seeds below 2^64"), std::string::npos)
+      << err();
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "results"));
 }
 
 TEST_F(OpfProgram, EvaluateWarnsAsTrackDoesWhenTheOpfHasNoCamera) {
