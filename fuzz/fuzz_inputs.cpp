@@ -62,9 +62,16 @@ void read_both_ways(const std::string& text, const LogReadOptions& options) {
   }
 }
 
+// A name the result files can carry: not empty, within sim::kMaxNameLength, no '/' and not
+// "." or "..".
+bool file_name_word(const std::string& name) {
+  return !name.empty() && name.size() <= sim::kMaxNameLength &&
+         name.find('/') == std::string::npos && name != "." && name != "..";
+}
+
 // What the experiment reader accepts can be run: frames to step at most 10 s apart, a detector
 // noise within kMaxNoise, tracked bodies of a colour the camera can segment and no other body of
-// their hue, and waypoints within 1e6 m and in time order.
+// their hue, waypoints within 1e6 m and in time order, and names the result files can carry.
 void check_experiment(const sim::ExperimentConfig& config) {
   if (config.frames < 1) fail("an experiment of no frames was accepted");
   if (!(config.rate >= kMinFrameRate)) fail("frames more than 10 s apart");
@@ -72,7 +79,9 @@ void check_experiment(const sim::ExperimentConfig& config) {
       !(config.measurement.orientation_noise <= kMaxNoise))
     fail("a detector noise past 1e6");
   if (config.bodies.empty() || config.objects_of_interest.empty()) fail("nothing to track");
+  if (!file_name_word(config.name)) fail("an experiment name that is not a file name");
   for (const sim::ScriptedBody& body : config.bodies) {
+    if (!file_name_word(body.body.name)) fail("a body name that is not a file name");
     if (body.waypoints.empty()) fail("a body without waypoints");
     if (body.body.tracked && !sim::segmentable(body.body.colour))
       fail("a tracked body the camera cannot segment");
@@ -144,14 +153,16 @@ void check_sweep(const experiments::SweepSpec& spec) {
 
 }  // namespace
 
-// Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes.
+// Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes, an ASL CSV.
 void measurement_log(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   read_both_ways(text, {});
-  LogReadOptions tum;
-  tum.format = LogFormat::kTum;
-  tum.object = "fuzz";
-  read_both_ways(text, tum);
+  for (const LogFormat one_object : {LogFormat::kTum, LogFormat::kEuroc}) {
+    LogReadOptions options;
+    options.format = one_object;
+    options.object = "fuzz";
+    read_both_ways(text, options);
+  }
   LogReadOptions boxes;
   boxes.format = LogFormat::kMot;
   boxes.rate = 30.0;

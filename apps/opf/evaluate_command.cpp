@@ -391,8 +391,8 @@ EvaluateRequest evaluate_request(const Arguments& args) {
 TruthTable read_truth(const Arguments& args, const std::string& truth_path,
                       const MeasurementLog& log) {
   LogReadOptions truth_options = log_options_from(args, truth_path);
-  // A TUM truth of the log's one object is that object's, whatever the two files are called.
-  if (truth_options.format == LogFormat::kTum && !args.has("object") && log.objects.size() == 1)
+  // A TUM or ASL truth of the log's one object is that object's, whatever the files are called.
+  if (is_one_object_format(truth_options.format) && !args.has("object") && log.objects.size() == 1)
     truth_options.object = log.objects.front();
   truth_options.fill_gaps = false;
   truth_options.rate.reset();

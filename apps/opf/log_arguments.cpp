@@ -24,13 +24,14 @@ std::string program_name(std::string_view option) {
 
 std::vector<OptionSpec> log_option_specs() {
   return {
-      {"format", "csv|tum|mot",
-       "the log's format (default: TUM for a file starting with a '#' line, named *.tum, or *.txt "
-       "with eight numbers per line; MOTChallenge boxes for a *.txt of comma-separated numbers; "
-       "CSV otherwise)"},
+      {"format", "csv|tum|mot|euroc",
+       "the log's format (default: for a file starting with a '#' line, EuRoC's ASL CSV if its "
+       "first other line is comma-separated numbers, else TUM; TUM for *.tum, or *.txt with "
+       "eight numbers per line; MOTChallenge boxes for a *.txt of comma-separated numbers; CSV "
+       "otherwise)"},
       {"object", "NAME",
-       "the object of a log of one object without an object column (default for a TUM file: "
-       "its name without the extension)"},
+       "the object of a log of one object without an object column (default for a TUM or ASL "
+       "file: its name without the extension)"},
       {"time-unit", "s|ms|us|ns",
        "unit of the log's t (default s; a log whose times cannot be seconds is refused)"},
       {"length-unit", "m|mm",

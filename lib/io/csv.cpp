@@ -198,6 +198,7 @@ Reader::Reader(std::istream& in, std::string source, Headerless format)
       source_(std::move(source)),
       header_(std::move(format.columns)),
       whitespace_separated_(format.whitespace_separated),
+      comments_(format.comments || format.whitespace_separated),
       headerless_(true) {}
 
 std::size_t Reader::column(std::string_view name) const {
@@ -215,9 +216,12 @@ bool Reader::next() {
     fail("expected " + std::to_string(header_.size()) + " fields separated by spaces (" + names +
          "), got " + std::to_string(fields_.size()));
   }
-  if (headerless_ && !whitespace_separated_ && fields_.size() < header_.size())
-    fail("expected at least " + std::to_string(header_.size()) + " fields, got " +
-         std::to_string(fields_.size()));
+  if (headerless_ && !whitespace_separated_ && fields_.size() < header_.size()) {
+    std::string names;
+    for (const auto& name : header_) names += (names.empty() ? "" : ", ") + name;
+    fail("expected at least " + std::to_string(header_.size()) + " fields separated by commas (" +
+         names + "), got " + std::to_string(fields_.size()));
+  }
   if (fields_.size() != header_.size() && !(headerless_ && !whitespace_separated_))
     fail("expected " + std::to_string(header_.size()) + " fields as in the header (line " +
          std::to_string(header_line_) + "), got " + std::to_string(fields_.size()));
@@ -260,8 +264,8 @@ bool Reader::read_line(std::vector<std::string>& fields) {
     refuse_control_bytes(view, source_, lines_read_);
     if (trim(view).empty()) continue;
     line_ = lines_read_;
+    if (comments_ && trim(view).starts_with('#')) continue;
     if (whitespace_separated_) {
-      if (trim(view).starts_with('#')) continue;
       fields = split_whitespace(view);
     } else {
       fields = split_line(view, source_, line_);

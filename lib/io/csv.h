@@ -55,6 +55,8 @@ class Reader {
   struct Headerless {
     std::vector<std::string> columns;
     bool whitespace_separated = true;
+    /// Lines starting with '#' are comments (always so when whitespace-separated).
+    bool comments = false;
   };
   Reader(std::istream& in, std::string source, Headerless format);
 
@@ -95,8 +97,9 @@ class Reader {
   std::vector<std::string> fields_;
   std::size_t line_ = 0;
   std::size_t lines_read_ = 0;
-  bool whitespace_separated_ = false;  // and '#' comments
-  bool headerless_ = false;            // more fields than named are allowed when comma-separated
+  bool whitespace_separated_ = false;
+  bool comments_ = false;    // lines starting with '#' skipped
+  bool headerless_ = false;  // more fields than named are allowed when comma-separated
 };
 
 }  // namespace opf::csv

@@ -122,7 +122,7 @@ void FrameAssembler::calibrate() {
   }
   object_interval_ = median(intervals);
 
-  if (!options_.time_unit && !pending_.empty()) {
+  if (!stated_time_unit(options_) && !pending_.empty()) {
     const LogRow& first = pending_.front();
     if (std::abs(first.t) > 1e11) {
       const TimeUnit unit = unit_of_epoch(std::abs(first.t));

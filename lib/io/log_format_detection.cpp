@@ -19,8 +19,9 @@ bool eight_numbers(std::string_view line) {
   return count == kTumColumns.size();
 }
 
-// MOTChallenge: frame, id, box and more, separated by commas, all numbers.
-bool box_row(std::string_view line) {
+// At least `count` numbers separated by commas: MOTChallenge's frame, id, box and more; an ASL
+// CSV's timestamp, position, quaternion and more.
+bool comma_separated_numbers(std::string_view line, std::size_t count) {
   std::vector<std::string> fields;
   try {
     fields = csv::split_line(line, "", 0);
@@ -29,18 +30,26 @@ bool box_row(std::string_view line) {
   }
   for (const std::string& field : fields)
     if (!csv::parse_double(field)) return false;
-  return fields.size() >= kMotColumns.size();
+  return fields.size() >= count;
+}
+
+bool starts_with_hash(std::string_view line) {
+  const std::size_t start = line.find_first_not_of(" \t");
+  return start != std::string_view::npos && line[start] == '#';
 }
 
 }  // namespace
 
-LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line) {
-  const std::size_t start = first_line.find_first_not_of(" \t");
-  if (start != std::string_view::npos && first_line[start] == '#') return LogFormat::kTum;
+LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line,
+                            std::string_view first_data_line) {
+  if (starts_with_hash(first_line))
+    return comma_separated_numbers(first_data_line, kEurocColumns.size()) ? LogFormat::kEuroc
+                                                                          : LogFormat::kTum;
   const std::filesystem::path extension = name.extension();
   if (extension == ".tum") return LogFormat::kTum;
   if (extension == ".txt" && eight_numbers(first_line)) return LogFormat::kTum;
-  if (extension == ".txt" && box_row(first_line)) return LogFormat::kMot;
+  if (extension == ".txt" && comma_separated_numbers(first_line, kMotColumns.size()))
+    return LogFormat::kMot;
   return LogFormat::kCsv;
 }
 
@@ -53,11 +62,18 @@ LogFormat detect_log_format(const std::filesystem::path& path) {
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
   std::istringstream lines(head);
-  std::string line;
-  while (std::getline(lines, line) && line.find_first_not_of(" \t\r") == std::string::npos) {
+  // The first non-blank line, and the first that is not a '#' comment either.
+  std::string first, data;
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos) continue;
+    if (first.empty()) first = line;
+    if (!starts_with_hash(line)) {
+      data = line;
+      break;
+    }
   }
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  return detect_log_format(path, line);
+  return detect_log_format(path, first, data);
 }
 
 }  // namespace opf

@@ -9,11 +9,13 @@
 
 namespace opf {
 
-/// kTum when `first_line` (the file's first non-blank line) starts with '#', or when the file
-/// name ends in .tum, or in .txt with a first line of eight numbers separated by spaces or tabs;
-/// kMot for a .txt whose first line is seven or more numbers separated by commas (gt.txt,
-/// det.txt); kCsv otherwise.
-LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line);
+/// When `first_line` (the file's first non-blank line) starts with '#': kEuroc if
+/// `first_data_line` (the first non-blank line not starting with '#') is eight or more numbers
+/// separated by commas, else kTum. Otherwise kTum when the file name ends in .tum, or in .txt with
+/// a first line of eight numbers separated by spaces or tabs; kMot for a .txt whose first line is
+/// seven or more numbers separated by commas (gt.txt, det.txt); kCsv otherwise.
+LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line,
+                            std::string_view first_data_line = {});
 
 /// The same for the file at `path`, its first line read; kCsv for what is not a regular file (a
 /// pipe is read once, so its first line cannot be looked at first).

@@ -37,21 +37,24 @@ void read_format(const LogArguments& a, const std::string& path, const OptionNam
                  LogReadOptions& options) {
   if (a.format) {
     const auto parsed = parse_log_format(*a.format);
-    if (!parsed) refuse(name("format"), ": expected csv, tum or mot, got \"" + *a.format + "\"");
+    if (!parsed)
+      refuse(name("format"), ": expected csv, tum, mot or euroc, got \"" + *a.format + "\"");
     options.format = *parsed;
   } else if (path != "-") {
     options.format = detect_log_format(path);
   }
   if (a.object && a.object->empty()) refuse(name("object"), " expects a name, got an empty one");
   options.object = a.object;
-  if (options.format == LogFormat::kTum && !options.object) {
+  if (is_one_object_format(options.format) && !options.object) {
     if (path == "-")
       throw std::invalid_argument(
-          "a TUM log on standard input needs its object's name: " + name("object") + " NAME");
+          std::string(options.format == LogFormat::kTum ? "a TUM" : "an ASL") +
+          " log on standard input needs its object's name: " + name("object") + " NAME");
     options.object = std::filesystem::path(path).stem().string();
   }
   if (options.format != LogFormat::kCsv && a.columns)
-    refuse(name("columns"), " renames CSV columns; a TUM or MOTChallenge file has none");
+    refuse(name("columns"),
+           " renames CSV columns; a TUM, MOTChallenge or ASL file's columns are its format's");
   if (options.format != LogFormat::kMot) return;
   for (const auto& [given, option] : {std::pair{a.object.has_value(), "object"},
                                       {a.time_unit.has_value(), "time_unit"},

@@ -45,6 +45,13 @@ std::optional<LogFormat> parse_log_format(std::string_view name) {
   if (name == "csv") return LogFormat::kCsv;
   if (name == "tum") return LogFormat::kTum;
   if (name == "mot") return LogFormat::kMot;
+  if (name == "euroc") return LogFormat::kEuroc;
+  return std::nullopt;
+}
+
+std::optional<TimeUnit> stated_time_unit(const LogReadOptions& options) {
+  if (options.time_unit) return options.time_unit;
+  if (options.format == LogFormat::kEuroc) return TimeUnit::kNanoseconds;
   return std::nullopt;
 }
 

@@ -30,10 +30,24 @@ inline constexpr std::array<std::string_view, 3> kBoxColumns = {"box_x", "box_y"
 /// tabs, '#' starting a comment line; one object. kMot: MOTChallenge's 2-D boxes
 /// (kMotColumns and more, no header; gt.txt, det.txt and trackers' results): each box becomes
 /// the pose of its bottom centre in the image plane (kMetresPerPixel), the track id its object.
-enum class LogFormat { kCsv, kTum, kMot };
+/// kEuroc: the ASL CSV of the EuRoC and TUM VI datasets' ground truth and motion capture
+/// (state_groundtruth_estimate0, vicon0, mocap0; Kalibr and OpenVINS write it too): '#' header
+/// lines, then "timestamp, p_x, p_y, p_z, q_w, q_x, q_y, q_z" and any further columns, separated
+/// by commas, the timestamp in nanoseconds and the quaternion w first; one object.
+enum class LogFormat { kCsv, kTum, kMot, kEuroc };
 /// The fields of a kTum line, in order.
 inline constexpr std::array<std::string_view, 8> kTumColumns = {"timestamp", "tx", "ty", "tz",
                                                                 "qx",        "qy", "qz", "qw"};
+
+/// The first fields of a kEuroc line, in order (its header's names vary: they are not read).
+inline constexpr std::array<std::string_view, 8> kEurocColumns = {"timestamp", "p_x", "p_y", "p_z",
+                                                                  "q_w",       "q_x", "q_y", "q_z"};
+
+/// Whether a format holds one object's poses (kTum, kEuroc): the object is named after the file,
+/// or by LogReadOptions::object.
+constexpr bool is_one_object_format(LogFormat format) {
+  return format == LogFormat::kTum || format == LogFormat::kEuroc;
+}
 
 /// The first fields of a kMot line, in order.
 inline constexpr std::array<std::string_view, 7> kMotColumns = {
@@ -46,8 +60,8 @@ enum class LengthUnit { kMetres, kMillimetres };
 
 struct LogReadOptions {
   LogFormat format = LogFormat::kCsv;
-  /// The one object every row is of, for a log without an object column (required for kTum; with
-  /// kCsv, the file then must have no object column).
+  /// The one object every row is of, for a log without an object column (required for kTum and
+  /// kEuroc; with kCsv, the file then must have no object column).
   std::optional<std::string> object;
   /// The unit of t. Unset: seconds, and a log whose times cannot be seconds (one object detected
   /// less often than every 10 s, or epoch-like values past the year 5000) is refused with the unit
@@ -85,7 +99,7 @@ inline constexpr double kMaxFilledGap = 10.0;
 /// is not a frame rate (and would fill without bound).
 inline constexpr double kMaxFilledFrames = 1e5;
 
-/// "csv", "tum", "mot": the names of --format.
+/// "csv", "tum", "mot", "euroc": the names of --format.
 std::optional<LogFormat> parse_log_format(std::string_view name);
 
 /// "s", "ms", "us", "ns" and "m", "mm": the names the command line and the settings file use.
@@ -96,6 +110,10 @@ std::string_view to_string(LengthUnit unit);
 /// Seconds per unit, metres per unit.
 double seconds_per(TimeUnit unit);
 double metres_per(LengthUnit unit);
+
+/// The unit of t as stated: options.time_unit, else nanoseconds for kEuroc (its format's), else
+/// none (seconds, checked for plausibility).
+std::optional<TimeUnit> stated_time_unit(const LogReadOptions& options);
 
 /// The file's name of the canonical column `canonical` under `options.columns`.
 std::string mapped_column(const LogReadOptions& options, std::string_view canonical);

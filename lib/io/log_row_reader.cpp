@@ -30,6 +30,15 @@ std::array<std::string, 9> file_names(const LogReadOptions& options) {
     for (std::size_t i = 1; i < kTumColumns.size(); ++i) names[i + 1] = kTumColumns[i];
     return names;
   }
+  if (options.format == LogFormat::kEuroc) {  // t, -, p_x, p_y, p_z, q_x, q_y, q_z, q_w
+    const auto& c = kEurocColumns;
+    names = {std::string(c[0]), "",
+             std::string(c[1]), std::string(c[2]),
+             std::string(c[3]), std::string(c[5]),
+             std::string(c[6]), std::string(c[7]),
+             std::string(c[4])};
+    return names;
+  }
   for (std::size_t i = 0; i < kLogColumns.size(); ++i)
     names[i] = mapped_column(options, kLogColumns[i]);
   if (options.object) names[1].clear();
@@ -44,6 +53,10 @@ csv::Reader open_reader(std::istream& in, const std::string& source, const LogRe
   if (options.format == LogFormat::kTum)
     return csv::Reader(in, source,
                        csv::Reader::Headerless{{kTumColumns.begin(), kTumColumns.end()}});
+  if (options.format == LogFormat::kEuroc)
+    return csv::Reader(
+        in, source,
+        csv::Reader::Headerless{{kEurocColumns.begin(), kEurocColumns.end()}, false, true});
   std::vector<std::string_view> required;
   for (const std::string& name : names)
     if (!name.empty()) required.push_back(name);
@@ -57,7 +70,7 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
     : names_(file_names(options)),
       reader_(open_reader(in, source, options, names_)),
       object_(options.object.value_or("")),
-      seconds_per_unit_(options.time_unit ? seconds_per(*options.time_unit) : 1.0),
+      seconds_per_unit_(stated_time_unit(options) ? seconds_per(*stated_time_unit(options)) : 1.0),
       metres_per_unit_(options.length_unit ? metres_per(*options.length_unit) : 1.0) {
   if (options.format == LogFormat::kMot) {
     if (!options.rate)

@@ -9,6 +9,7 @@
 #include "opf/sim/colour_blob_detector.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -30,6 +31,24 @@ Colour colour(YamlReader& yaml) {
     yaml.require("colour", c >= 0 && c <= 255 && c == std::floor(c), "integers from 0 to 255");
   return {static_cast<std::uint8_t>(v[0]), static_cast<std::uint8_t>(v[1]),
           static_cast<std::uint8_t>(v[2])};
+}
+
+// An experiment's and a body's names name the result files (`<experiment>_frames.csv`,
+// `<experiment>_<body>_translation_error.png`) and `opf run`'s default folder, so each must be a
+// file name on any system, read before a run rather than failing its last write: a word of
+// letters, digits, '_', '-' and '.', not starting with '.' or '-', at most kMaxNameLength long.
+void require_file_name_word(YamlReader& yaml, std::string_view key, const std::string& name,
+                            std::string_view what) {
+  const auto allowed = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-' || c == '.';
+  };
+  const bool ok = !name.empty() && name.size() <= kMaxNameLength && name.front() != '.' &&
+                  name.front() != '-' && std::all_of(name.begin(), name.end(), allowed);
+  if (!ok)
+    yaml.fail(key, "expected " + std::string(what) + " of 1 to " + std::to_string(kMaxNameLength) +
+                       " letters, digits, '_', '-' or '.', not starting with '.' or '-' (it names "
+                       "the result files), got \"" +
+                       (name.size() <= kMaxNameLength ? name : name.substr(0, 40) + "...") + "\"");
 }
 
 Shape shape(YamlReader& yaml) {
@@ -56,7 +75,7 @@ Eigen::Vector3d size(YamlReader& yaml, Shape s) {
 ScriptedBody body(YamlReader& yaml) {
   ScriptedBody b;
   yaml.get("name", b.body.name);
-  if (b.body.name.empty()) yaml.fail("name", "expected a body name");
+  require_file_name_word(yaml, "name", b.body.name, "a body name");
   b.body.shape = shape(yaml);
   b.body.size = size(yaml, b.body.shape);
   b.body.colour = colour(yaml);
@@ -251,6 +270,7 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   YamlReader yaml = YamlReader::parse(yaml_text, source);
   ExperimentConfig config;
   yaml.get("name", config.name);
+  require_file_name_word(yaml, "name", config.name, "the experiment's name");
   yaml.get_positive("rate", config.rate);
   // As a log's (io/log_read_options.h): frames further apart are not a tracking run, and a rate
   // near zero makes the frame interval overflow.

@@ -75,7 +75,13 @@ enum class SensorKind { kCamera, kMotionCapture };
 inline constexpr EnumNames<SensorKind, 2> kSensorKindNames = {
     {{SensorKind::kCamera, "camera"}, {SensorKind::kMotionCapture, "motion_capture"}}};
 
+/// The longest experiment or body name (characters): two of them and the longest suffix a
+/// result file adds stay far within a file name's 255 bytes.
+inline constexpr std::size_t kMaxNameLength = 64;
+
 struct ExperimentConfig {
+  /// Names the result files and `opf run`'s default folder: 1 to kMaxNameLength letters, digits,
+  /// '_', '-' and '.', not starting with '.' or '-' (as every body's name).
   std::string name;
   SensorKind sensor = SensorKind::kCamera;
   std::vector<Dropout> dropouts;  ///< motion capture only

@@ -58,10 +58,27 @@ TEST(LogReadArguments, ATumFileIsOneObjectNamedAfterIt) {
   EXPECT_EQ(options.object, "groundtruth");
   tum.columns = "qx=rx";
   EXPECT_EQ(refusal(tum, python_name, "g.txt"),
-            "option 'columns' renames CSV columns; a TUM or MOTChallenge file has none");
+            "option 'columns' renames CSV columns; a TUM, MOTChallenge or ASL file's columns are "
+            "its format's");
   tum.columns.reset();
   EXPECT_NE(refusal(tum, program_name, "-").find("needs its object's name: --object NAME"),
             std::string::npos);
+}
+
+TEST(LogReadArguments, AnAslFileIsOneObjectNamedAfterItTimedInNanoseconds) {
+  LogArguments asl;
+  asl.format = "euroc";
+  const LogReadOptions options = log_read_options(asl, "mocap0/vicon.csv", program_name);
+  EXPECT_EQ(options.format, LogFormat::kEuroc);
+  EXPECT_EQ(options.object, "vicon");
+  EXPECT_EQ(stated_time_unit(options), TimeUnit::kNanoseconds);
+  EXPECT_NE(refusal(asl, program_name, "-")
+                .find("an ASL log on standard input needs its "
+                      "object's name: --object NAME"),
+            std::string::npos);
+  asl.format = "kml";
+  EXPECT_EQ(refusal(asl, program_name, "a.csv"),
+            "option '--format': expected csv, tum, mot or euroc, got \"kml\"");
 }
 
 TEST(LogReadArguments, AMotChallengeFileTakesItsSequencesFrameRate) {

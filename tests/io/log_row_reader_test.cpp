@@ -89,7 +89,10 @@ TEST(MotLog, BoxesWithoutAnIdOrASizeAreRefusedByField) {
   e = parse_error("0,2,10,20,4,8,0.9,-1,-1,-1\n", boxes(30.0));
   EXPECT_EQ(e.field(), "frame");
   e = parse_error("1,2,10,20,4,8\n", boxes(30.0));
-  EXPECT_NE(e.message().find("expected at least 7 fields, got 6"), std::string::npos);
+  EXPECT_NE(e.message().find("expected at least 7 fields separated by commas (frame, id, bb_left, "
+                             "bb_top, bb_width, bb_height, conf), got 6"),
+            std::string::npos)
+      << e.message();
   LogReadOptions no_rate = boxes(30.0);
   no_rate.rate.reset();
   EXPECT_THROW(parse("1,2,10,20,4,8,1,1,1\n", no_rate), std::invalid_argument);

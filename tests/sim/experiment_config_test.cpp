@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace opf::sim {
 namespace {
@@ -196,6 +197,35 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
   EXPECT_EQ(e.field(), "paper_preset_config");
   EXPECT_EQ(e.line(), 10u);
   EXPECT_NE(std::string(e.what()).find("no file nowhere.yaml"), std::string::npos) << e.what();
+}
+
+// The names name the result files: a name no file can carry (a '/', nothing, 300 characters)
+// failed the run at its last write, after every seed had run; now the reader refuses it at its
+// line, and a name in the files' alphabet of up to 64 characters is taken.
+TEST(ExperimentConfig, NamesAreFileNames) {
+  for (const std::string& name : std::vector<std::string>{"a/b", "\"\"", "..", ".hidden", "-x",
+                                                          "two words", std::string(65, 'a')}) {
+    std::string bad = kMinimal;
+    bad.replace(bad.find("name: tiny"), 10, "name: " + name);
+    const InputError e = error_of(bad);
+    EXPECT_EQ(e.field(), "name") << name;
+    EXPECT_EQ(e.line(), 1u) << name;
+    EXPECT_NE(std::string(e.what()).find("expected the experiment's name of 1 to 64 letters"),
+              std::string::npos)
+        << e.what();
+    bad = kMinimal;
+    bad.replace(bad.find("name: ball"), 10, "name: " + name);
+    const InputError body = error_of(bad);
+    EXPECT_EQ(body.field(), "bodies[0].name") << name;
+    EXPECT_EQ(body.line(), 5u) << name;
+  }
+  std::string missing = kMinimal;
+  missing.erase(0, missing.find('\n') + 1);
+  EXPECT_EQ(error_of(missing).field(), "name");
+  std::string good = kMinimal;
+  const std::string longest = "v1.0-" + std::string(59, 'b');
+  good.replace(good.find("name: tiny"), 10, "name: " + longest);
+  EXPECT_EQ(parse_experiment(good, "tiny.yaml").name, longest);
 }
 
 // The default preset is one set of settings for every experiment: a file that would change it
