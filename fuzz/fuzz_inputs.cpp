@@ -153,7 +153,8 @@ void check_sweep(const experiments::SweepSpec& spec) {
 
 }  // namespace
 
-// Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes, an ASL CSV.
+// Every format reads the same bytes: the CSV, a TUM trajectory, MOTChallenge boxes, an ASL CSV,
+// KITTI tracking labels.
 void measurement_log(const std::uint8_t* data, std::size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   read_both_ways(text, {});
@@ -163,10 +164,12 @@ void measurement_log(const std::uint8_t* data, std::size_t size) {
     options.object = "fuzz";
     read_both_ways(text, options);
   }
-  LogReadOptions boxes;
-  boxes.format = LogFormat::kMot;
-  boxes.rate = 30.0;
-  read_both_ways(text, boxes);
+  for (const LogFormat framed : {LogFormat::kMot, LogFormat::kKitti}) {
+    LogReadOptions boxes;
+    boxes.format = framed;
+    boxes.rate = 30.0;
+    read_both_ways(text, boxes);
+  }
 }
 
 void estimator_settings(const std::uint8_t* data, std::size_t size) {

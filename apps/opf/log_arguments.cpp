@@ -24,11 +24,11 @@ std::string program_name(std::string_view option) {
 
 std::vector<OptionSpec> log_option_specs() {
   return {
-      {"format", "csv|tum|mot|euroc",
+      {"format", "csv|tum|mot|euroc|kitti",
        "the log's format (default: for a file starting with a '#' line, EuRoC's ASL CSV if its "
        "first other line is comma-separated numbers, else TUM; TUM for *.tum, or *.txt with "
-       "eight numbers per line; MOTChallenge boxes for a *.txt of comma-separated numbers; CSV "
-       "otherwise)"},
+       "eight numbers per line; MOTChallenge boxes for a *.txt of comma-separated numbers; KITTI "
+       "tracking labels for a *.txt of them; CSV otherwise)"},
       {"object", "NAME",
        "the object of a log of one object without an object column (default for a TUM or ASL "
        "file: its name without the extension)"},
@@ -41,7 +41,9 @@ std::vector<OptionSpec> log_option_specs() {
       {"frame-tolerance", "S",
        "rows this close in time (s) form one frame (default: a quarter of the lower quartile of "
        "the intervals between one object's detections; 0: equal times only)"},
-      {"rate", "HZ", "frame rate at which gaps in the log are filled (default: inferred from it)"},
+      {"rate", "HZ",
+       "frame rate at which gaps in the log are filled (default: inferred from it); a MOTChallenge "
+       "or KITTI file's frame numbers are timed by it"},
       {"no-fill", "", "keep only the log's frames: no estimates inside gaps"},
   };
 }

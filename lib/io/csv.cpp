@@ -199,7 +199,8 @@ Reader::Reader(std::istream& in, std::string source, Headerless format)
       header_(std::move(format.columns)),
       whitespace_separated_(format.whitespace_separated),
       comments_(format.comments || format.whitespace_separated),
-      headerless_(true) {}
+      headerless_(true),
+      optional_fields_(format.optional_fields) {}
 
 std::size_t Reader::column(std::string_view name) const {
   const auto it = std::find(header_.begin(), header_.end(), name);
@@ -210,11 +211,14 @@ std::size_t Reader::column(std::string_view name) const {
 
 bool Reader::next() {
   if (!read_line(fields_)) return false;
-  if (whitespace_separated_ && fields_.size() != header_.size()) {
+  if (whitespace_separated_ &&
+      (fields_.size() < header_.size() || fields_.size() > header_.size() + optional_fields_)) {
     std::string names;
     for (const auto& name : header_) names += (names.empty() ? "" : " ") + name;
-    fail("expected " + std::to_string(header_.size()) + " fields separated by spaces (" + names +
-         "), got " + std::to_string(fields_.size()));
+    const std::string most =
+        optional_fields_ > 0 ? " to " + std::to_string(header_.size() + optional_fields_) : "";
+    fail("expected " + std::to_string(header_.size()) + most + " fields separated by spaces (" +
+         names + "), got " + std::to_string(fields_.size()));
   }
   if (headerless_ && !whitespace_separated_ && fields_.size() < header_.size()) {
     std::string names;
@@ -222,7 +226,7 @@ bool Reader::next() {
     fail("expected at least " + std::to_string(header_.size()) + " fields separated by commas (" +
          names + "), got " + std::to_string(fields_.size()));
   }
-  if (fields_.size() != header_.size() && !(headerless_ && !whitespace_separated_))
+  if (fields_.size() != header_.size() && !headerless_)
     fail("expected " + std::to_string(header_.size()) + " fields as in the header (line " +
          std::to_string(header_line_) + "), got " + std::to_string(fields_.size()));
   return true;

@@ -57,6 +57,8 @@ class Reader {
     bool whitespace_separated = true;
     /// Lines starting with '#' are comments (always so when whitespace-separated).
     bool comments = false;
+    /// Whitespace-separated: this many further fields may follow the named ones (a score).
+    std::size_t optional_fields = 0;
   };
   Reader(std::istream& in, std::string source, Headerless format);
 
@@ -98,8 +100,9 @@ class Reader {
   std::size_t line_ = 0;
   std::size_t lines_read_ = 0;
   bool whitespace_separated_ = false;
-  bool comments_ = false;    // lines starting with '#' skipped
-  bool headerless_ = false;  // more fields than named are allowed when comma-separated
+  bool comments_ = false;            // lines starting with '#' skipped
+  bool headerless_ = false;          // more fields than named are allowed when comma-separated
+  std::size_t optional_fields_ = 0;  // whitespace-separated: further fields allowed
 };
 
 }  // namespace opf::csv

@@ -33,6 +33,18 @@ bool comma_separated_numbers(std::string_view line, std::size_t count) {
   return fields.size() >= count;
 }
 
+// KITTI tracking: frame, track id, a type word, then numbers: 17 fields, or 18 with a score.
+bool kitti_row(std::string_view line) {
+  std::istringstream in{std::string(line)};
+  std::vector<std::string> fields;
+  for (std::string field; in >> field;) fields.push_back(field);
+  if (fields.size() != kKittiColumns.size() && fields.size() != kKittiColumns.size() + 1)
+    return false;
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (csv::parse_double(fields[i]).has_value() == (i == 2)) return false;
+  return true;
+}
+
 bool starts_with_hash(std::string_view line) {
   const std::size_t start = line.find_first_not_of(" \t");
   return start != std::string_view::npos && line[start] == '#';
@@ -48,6 +60,7 @@ LogFormat detect_log_format(const std::filesystem::path& name, std::string_view 
   const std::filesystem::path extension = name.extension();
   if (extension == ".tum") return LogFormat::kTum;
   if (extension == ".txt" && eight_numbers(first_line)) return LogFormat::kTum;
+  if (extension == ".txt" && kitti_row(first_line)) return LogFormat::kKitti;
   if (extension == ".txt" && comma_separated_numbers(first_line, kMotColumns.size()))
     return LogFormat::kMot;
   return LogFormat::kCsv;

@@ -13,7 +13,9 @@ namespace opf {
 /// `first_data_line` (the first non-blank line not starting with '#') is eight or more numbers
 /// separated by commas, else kTum. Otherwise kTum when the file name ends in .tum, or in .txt with
 /// a first line of eight numbers separated by spaces or tabs; kMot for a .txt whose first line is
-/// seven or more numbers separated by commas (gt.txt, det.txt); kCsv otherwise.
+/// seven or more numbers separated by commas (gt.txt, det.txt); kKitti for a .txt whose first line
+/// is a KITTI tracking label (a frame, a track id, a type word and 14 or 15 numbers separated by
+/// spaces); kCsv otherwise.
 LogFormat detect_log_format(const std::filesystem::path& name, std::string_view first_line,
                             std::string_view first_data_line = {});
 

@@ -38,7 +38,7 @@ void read_format(const LogArguments& a, const std::string& path, const OptionNam
   if (a.format) {
     const auto parsed = parse_log_format(*a.format);
     if (!parsed)
-      refuse(name("format"), ": expected csv, tum, mot or euroc, got \"" + *a.format + "\"");
+      refuse(name("format"), ": expected csv, tum, mot, euroc or kitti, got \"" + *a.format + "\"");
     options.format = *parsed;
   } else if (path != "-") {
     options.format = detect_log_format(path);
@@ -54,13 +54,16 @@ void read_format(const LogArguments& a, const std::string& path, const OptionNam
   }
   if (options.format != LogFormat::kCsv && a.columns)
     refuse(name("columns"),
-           " renames CSV columns; a TUM, MOTChallenge or ASL file's columns are its format's");
-  if (options.format != LogFormat::kMot) return;
+           " renames CSV columns; a TUM, MOTChallenge, ASL or KITTI file's columns are its "
+           "format's");
+  if (options.format != LogFormat::kMot && options.format != LogFormat::kKitti) return;
+  const std::string what = options.format == LogFormat::kMot
+                               ? "a MOTChallenge file (ids, pixels, frame numbers)"
+                               : "a KITTI tracking file (ids, metres, frame numbers)";
   for (const auto& [given, option] : {std::pair{a.object.has_value(), "object"},
                                       {a.time_unit.has_value(), "time_unit"},
                                       {a.length_unit.has_value(), "length_unit"}})
-    if (given)
-      refuse(name(option), " does not apply to a MOTChallenge file (ids, pixels, frame numbers)");
+    if (given) refuse(name(option), " does not apply to " + what);
 }
 
 void read_units(const LogArguments& a, const OptionNamer& name, LogReadOptions& options) {
@@ -101,7 +104,7 @@ LogReadOptions log_read_options(const LogArguments& a, const std::string& path,
     options.rate = *a.rate;
   }
   options.fill_gaps = a.fill;
-  // A MOTChallenge file's rate times its frame numbers, whether gaps are filled or not.
+  // A MOTChallenge or KITTI file's rate times its frame numbers, whether gaps are filled or not.
   if (options.format == LogFormat::kMot) {
     if (!options.rate) options.rate = box_frame_rate(path);
     if (!options.rate)
@@ -109,6 +112,10 @@ LogReadOptions log_read_options(const LogArguments& a, const std::string& path,
           "a MOTChallenge file's frame numbers need the frame rate: " + name("rate") +
           " HZ, or the sequence's seqinfo.ini beside the file or one "
           "folder up");
+  } else if (options.format == LogFormat::kKitti) {
+    if (!options.rate)
+      throw std::invalid_argument("a KITTI tracking file's frame numbers need the frame rate: " +
+                                  name("rate") + " HZ (10 for KITTI's own recordings)");
   } else if (!options.fill_gaps && options.rate) {
     throw std::invalid_argument("options '" + name("rate") + "' and '" + name("fill") +
                                 "' contradict each other: " + name("rate") +

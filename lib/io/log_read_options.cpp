@@ -46,6 +46,7 @@ std::optional<LogFormat> parse_log_format(std::string_view name) {
   if (name == "tum") return LogFormat::kTum;
   if (name == "mot") return LogFormat::kMot;
   if (name == "euroc") return LogFormat::kEuroc;
+  if (name == "kitti") return LogFormat::kKitti;
   return std::nullopt;
 }
 

@@ -34,7 +34,11 @@ inline constexpr std::array<std::string_view, 3> kBoxColumns = {"box_x", "box_y"
 /// (state_groundtruth_estimate0, vicon0, mocap0; Kalibr and OpenVINS write it too): '#' header
 /// lines, then "timestamp, p_x, p_y, p_z, q_w, q_x, q_y, q_z" and any further columns, separated
 /// by commas, the timestamp in nanoseconds and the quaternion w first; one object.
-enum class LogFormat { kCsv, kTum, kMot, kEuroc };
+/// kKitti: the KITTI tracking benchmark's labels, and 3-D trackers' results in their format
+/// (kKittiColumns and an optional score, separated by spaces): each box becomes the pose of its
+/// centre in the camera's frame (x right, y down, z forward), turned by rotation_y about y, with
+/// its extents as the detection's box, its track id the object, frame k the time k / rate.
+enum class LogFormat { kCsv, kTum, kMot, kEuroc, kKitti };
 /// The fields of a kTum line, in order.
 inline constexpr std::array<std::string_view, 8> kTumColumns = {"timestamp", "tx", "ty", "tz",
                                                                 "qx",        "qy", "qz", "qw"};
@@ -48,6 +52,12 @@ inline constexpr std::array<std::string_view, 8> kEurocColumns = {"timestamp", "
 constexpr bool is_one_object_format(LogFormat format) {
   return format == LogFormat::kTum || format == LogFormat::kEuroc;
 }
+
+/// The fields of a kKitti line, in order (a results file adds a score).
+inline constexpr std::array<std::string_view, 17> kKittiColumns = {
+    "frame",     "track_id", "type",       "truncated",   "occluded",  "alpha",
+    "bbox_left", "bbox_top", "bbox_right", "bbox_bottom", "height",    "width",
+    "length",    "x",        "y",          "z",           "rotation_y"};
 
 /// The first fields of a kMot line, in order.
 inline constexpr std::array<std::string_view, 7> kMotColumns = {
@@ -99,7 +109,7 @@ inline constexpr double kMaxFilledGap = 10.0;
 /// is not a frame rate (and would fill without bound).
 inline constexpr double kMaxFilledFrames = 1e5;
 
-/// "csv", "tum", "mot", "euroc": the names of --format.
+/// "csv", "tum", "mot", "euroc", "kitti": the names of --format.
 std::optional<LogFormat> parse_log_format(std::string_view name);
 
 /// "s", "ms", "us", "ns" and "m", "mm": the names the command line and the settings file use.

@@ -3,6 +3,7 @@
 #include "opf/core/option_schema.h"
 #include "opf/core/pose_conversion.h"
 #include "opf/io/input_error.h"
+#include "opf/io/kitti_tracking_row.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -24,7 +25,8 @@ constexpr double kQuaternionNormTolerance = 0.01;
 // object column.
 std::array<std::string, 9> file_names(const LogReadOptions& options) {
   std::array<std::string, 9> names;
-  if (options.format == LogFormat::kMot) return names;  // kMotColumns, read by next_box()
+  // kMotColumns, kKittiColumns: read by next_box(), read_kitti_tracking_row().
+  if (options.format == LogFormat::kMot || options.format == LogFormat::kKitti) return names;
   if (options.format == LogFormat::kTum) {
     names = {std::string(kTumColumns[0]), ""};
     for (std::size_t i = 1; i < kTumColumns.size(); ++i) names[i + 1] = kTumColumns[i];
@@ -53,6 +55,10 @@ csv::Reader open_reader(std::istream& in, const std::string& source, const LogRe
   if (options.format == LogFormat::kTum)
     return csv::Reader(in, source,
                        csv::Reader::Headerless{{kTumColumns.begin(), kTumColumns.end()}});
+  if (options.format == LogFormat::kKitti)  // a results file adds a score
+    return csv::Reader(
+        in, source,
+        csv::Reader::Headerless{{kKittiColumns.begin(), kKittiColumns.end()}, true, true, 1});
   if (options.format == LogFormat::kEuroc)
     return csv::Reader(
         in, source,
@@ -72,10 +78,13 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
       object_(options.object.value_or("")),
       seconds_per_unit_(stated_time_unit(options) ? seconds_per(*stated_time_unit(options)) : 1.0),
       metres_per_unit_(options.length_unit ? metres_per(*options.length_unit) : 1.0) {
-  if (options.format == LogFormat::kMot) {
+  if (options.format == LogFormat::kMot || options.format == LogFormat::kKitti) {
     if (!options.rate)
-      throw std::invalid_argument("a MOTChallenge file needs its frame rate to time its frames");
+      throw std::invalid_argument(
+          std::string(options.format == LogFormat::kMot ? "a MOTChallenge" : "a KITTI tracking") +
+          " file needs its frame rate to time its frames");
     box_frame_period_ = 1.0 / *options.rate;
+    kitti_ = options.format == LogFormat::kKitti;
     return;
   }
   if (names_[1].empty() && object_.empty())
@@ -171,6 +180,12 @@ bool LogRowReader::next_box(LogRow& row) {
 }
 
 bool LogRowReader::next(LogRow& row) {
+  if (kitti_) {
+    do {
+      if (!reader_.next()) return false;
+    } while (!read_kitti_tracking_row(reader_, box_frame_period_, row));
+    return true;
+  }
   if (box_frame_period_ > 0.0) return next_box(row);
   if (!reader_.next()) return false;
   row.line = reader_.line();

@@ -58,7 +58,8 @@ class LogRowReader {
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
   csv::Reader reader_;
   std::string object_;             // every row's object when the file has no object column
-  double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge file (> 0)
+  double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge or KITTI file (> 0)
+  bool kitti_ = false;             // a KITTI tracking file
   std::array<std::size_t, 9> column_{};
   std::optional<std::size_t> extra_noise_column_;          // a CSV log's optional kExtraNoiseColumn
   std::optional<std::size_t> radius_column_;               // a CSV log's optional kRadiusColumn

@@ -31,7 +31,7 @@ def track_log(path, estimator="opf", seed=1, particles=None, config=None, datafr
     The options are `opf track`'s of the same names, with the same defaults and checks:
     particles (None: the config's, else 5000), config (a settings file's path or a dict),
     preset ("default" or "paper"), camera ([X, Y, Z] or "X,Y,Z", m; [X, Y, Z, 0]: infinitely
-    far that way), format ("csv", "tum", "mot" or "euroc"; None: detected, a TUM trajectory or
+    far that way), format ("csv", "tum", "mot", "euroc" or "kitti"; None: detected, a TUM trajectory or
     an ASL CSV being named after its file unless object names it),
     object (the one object of a log without an object column), time_unit (s, ms, us, ns),
     length_unit (m, mm), columns ({"qx": "rx", ...} or "qx=rx,..."), frame_tolerance (s),

@@ -58,8 +58,8 @@ TEST(LogReadArguments, ATumFileIsOneObjectNamedAfterIt) {
   EXPECT_EQ(options.object, "groundtruth");
   tum.columns = "qx=rx";
   EXPECT_EQ(refusal(tum, python_name, "g.txt"),
-            "option 'columns' renames CSV columns; a TUM, MOTChallenge or ASL file's columns are "
-            "its format's");
+            "option 'columns' renames CSV columns; a TUM, MOTChallenge, ASL or KITTI file's columns "
+            "are its format's");
   tum.columns.reset();
   EXPECT_NE(refusal(tum, program_name, "-").find("needs its object's name: --object NAME"),
             std::string::npos);
@@ -78,7 +78,7 @@ TEST(LogReadArguments, AnAslFileIsOneObjectNamedAfterItTimedInNanoseconds) {
             std::string::npos);
   asl.format = "kml";
   EXPECT_EQ(refusal(asl, program_name, "a.csv"),
-            "option '--format': expected csv, tum, mot or euroc, got \"kml\"");
+            "option '--format': expected csv, tum, mot, euroc or kitti, got \"kml\"");
 }
 
 TEST(LogReadArguments, AMotChallengeFileTakesItsSequencesFrameRate) {

@@ -374,9 +374,9 @@ def test_track_log_reads_a_tum_trajectory_as_opf_track_does(tmp_path):
     named = opf.track_log(log, seed=3, particles=PARTICLES, object="ball", dataframe=False)
     assert set(named["object"]) == {"ball"} and np.array_equal(named["x"], columns["x"])
     with pytest.raises(ValueError, match="option 'columns' renames CSV columns; a TUM, "
-                       "MOTChallenge or ASL file's columns are its format's"):
+                       "MOTChallenge, ASL or KITTI file's columns are its format's"):
         opf.track_log(log, columns={"qx": "rx"})
-    with pytest.raises(ValueError, match='option \'format\': expected csv, tum, mot or euroc, got "kml"'):
+    with pytest.raises(ValueError, match='option \'format\': expected csv, tum, mot, euroc or kitti, got "kml"'):
         opf.track_log(log, format="kml")
 
 
