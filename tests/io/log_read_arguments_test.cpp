@@ -57,9 +57,10 @@ TEST(LogReadArguments, ATumFileIsOneObjectNamedAfterIt) {
   EXPECT_EQ(options.format, LogFormat::kTum);
   EXPECT_EQ(options.object, "groundtruth");
   tum.columns = "qx=rx";
-  EXPECT_EQ(refusal(tum, python_name, "g.txt"),
-            "option 'columns' renames CSV columns; a TUM, MOTChallenge, ASL or KITTI file's columns "
-            "are its format's");
+  EXPECT_EQ(
+      refusal(tum, python_name, "g.txt"),
+      "option 'columns' renames CSV columns; a TUM, MOTChallenge, ASL or KITTI file's columns "
+      "are its format's");
   tum.columns.reset();
   EXPECT_NE(refusal(tum, program_name, "-").find("needs its object's name: --object NAME"),
             std::string::npos);
