@@ -113,6 +113,61 @@ void ObjectSegmenter::make_candidates(const cv::Mat& bgr) {
     cv::morphologyEx(candidates_, candidates_, cv::MORPH_CLOSE, close_kernel_);
 }
 
+int ObjectSegmenter::component_area(int label) const {
+  return stats_.at<int>(label, cv::CC_STAT_AREA);
+}
+
+cv::Rect ObjectSegmenter::component_box(int label) const {
+  return {stats_.at<int>(label, cv::CC_STAT_LEFT), stats_.at<int>(label, cv::CC_STAT_TOP),
+          stats_.at<int>(label, cv::CC_STAT_WIDTH), stats_.at<int>(label, cv::CC_STAT_HEIGHT)};
+}
+
+int ObjectSegmenter::choose_component(int count, bool tracking) const {
+  int anchor = 0;
+  if (!tracking) {
+    for (int label = 1; label < count; ++label)
+      if (anchor == 0 || component_area(label) > component_area(anchor)) anchor = label;
+    return anchor;
+  }
+  // Specks below the fragment share of the minimum area are never taken for the object.
+  const cv::Point2d reference = last_centroid_.value_or(options_.background.start);
+  double nearest = options_.background.gate_px;
+  for (int label = 1; label < count; ++label) {
+    if (component_area(label) < options_.fragment_fraction * options_.min_area_px) continue;
+    const cv::Point2d centroid(centroids_.at<double>(label, 0), centroids_.at<double>(label, 1));
+    const double distance = cv::norm(centroid - reference);
+    if (distance <= nearest) {
+      nearest = distance;
+      anchor = label;
+    }
+  }
+  return anchor;
+}
+
+Blob ObjectSegmenter::merge_fragments(int count, int anchor) {
+  std::vector<unsigned char> keep(static_cast<std::size_t>(count), 0);
+  keep[static_cast<std::size_t>(anchor)] = 1;
+  Blob blob;
+  blob.bounds = component_box(anchor);
+  blob.components = 1;
+  for (int label = 1; label < count; ++label) {
+    if (label == anchor) continue;
+    if (component_area(label) >= options_.fragment_fraction * component_area(anchor) &&
+        gap(component_box(label), component_box(anchor)) <= options_.fragment_distance_px) {
+      keep[static_cast<std::size_t>(label)] = 1;
+      blob.bounds |= component_box(label);
+      ++blob.components;
+    }
+  }
+  for (int row = 0; row < labels_.rows; ++row) {
+    const int* label = labels_.ptr<int>(row);
+    unsigned char* out = object_.ptr<unsigned char>(row);
+    for (int col = 0; col < labels_.cols; ++col)
+      if (keep[static_cast<std::size_t>(label[col])]) out[col] = 255;
+  }
+  return blob;
+}
+
 std::optional<Blob> ObjectSegmenter::segment(const cv::Mat& bgr, std::size_t frame_index) {
   if (bgr.type() != CV_8UC3 || bgr.empty())
     throw std::invalid_argument("segmenter: expected a non-empty 8-bit BGR image");
@@ -129,56 +184,9 @@ std::optional<Blob> ObjectSegmenter::segment(const cv::Mat& bgr, std::size_t fra
 
   const int count =
       cv::connectedComponentsWithStats(candidates_, labels_, stats_, centroids_, 8, CV_32S);
-  const auto area = [&](int label) { return stats_.at<int>(label, cv::CC_STAT_AREA); };
-  const auto box = [&](int label) {
-    return cv::Rect(stats_.at<int>(label, cv::CC_STAT_LEFT), stats_.at<int>(label, cv::CC_STAT_TOP),
-                    stats_.at<int>(label, cv::CC_STAT_WIDTH),
-                    stats_.at<int>(label, cv::CC_STAT_HEIGHT));
-  };
-
-  // The chosen component (label 0 is the background).
-  int anchor = 0;
-  if (tracking) {
-    // The nearest component within the gate; specks below the fragment share of the minimum area
-    // are never taken for the object.
-    const cv::Point2d reference = last_centroid_.value_or(options_.background.start);
-    double nearest = options_.background.gate_px;
-    for (int label = 1; label < count; ++label) {
-      if (area(label) < options_.fragment_fraction * options_.min_area_px) continue;
-      const cv::Point2d centroid(centroids_.at<double>(label, 0), centroids_.at<double>(label, 1));
-      const double distance = cv::norm(centroid - reference);
-      if (distance <= nearest) {
-        nearest = distance;
-        anchor = label;
-      }
-    }
-  } else {
-    for (int label = 1; label < count; ++label)
-      if (anchor == 0 || area(label) > area(anchor)) anchor = label;
-  }
+  const int anchor = choose_component(count, tracking);
   if (anchor == 0) return std::nullopt;
-
-  // Merge the large fragments near the chosen component.
-  std::vector<unsigned char> keep(static_cast<std::size_t>(count), 0);
-  keep[anchor] = 1;
-  Blob blob;
-  blob.bounds = box(anchor);
-  blob.components = 1;
-  for (int label = 1; label < count; ++label) {
-    if (label == anchor) continue;
-    if (area(label) >= options_.fragment_fraction * area(anchor) &&
-        gap(box(label), box(anchor)) <= options_.fragment_distance_px) {
-      keep[label] = 1;
-      blob.bounds |= box(label);
-      ++blob.components;
-    }
-  }
-  for (int row = 0; row < labels_.rows; ++row) {
-    const int* label = labels_.ptr<int>(row);
-    unsigned char* out = object_.ptr<unsigned char>(row);
-    for (int col = 0; col < labels_.cols; ++col)
-      if (keep[label[col]]) out[col] = 255;
-  }
+  Blob blob = merge_fragments(count, anchor);
   blob.moments = cv::moments(object_, true);
   blob.area_px = blob.moments.m00;
   if (blob.area_px <= 0.0 || blob.area_px < options_.min_area_px) {

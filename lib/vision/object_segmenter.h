@@ -99,6 +99,14 @@ class ObjectSegmenter {
 
  private:
   void make_candidates(const cv::Mat& bgr);
+  /// The chosen component of the `count` labelled (0: none; label 0 is the background): in
+  /// background tracking the nearest to the last centroid within the gate, else the largest.
+  int choose_component(int count, bool tracking) const;
+  /// The chosen component and the large fragments near it, drawn into object_, as a blob without
+  /// its moments.
+  Blob merge_fragments(int count, int anchor);
+  int component_area(int label) const;
+  cv::Rect component_box(int label) const;
 
   SegmenterOptions options_;
   cv::Ptr<cv::BackgroundSubtractorMOG2> background_;
