@@ -83,7 +83,8 @@ void check_experiment(const sim::ExperimentConfig& config) {
   for (const sim::ScriptedBody& body : config.bodies) {
     if (!file_name_word(body.body.name)) fail("a body name that is not a file name");
     if (body.waypoints.empty()) fail("a body without waypoints");
-    if (body.body.tracked && !sim::segmentable(body.body.colour))
+    if (body.body.tracked && config.sensor == sim::SensorKind::kCamera &&
+        !sim::segmentable(body.body.colour))
       fail("a tracked body the camera cannot segment");
     if (body.body.tracked && config.sensor == sim::SensorKind::kCamera)
       for (const sim::ScriptedBody& other : config.bodies)

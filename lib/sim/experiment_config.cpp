@@ -80,11 +80,6 @@ ScriptedBody body(YamlReader& yaml) {
   b.body.size = size(yaml, b.body.shape);
   b.body.colour = colour(yaml);
   yaml.get("tracked", b.body.tracked);
-  if (b.body.tracked && !segmentable(b.body.colour))
-    yaml.fail("colour",
-              "expected a saturated colour for a tracked body, which the camera finds by its hue "
-              "(HSV saturation >= 100 and value >= 60 of 255, as [255, 0, 0]); an untracked "
-              "body may be grey");
   yaml.get("rolling", b.rolling);
   for (YamlReader* w : yaml.sequence("waypoints")) {
     Waypoint waypoint;
@@ -127,10 +122,17 @@ ScriptedBody body(YamlReader& yaml) {
   return b;
 }
 
-// The camera finds a tracked body by its hue: another body of a hue within its detector's band
-// would be taken for it (two red bodies: the ball's estimate follows the mug).
-void refuse_confusable_colours(const std::vector<ScriptedBody>& bodies,
-                               const std::vector<YamlReader*>& readers) {
+// The camera finds a tracked body by its hue: a grey or black one it could never find, and
+// another body of a hue within its detector's band would be taken for it (two red bodies: the
+// ball's estimate follows the mug). Motion capture identifies markers, whatever their colour.
+void refuse_colours_the_camera_cannot_tell(const std::vector<ScriptedBody>& bodies,
+                                           const std::vector<YamlReader*>& readers) {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (bodies[i].body.tracked && !segmentable(bodies[i].body.colour))
+      readers[i]->fail("colour",
+                       "expected a saturated colour for a tracked body, which the camera finds "
+                       "by its hue (HSV saturation >= 100 and value >= 60 of 255, as [255, 0, "
+                       "0]); an untracked body may be grey");
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (!bodies[i].body.tracked) continue;
     for (std::size_t j = 0; j < bodies.size(); ++j)
@@ -291,7 +293,8 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   std::vector<std::string> names;
   for (const auto& b : config.bodies) names.push_back(b.body.name);
   yaml.get("sensor", kSensorKindNames, config.sensor);
-  if (config.sensor == SensorKind::kCamera) refuse_confusable_colours(config.bodies, body_readers);
+  if (config.sensor == SensorKind::kCamera)
+    refuse_colours_the_camera_cannot_tell(config.bodies, body_readers);
   config.dropouts = dropouts(yaml, config.sensor);
   config.objects_of_interest = objects_of_interest(yaml, names);
   if (yaml.has_key("closed_loop"))

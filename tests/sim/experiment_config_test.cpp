@@ -181,8 +181,11 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
   std::string grey_cup = red_cup;
   grey_cup.replace(grey_cup.find("[255, 20, 0]"), 12, "[150, 150, 150]");
   EXPECT_NO_THROW(parse_experiment(kMinimal + grey_cup + "    tracked: false\n", "tiny.yaml"));
-  // Motion capture identifies markers, not hues.
+  // Motion capture identifies markers, not hues: a red cup beside the ball, or a black ball.
   EXPECT_NO_THROW(parse_experiment(kMinimal + red_cup + "sensor: motion_capture\n", "tiny.yaml"));
+  bad = kMinimal;
+  bad.replace(bad.find("[220, 30, 30]"), 13, "[0, 0, 0]");
+  EXPECT_NO_THROW(parse_experiment(bad + "sensor: motion_capture\n", "tiny.yaml"));
 
   bad = kMinimal + "sensor: lidar\n";
   EXPECT_EQ(error_of(bad).field(), "sensor");
