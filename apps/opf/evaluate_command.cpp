@@ -395,7 +395,8 @@ TruthTable read_truth(const Arguments& args, const std::string& truth_path,
   if (is_one_object_format(truth_options.format) && !args.has("object") && log.objects.size() == 1)
     truth_options.object = log.objects.front();
   truth_options.fill_gaps = false;
-  truth_options.rate.reset();
+  // The rate fills gaps, which a truth never is, except where it times a box file's frame numbers.
+  if (!is_frame_numbered_format(truth_options.format)) truth_options.rate.reset();
   return TruthTable(read_measurement_log(truth_path, truth_options),
                     std::max(log.report.frame_tolerance, kExactTimeTolerance));
 }

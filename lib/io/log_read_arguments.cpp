@@ -56,7 +56,7 @@ void read_format(const LogArguments& a, const std::string& path, const OptionNam
     refuse(name("columns"),
            " renames CSV columns; a TUM, MOTChallenge, ASL or KITTI file's columns are its "
            "format's");
-  if (options.format != LogFormat::kMot && options.format != LogFormat::kKitti) return;
+  if (!is_frame_numbered_format(options.format)) return;
   const std::string what = options.format == LogFormat::kMot
                                ? "a MOTChallenge file (ids, pixels, frame numbers)"
                                : "a KITTI tracking file (ids, metres, frame numbers)";

@@ -59,6 +59,12 @@ inline constexpr std::array<std::string_view, 17> kKittiColumns = {
     "bbox_left", "bbox_top", "bbox_right", "bbox_bottom", "height",    "width",
     "length",    "x",        "y",          "z",           "rotation_y"};
 
+/// Whether a format's rows give frame numbers, which LogReadOptions::rate turns into times (kMot,
+/// kKitti), rather than times.
+constexpr bool is_frame_numbered_format(LogFormat format) {
+  return format == LogFormat::kMot || format == LogFormat::kKitti;
+}
+
 /// The first fields of a kMot line, in order.
 inline constexpr std::array<std::string_view, 7> kMotColumns = {
     "frame", "id", "bb_left", "bb_top", "bb_width", "bb_height", "conf"};

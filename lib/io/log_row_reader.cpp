@@ -26,7 +26,7 @@ constexpr double kQuaternionNormTolerance = 0.01;
 std::array<std::string, 9> file_names(const LogReadOptions& options) {
   std::array<std::string, 9> names;
   // kMotColumns, kKittiColumns: read by next_box(), read_kitti_tracking_row().
-  if (options.format == LogFormat::kMot || options.format == LogFormat::kKitti) return names;
+  if (is_frame_numbered_format(options.format)) return names;
   if (options.format == LogFormat::kTum) {
     names = {std::string(kTumColumns[0]), ""};
     for (std::size_t i = 1; i < kTumColumns.size(); ++i) names[i + 1] = kTumColumns[i];
@@ -78,7 +78,7 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
       object_(options.object.value_or("")),
       seconds_per_unit_(stated_time_unit(options) ? seconds_per(*stated_time_unit(options)) : 1.0),
       metres_per_unit_(options.length_unit ? metres_per(*options.length_unit) : 1.0) {
-  if (options.format == LogFormat::kMot || options.format == LogFormat::kKitti) {
+  if (is_frame_numbered_format(options.format)) {
     if (!options.rate)
       throw std::invalid_argument(
           std::string(options.format == LogFormat::kMot ? "a MOTChallenge" : "a KITTI tracking") +

@@ -173,6 +173,11 @@ TEST_F(OpfProgram, AMotChallengeFileTracksItsIdsAtItsSequencesFrameRate) {
   EXPECT_NE(err().find("need the frame rate: --rate HZ"), std::string::npos) << err();
   EXPECT_EQ(run("track --in " + gt + " --out " + est + " --rate 30 --quiet"), 0) << err();
   EXPECT_EQ(run("track --in " + gt + " --out " + est + " --rate 30 --object p"), 2);
+  // Scored against itself (its frames only): the rate times the truth's frame numbers too.
+  ASSERT_EQ(run("evaluate --in " + gt + " --truth " + gt + " --rate 30 --no-fill --estimators " +
+                "cvkf --seeds 1"),
+            0)
+      << err();
 }
 
 // KITTI tracking labels in the camera's frame (x right, y down, z forward): a car drives past
@@ -204,6 +209,21 @@ TEST_F(OpfProgram, KittiTrackingLabelsTrackEachIdThroughAnOcclusion) {
         << row.t << " " << row.mode;
   }
   EXPECT_EQ(hidden, 11u);
+  // Scored against labels that keep the pedestrian through the gap: the rate times the truth's
+  // frame numbers too (it was dropped with the truth's gap filling, and the truth refused).
+  {
+    std::ofstream truth(dir_ / "truth.txt");
+    for (int k = 0; k < 40; ++k)
+      truth << k << " 0 Car 0 0 0 0 0 0 0 1.5 1.8 4.4 " << -8.0 + 0.4 * k << " 1.6 10 0\n"
+            << k << " 1 Pedestrian 0 2 0 0 0 0 0 1.7 0.6 0.8 0 1.6 15 1.57\n";
+  }
+  ASSERT_EQ(run("evaluate --in " + labels.string() + " --truth " + (dir_ / "truth.txt").string() +
+                " --rate 10 --camera 0,0,0 --config " + (dir_ / "up.yaml").string() +
+                " --estimators opf,cvkf --seeds 1 --particles 1000 --out " +
+                (dir_ / "scores.csv").string()),
+            0)
+      << err();
+  EXPECT_NE(read(dir_ / "scores.csv").find("opf"), std::string::npos);
   // Frame numbers need the rate; ids name the objects.
   EXPECT_EQ(run("track --in " + labels.string() + " --out " + est), 2);
   EXPECT_NE(err().find("a KITTI tracking file's frame numbers need the frame rate: --rate HZ"),
