@@ -28,7 +28,7 @@ double whole_number(const csv::Reader& reader, std::size_t column, const char* w
 bool read_kitti_tracking_row(const csv::Reader& reader, double frame_period, LogRow& row) {
   if (reader.number(kTrackId) == -1.0) return false;  // DontCare
   const double frame = whole_number(reader, kFrame, "a frame number");
-  whole_number(reader, kTrackId, "a track id, or -1 for DontCare");
+  const double id = whole_number(reader, kTrackId, "a track id, or -1 for DontCare");
   Eigen::Vector3d extents;  // length, height, width: along the box's own x, y, z
   const std::array<std::size_t, 3> columns = {kLength, kHeight, kWidth};
   for (Eigen::Index axis = 0; axis < 3; ++axis) {
@@ -41,7 +41,7 @@ bool read_kitti_tracking_row(const csv::Reader& reader, double frame_period, Log
   const double yaw = reader.number(kRotationY);
   row.line = reader.line();
   row.t = frame * frame_period;
-  row.object = reader.field(kTrackId);
+  row.object = csv::format_double(id);  // "7" for 7 and 7.0 alike
   // y points down: the centre is half the height above the bottom.
   row.pose = make_pose(bottom - Eigen::Vector3d(0.0, extents[1] / 2.0, 0.0),
                        Eigen::Quaterniond(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitY())));

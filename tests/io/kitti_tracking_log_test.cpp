@@ -27,7 +27,7 @@ const std::string kLabels =
     "1.858523 13.410495 -2.115488\n"
     "0 2 Pedestrian 0 0 -2.523309 1106.13 166.57 1204.47 323.87 1.714062 0.767881 0.972283 "
     "6.301919 1.652419 8.455685 -1.900245\n"
-    "1 0 Van 0 1 -1.796862 294.89 156.02 452.02 284.25 2.000000 1.823255 4.433886 -4.650955 "
+    "1 0.0 Van 0 1 -1.796862 294.89 156.02 452.02 284.25 2.000000 1.823255 4.433886 -4.650955 "
     "1.766774 13.581085 -2.121565 0.93\n";
 
 fs::path write(const std::string& name, const std::string& text) {
@@ -79,7 +79,7 @@ TEST(KittiTrackingLog, ReadsEachBoxAsItsCentreTurnedAboutYWithItsExtents) {
   EXPECT_LT(orientation_of(van.pose).angularDistance(turn), 1e-9);
   EXPECT_EQ(van.box, Eigen::Vector3d(4.433886, 2.0, 1.823255));  // length, height, width
   EXPECT_EQ(log.frames[0].detections[1].object, "2");
-  EXPECT_EQ(log.frames[1].detections.at(0).object, "0");  // with a score
+  EXPECT_EQ(log.frames[1].detections.at(0).object, "0");  // with a score, its id written 0.0
 }
 
 TEST(KittiTrackingLog, ErrorsNameTheLineAndField) {
