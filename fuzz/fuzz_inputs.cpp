@@ -116,7 +116,7 @@ void check_segmentation(const vision::SegmentationSpec& spec) {
 }
 
 // What the sweep reader accepts, `opf sweep` can run: known estimators and experiment files, each
-// once, at most kMaxSweepRuns runs, each grid point in a folder of its own, and every run's
+// once, at most kMaxRuns runs, each grid point in a folder of its own, and every run's
 // settings file read by the settings reader.
 void check_sweep(const experiments::SweepSpec& spec) {
   if (spec.experiments.empty() || spec.estimators.empty()) fail("a sweep of nothing");
@@ -139,7 +139,7 @@ void check_sweep(const experiments::SweepSpec& spec) {
   experiments::SweepSpec one_seed = spec;  // the seeds only add seed_<k> folders
   one_seed.seeds = 1;
   const std::vector<experiments::SweepRun> runs = experiments::expand_sweep(one_seed);
-  if (runs.size() * spec.seeds > experiments::kMaxSweepRuns) fail("more runs than the limit");
+  if (runs.size() * spec.seeds > experiments::kMaxRuns) fail("more runs than the limit");
   std::set<std::filesystem::path> folders;
   for (const experiments::SweepRun& run : runs) {
     if (!folders.insert(run.directory.lexically_normal()).second)

@@ -1,6 +1,7 @@
 #include "estimator_arguments.h"
 
 #include "cli/presets.h"
+#include "drivers/run_limit.h"
 #include "opf/core/homogeneous_point.h"
 #include "opf/estimators/registry.h"
 #include "opf/io/estimator_settings_yaml.h"
@@ -115,11 +116,11 @@ std::size_t seeds_from(const Arguments& args, std::size_t runs_per_seed) {
   const unsigned long long seeds = args.get_count("seeds").value_or(5);
   if (seeds == 0) throw UsageError{"option '--seeds' must be at least 1"};
   const std::size_t per_seed = std::max<std::size_t>(runs_per_seed, 1);
-  if (seeds > kMaxRunsPerCommand / per_seed)
+  if (seeds > experiments::kMaxRuns / per_seed)
     throw UsageError{"option '--seeds' must be at most " +
-                     std::to_string(kMaxRunsPerCommand / per_seed) + " here (" +
+                     std::to_string(experiments::kMaxRuns / per_seed) + " here (" +
                      std::to_string(per_seed) + (per_seed == 1 ? " run" : " runs") +
-                     " a seed, at most " + std::to_string(kMaxRunsPerCommand) +
+                     " a seed, at most " + std::to_string(experiments::kMaxRuns) +
                      " runs a command), got " + std::to_string(seeds)};
   const unsigned long long first = args.get_count("first-seed").value_or(0);
   if (first > std::numeric_limits<std::uint64_t>::max() - seeds)

@@ -47,11 +47,7 @@ void require_known_estimators(const std::string& option, const std::vector<std::
 /// --seed, or the toolkit's default seed.
 std::uint64_t seed_from(const Arguments& args);
 
-/// The most runs one command makes (seeds times what each seed runs), a sweep's limit too
-/// (experiments/drivers/sweep_spec.h): a mistyped --seeds must not start a run of years.
-constexpr std::size_t kMaxRunsPerCommand = 100000;
-
-/// --seeds (default 5): at least 1, and at most kMaxRunsPerCommand runs at `runs_per_seed` (the
+/// --seeds (default 5): at least 1, and at most experiments::kMaxRuns runs at `runs_per_seed` (the
 /// estimators, times the experiments); with --first-seed, the last seed's index must fit in 64
 /// bits. UsageError otherwise, with the figures.
 std::size_t seeds_from(const Arguments& args, std::size_t runs_per_seed);

@@ -120,13 +120,13 @@ void check_settings(const SweepSpec& spec, const std::vector<SweepSetting>& sett
 void refuse_oversized(const SweepSpec& spec) {
   std::size_t runs = spec.experiments.size() * spec.estimators.size() * spec.variants.size();
   const auto times = [&runs](std::size_t factor) {
-    runs = factor != 0 && runs > kMaxSweepRuns / factor ? kMaxSweepRuns + 1 : runs * factor;
+    runs = factor != 0 && runs > kMaxRuns / factor ? kMaxRuns + 1 : runs * factor;
   };
   for (const SweepParameter& parameter : spec.parameters) times(parameter.values.size());
   times(spec.seeds);
-  if (runs > kMaxSweepRuns)
+  if (runs > kMaxRuns)
     throw InputError(spec.file.string(), 0, "",
-                     "more than " + std::to_string(kMaxSweepRuns) +
+                     "more than " + std::to_string(kMaxRuns) +
                          " runs (experiments x estimators x variants x grid points x seeds): "
                          "split the sweep into several files");
 }

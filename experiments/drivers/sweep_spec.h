@@ -20,6 +20,8 @@
 // Keys are the paths of experiments/configs/estimators.yaml. Every combination is checked against
 // the estimator settings reader when the file is loaded, so a typo fails before any run.
 
+#include "drivers/run_limit.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -61,9 +63,6 @@ struct SweepSpec {
   std::vector<SweepParameter> parameters;
 };
 
-/// The most runs a sweep file may expand to (its runs are expanded and checked in memory).
-inline constexpr std::size_t kMaxSweepRuns = 100000;
-
 /// The key that sets `opf run --particles` rather than an estimator option.
 inline constexpr const char* kParticlesKey = "particles";
 
@@ -85,7 +84,7 @@ std::vector<std::vector<SweepSetting>> grid_points(const SweepSpec& spec);
 /// is read, its own errors naming its lines), two experiments of one name or an estimator twice,
 /// `frames` past an experiment's, a sweep or variant name that is not a folder name, a duplicate
 /// variant name or value, a setting's key that is not a key path, a value YAML cannot read on its
-/// own, two grid points of one folder, more than kMaxSweepRuns runs, and any setting the
+/// own, two grid points of one folder, more than kMaxRuns runs, and any setting the
 /// estimator settings reader rejects.
 SweepSpec load_sweep(const std::filesystem::path& file);
 
