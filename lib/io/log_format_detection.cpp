@@ -3,6 +3,7 @@
 #include "opf/io/csv.h"
 #include "opf/io/input_error.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -11,12 +12,19 @@
 namespace opf {
 namespace {
 
+std::vector<std::string> whitespace_fields(std::string_view line) {
+  std::istringstream in{std::string(line)};
+  std::vector<std::string> fields;
+  for (std::string field; in >> field;) fields.push_back(field);
+  return fields;
+}
+
+// TUM: eight numbers separated by spaces or tabs.
 bool eight_numbers(std::string_view line) {
-  std::istringstream fields{std::string(line)};
-  std::size_t count = 0;
-  for (std::string field; fields >> field; ++count)
-    if (!csv::parse_double(field)) return false;
-  return count == kTumColumns.size();
+  const std::vector<std::string> fields = whitespace_fields(line);
+  return fields.size() == kTumColumns.size() &&
+         std::all_of(fields.begin(), fields.end(),
+                     [](const std::string& field) { return csv::parse_double(field).has_value(); });
 }
 
 // At least `count` numbers separated by commas: MOTChallenge's frame, id, box and more; an ASL
@@ -35,9 +43,7 @@ bool comma_separated_numbers(std::string_view line, std::size_t count) {
 
 // KITTI tracking: frame, track id, a type word, then numbers: 17 fields, or 18 with a score.
 bool kitti_row(std::string_view line) {
-  std::istringstream in{std::string(line)};
-  std::vector<std::string> fields;
-  for (std::string field; in >> field;) fields.push_back(field);
+  const std::vector<std::string> fields = whitespace_fields(line);
   if (fields.size() != kKittiColumns.size() && fields.size() != kKittiColumns.size() + 1)
     return false;
   for (std::size_t i = 0; i < fields.size(); ++i)

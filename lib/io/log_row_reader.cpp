@@ -25,7 +25,7 @@ constexpr double kQuaternionNormTolerance = 0.01;
 // object column.
 std::array<std::string, 9> file_names(const LogReadOptions& options) {
   std::array<std::string, 9> names;
-  // kMotColumns, kKittiColumns: read by next_box(), read_kitti_tracking_row().
+  // kMotColumns, kKittiColumns: read by read_mot_row(), read_kitti_tracking_row().
   if (is_frame_numbered_format(options.format)) return names;
   if (options.format == LogFormat::kTum) {
     names = {std::string(kTumColumns[0]), ""};
@@ -73,7 +73,8 @@ csv::Reader open_reader(std::istream& in, const std::string& source, const LogRe
 
 LogRowReader::LogRowReader(std::istream& in, const std::string& source,
                            const LogReadOptions& options)
-    : names_(file_names(options)),
+    : format_(options.format),
+      names_(file_names(options)),
       reader_(open_reader(in, source, options, names_)),
       object_(options.object.value_or("")),
       seconds_per_unit_(stated_time_unit(options) ? seconds_per(*stated_time_unit(options)) : 1.0),
@@ -84,7 +85,6 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
           std::string(options.format == LogFormat::kMot ? "a MOTChallenge" : "a KITTI tracking") +
           " file needs its frame rate to time its frames");
     box_frame_period_ = 1.0 / *options.rate;
-    kitti_ = options.format == LogFormat::kKitti;
     return;
   }
   if (names_[1].empty() && object_.empty())
@@ -151,13 +151,12 @@ double LogRowReader::optional_length(const std::optional<std::size_t>& column,
   return value * metres_per_unit_;
 }
 
-// gt.txt has nine fields, its seventh a flag (0: a box the benchmark ignores); a detector's or a
-// tracker's file has ten, the seventh a confidence. An id of -1 (det.txt) names no object.
-bool LogRowReader::next_box(LogRow& row) {
+// gt.txt has nine fields, its seventh a flag (0: a box the benchmark ignores, skipped); a
+// detector's or a tracker's file has ten, the seventh a confidence. An id of -1 (det.txt) names no
+// object.
+bool LogRowReader::read_mot_row(LogRow& row) const {
   constexpr std::size_t kGroundTruthFields = 9;
-  do {
-    if (!reader_.next()) return false;
-  } while (reader_.fields() == kGroundTruthFields && reader_.number(6) == 0.0);
+  if (reader_.fields() == kGroundTruthFields && reader_.number(6) == 0.0) return false;
   row.line = reader_.line();
   const double frame = reader_.number(0);
   if (frame < 1.0 || frame != std::floor(frame))
@@ -180,13 +179,16 @@ bool LogRowReader::next_box(LogRow& row) {
 }
 
 bool LogRowReader::next(LogRow& row) {
-  if (kitti_) {
+  if (is_frame_numbered_format(format_)) {
+    // A box file's rows that name no object it scores (KITTI's DontCare, gt.txt's ignored boxes)
+    // are skipped.
     do {
       if (!reader_.next()) return false;
-    } while (!read_kitti_tracking_row(reader_, box_frame_period_, row));
+    } while (format_ == LogFormat::kKitti
+                 ? !read_kitti_tracking_row(reader_, box_frame_period_, row)
+                 : !read_mot_row(row));
     return true;
   }
-  if (box_frame_period_ > 0.0) return next_box(row);
   if (!reader_.next()) return false;
   row.line = reader_.line();
   row.t = reader_.number(column_[0]) * seconds_per_unit_;

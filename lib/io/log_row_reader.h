@@ -49,17 +49,18 @@ class LogRowReader {
   const std::string& source() const { return reader_.source(); }
 
  private:
-  bool next_box(LogRow& row);
+  /// The current row of a MOTChallenge file into `row`; false for a box gt.txt flags as ignored.
+  bool read_mot_row(LogRow& row) const;
   /// The current row's optional length `column` (0 without the column or where empty), checked
   /// from 0 to `max_metres` (`what` names the quantity in the error), in metres.
   double optional_length(const std::optional<std::size_t>& column, std::string_view what,
                          double max_metres) const;
 
+  LogFormat format_;
   std::array<std::string, 9> names_;  // the file's names of t, object, x, y, z, qx, qy, qz, qw
   csv::Reader reader_;
   std::string object_;             // every row's object when the file has no object column
-  double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge or KITTI file (> 0)
-  bool kitti_ = false;             // a KITTI tracking file
+  double box_frame_period_ = 0.0;  // s per frame number: a MOTChallenge or KITTI file
   std::array<std::size_t, 9> column_{};
   std::optional<std::size_t> extra_noise_column_;          // a CSV log's optional kExtraNoiseColumn
   std::optional<std::size_t> radius_column_;               // a CSV log's optional kRadiusColumn
