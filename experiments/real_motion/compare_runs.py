@@ -8,6 +8,9 @@ change, the same logs and seeds) and prints, for one estimator and preset:
     calibration pooled over the hidden frames), as run_benchmark.py computes it;
   - the geometric mean per kind of motion, base and change;
   - every row whose ratio moved by more than --moved (default 5%), largest first;
+  - the change's factor on the geometric mean, log by log, with its 95% interval over resampled
+    recordings (run_benchmark.py's cluster bootstrap): an interval that spans 1 says the change
+    is within what the choice of recordings moves;
   - the verdict: the change is taken only when the mean improves, no row goes above the worst
     allowed (1.10x cvkf) that was not there before, and the calibration stays within its bounds
     (NEES / 3 in [0.5, 2], 85-98% of hidden frames inside the 95% ellipsoid). A change that helps
@@ -97,6 +100,23 @@ def summary_line(name, s):
             f"{bench.percent(s['inside95_translation'])} inside 95%")
 
 
+def change_factor_line(rb, rc, common):
+    """The change's factor on the geometric mean, with its interval over resampled recordings:
+    paired, log by log, so what the logs share (their difficulty) cancels out."""
+    factors = {log: rc[log][1] / rb[log][1] for log in common}
+    draws = bench.bootstrap_draws({bench.recording(log[0]) for log in common})
+    low, high = bench.geometric_mean_interval(factors, draws)
+    factor = bench.geometric_mean(factors.values())
+    if math.isnan(low):
+        return f"change / base: {factor:.3f}"
+    holds = ("below 1: better on resampled suites" if high < 1.0 else
+             "above 1: worse on resampled suites" if low > 1.0 else
+             "it spans 1: within what the choice of recordings moves")
+    return (f"change / base: {factor:.3f} (geometric mean over {len(common)} logs; "
+            f"{100 * bench.INTERVAL_LEVEL:.0f}% interval over resampled recordings "
+            f"{low:.3f}-{high:.3f}, {holds})")
+
+
 def compare(base, change, estimator, preset, moved):
     """The report's lines and whether the change is taken."""
     sb, sc = summary_of(*base, estimator, preset), summary_of(*change, estimator, preset)
@@ -119,6 +139,7 @@ def compare(base, change, estimator, preset, moved):
     shifted = [(s, l) for s, l in shifts if abs(s - 1.0) > moved]
     lines += ["", f"rows moved by more than {100 * moved:.0f}%: {len(shifted)} of {len(common)}"]
     lines += [f"  {'/'.join(l)}: {rb[l][1]:.3f} -> {rc[l][1]:.3f}" for s, l in shifted]
+    lines += ["", change_factor_line(rb, rc, common)]
     new_over = [l for l in common if rc[l][1] > WORST_ALLOWED >= rb[l][1]]
     mean_better = (bench.geometric_mean([rc[l][1] for l in common])
                    < bench.geometric_mean([rb[l][1] for l in common]))

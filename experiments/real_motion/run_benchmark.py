@@ -24,6 +24,8 @@ import concurrent.futures
 import csv
 import math
 import os
+import random
+import re
 import shutil
 import subprocess
 import sys
@@ -251,6 +253,56 @@ def geometric_mean(values):
     return math.exp(sum(map(math.log, values)) / len(values)) if values else math.nan
 
 
+# The interval of a geometric mean over logs: a cluster bootstrap over the recordings the logs were
+# cut from (Davison & Hinkley, Bootstrap Methods and their Application, 1997, Sec. 3.8). A
+# recording's logs at other rates and gaps, and a MOT sequence's pedestrians, are not independent
+# draws: resampling logs would count one recording's motion as several.
+BOOTSTRAP_RESAMPLES = 10000
+BOOTSTRAP_SEED = 0  # the same logs give the same interval
+INTERVAL_LEVEL = 0.95
+
+
+def recording(sequence):
+    """The recording a log was cut from: a pedestrian's track (mot17_02_p38) is its sequence's."""
+    return re.sub(r"_p\d+$", "", sequence)
+
+
+def bootstrap_draws(recordings, resamples=BOOTSTRAP_RESAMPLES, seed=BOOTSTRAP_SEED):
+    """`resamples` draws of len(recordings) recordings with replacement, seeded: the same draws
+    serve every estimator, so their intervals are comparable."""
+    rng = random.Random(seed)
+    names = sorted(recordings)
+    return [[names[rng.randrange(len(names))] for _ in names] for _ in range(resamples)]
+
+
+def geometric_mean_interval(ratios_by_log, draws, level=INTERVAL_LEVEL):
+    """The percentile interval (low, high) of the geometric mean of the per-log ratios over the
+    recordings of each draw (a drawn recording brings all its logs); ratios_by_log maps
+    (sequence, ...) to a ratio. (nan, nan) when no log has a positive finite ratio."""
+    sums = defaultdict(lambda: [0.0, 0])  # per recording: sum of log ratios, logs
+    for log, ratio in ratios_by_log.items():
+        if ratio > 0 and math.isfinite(ratio):
+            cell = sums[recording(log[0])]
+            cell[0] += math.log(ratio)
+            cell[1] += 1
+    means = []
+    for draw in draws:
+        total = count = 0
+        for name in draw:
+            if name in sums:
+                total += sums[name][0]
+                count += sums[name][1]
+        if count:
+            means.append(math.exp(total / count))
+    if not means:
+        return math.nan, math.nan
+    means.sort()
+    tail = (1.0 - level) / 2.0
+    low = means[int(math.floor(tail * len(means)))]
+    high = means[min(len(means) - 1, int(math.ceil((1.0 - tail) * len(means))) - 1)]
+    return low, high
+
+
 FRAME_KEYS = ("sequence", "rate", "gap", "preset", "estimator")  # a log, preset and estimator
 
 
@@ -277,16 +329,17 @@ def summarise(rows, bins):
     entries = sorted({(r["estimator"], r["preset"]) for r in rows},
                      key=lambda e: (PRESETS.index(e[1]), ESTIMATORS.split(",").index(e[0])
                                     if e[0] in ESTIMATORS.split(",") else 99, e[0]))
+    draws = bootstrap_draws({recording(log[0]) for log in by_log})
     summary = []
     for entry in entries:
-        ratios, rot_ratios, wins, logs, worst = [], [], 0, 0, (0.0, "")
+        ratios, rot_ratios, wins, logs, worst = {}, [], 0, 0, (0.0, "")
         for log, runs in by_log.items():
             if entry not in runs or REFERENCE not in runs:
                 continue
             logs += 1
             mine, ref = runs[entry], runs[REFERENCE]
             ratio = mine["hidden_translation"] / ref["hidden_translation"]
-            ratios.append(ratio)
+            ratios[log] = ratio
             rot_ratios.append(mine["hidden_rotation"] / ref["hidden_rotation"]
                               if ref["hidden_rotation"] > 0 else math.nan)
             if ratio > worst[0]:
@@ -296,12 +349,19 @@ def summarise(rows, bins):
         mine_rows = [r for r in rows if (r["estimator"], r["preset"]) == entry]
         summary.append({
             "estimator": entry[0], "preset": entry[1], "rows": logs,
-            "hidden_ratio": geometric_mean(ratios), "rotation_ratio": geometric_mean(rot_ratios),
+            "hidden_ratio": geometric_mean(ratios.values()),
+            "hidden_ratio_interval": geometric_mean_interval(ratios, draws),
+            "rotation_ratio": geometric_mean(rot_ratios),
             "worst": worst[0], "worst_row": worst[1], "best_share": wins / logs if logs else 0,
             **{m: pooled(mine_rows, frames, m) for m in (
                 "nees_translation", "inside95_translation", "nees_rotation", "inside95_rotation")},
         })
     return summary
+
+
+def interval_text(low, high):
+    """An interval as the tables print it: 0.791-0.893, or a dash where there is none."""
+    return "–" if math.isnan(low) else f"{low:.3f}-{high:.3f}"
 
 
 def markdown(summary, rows, args):
@@ -314,16 +374,20 @@ def markdown(summary, rows, args):
              "filter's (`cvkf`, default preset) on the same log; calibration by the NEES / 3 "
              "and the share of hidden frames inside the 95% ellipsoid, pooled over the hidden "
              "frames of every log "
-             "(docs/metrics.md)." + (f" Estimator settings `{args.config}` on top of each preset."
-                                     if args.config else ""), "",
-             "| estimator | preset | logs | hidden error / cvkf (geo. mean) | worst | best on | "
-             "rotation / cvkf | NEES/3 position | inside 95% | NEES/3 rotation | inside 95% |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "(docs/metrics.md). The 95% interval of the geometric mean resamples the "
+             f"recordings the logs were cut from ({BOOTSTRAP_RESAMPLES} draws, seeded)." +
+             (f" Estimator settings `{args.config}` on top of each preset." if args.config
+              else ""), "",
+             "| estimator | preset | logs | hidden error / cvkf (geo. mean) | 95% interval | worst "
+             "| best on | rotation / cvkf | NEES/3 position | inside 95% | NEES/3 rotation | "
+             "inside 95% |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for s in summary:
-        worst = ("–" if (s["estimator"], s["preset"]) == REFERENCE
-                 else f"{s['worst']:.2f} ({s['worst_row']})")
+        reference = (s["estimator"], s["preset"]) == REFERENCE
+        worst = "–" if reference else f"{s['worst']:.2f} ({s['worst_row']})"
+        interval = "–" if reference else interval_text(*s["hidden_ratio_interval"])
         lines.append(f"| {s['estimator']} | {s['preset']} | {s['rows']} | "
-                     f"{s['hidden_ratio']:.3f} | {worst} | "
+                     f"{s['hidden_ratio']:.3f} | {interval} | {worst} | "
                      f"{100 * s['best_share']:.0f}% | {s['rotation_ratio']:.3f} | "
                      f"{s['nees_translation']:.3g} | {percent(s['inside95_translation'])} | "
                      f"{s['nees_rotation']:.3g} | {percent(s['inside95_rotation'])} |")

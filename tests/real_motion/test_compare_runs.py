@@ -90,3 +90,18 @@ def test_bad_input_names_the_file_line_and_column(tmp_path):
         in done.stderr
     missing = compare(base, tmp_path / "nowhere")
     assert missing.returncode == 2 and "no such file" in missing.stderr
+
+
+def test_the_change_is_given_with_its_interval_over_resampled_recordings(tmp_path):
+    # Better by the same factor on every log: every resampled suite says 0.889.
+    (tmp_path / "1").mkdir()
+    (tmp_path / "2").mkdir()
+    everywhere = compare_errors(tmp_path / "1", [0.9, 0.9, 0.9], [0.8, 0.8, 0.8])
+    assert ("change / base: 0.889 (geometric mean over 3 logs; 95% interval over resampled "
+            "recordings 0.889-0.889, below 1: better on resampled suites)") in everywhere.stdout
+    # Better on the mean, (0.5 / 0.9 * 1 * 1.05 / 0.9)^(1/3) = 0.865, and taken, but worse on
+    # log c: a suite of c alone says 1.167, one of a alone 0.556.
+    mixed = compare_errors(tmp_path / "2", [0.9, 0.9, 0.9], [0.5, 0.9, 1.05])
+    assert mixed.returncode == 0, mixed.stdout
+    assert "change / base: 0.865" in mixed.stdout
+    assert "interval over resampled recordings 0.556-1.167, it spans 1" in mixed.stdout

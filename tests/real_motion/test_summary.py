@@ -45,3 +45,48 @@ def test_a_share_just_outside_the_calibration_bounds_is_not_rounded_onto_them():
     assert bench.percent(0.9804) == "98.04%"
     assert bench.percent(0.85) == "85%" and bench.percent(0.93) == "93%"
     assert bench.percent(math.nan) == "nan%"
+
+
+def ratios_of(pairs):
+    """{(sequence, rate, gap): ratio} for (sequence, ratio) pairs, a log per pair."""
+    return {(sequence, "native", str(k)): ratio for k, (sequence, ratio) in enumerate(pairs)}
+
+
+def test_the_interval_resamples_recordings_and_weighs_their_logs():
+    # Two recordings, each one log: a draw holds a twice (1/4), b twice (1/4) or both (1/2), so
+    # the geometric means are 0.5, 2 and 1, and the 95% interval runs from 0.5 to 2 exactly.
+    draws = bench.bootstrap_draws({"a", "b"})
+    assert bench.geometric_mean_interval(ratios_of([("a", 0.5), ("b", 2.0)]), draws) == \
+        pytest.approx((0.5, 2.0))
+    # A drawn recording brings all its logs: a's three at 0.5 and b's one at 2 give
+    # exp((3 ln 0.5 + ln 2) / 4) = 0.707 for a draw of both, not 1, the recordings' mean.
+    low, high = bench.geometric_mean_interval(
+        ratios_of([("a", 0.5), ("a", 0.5), ("a", 0.5), ("b", 2.0)]), draws)
+    assert (low, high) == pytest.approx((0.5, 2.0))
+    means = {round(bench.geometric_mean_interval(ratios_of(
+        [("a", 0.5), ("a", 0.5), ("a", 0.5), ("b", 2.0)]), [draw], level=0.0)[0], 3)
+        for draw in (["a", "b"], ["b", "a"])}
+    assert means == {0.707}
+
+
+def test_a_sequences_pedestrians_are_one_recording():
+    # Two tracks of one MOT sequence, 0.5 and 2: every draw takes both, so the interval is their
+    # geometric mean, 1, with no spread; as two recordings they would span 0.5-2.
+    assert bench.recording("mot17_02_p38") == "mot17_02"
+    assert bench.recording("euroc_v101") == "euroc_v101"
+    tracks = ratios_of([("mot17_02_p38", 0.5), ("mot17_02_p68", 2.0)])
+    draws = bench.bootstrap_draws({"mot17_02"})
+    assert bench.geometric_mean_interval(tracks, draws) == pytest.approx((1.0, 1.0))
+
+
+def test_the_interval_is_seeded_and_skips_what_it_cannot_take_the_log_of():
+    ratios = ratios_of([(name, 0.5 + 0.1 * k) for k, name in enumerate("abcdefgh")])
+    recordings = set("abcdefgh")
+    first = bench.geometric_mean_interval(ratios, bench.bootstrap_draws(recordings))
+    assert first == bench.geometric_mean_interval(ratios, bench.bootstrap_draws(recordings))
+    assert 0.5 < first[0] < bench.geometric_mean(ratios.values()) < first[1] < 1.2
+    with_nan = {**ratios, **ratios_of([("z", math.nan)])}
+    assert bench.geometric_mean_interval(with_nan, bench.bootstrap_draws(recordings)) == first
+    nothing = bench.geometric_mean_interval(ratios_of([("a", math.nan)]),
+                                            bench.bootstrap_draws({"a"}))
+    assert all(math.isnan(v) for v in nothing)
