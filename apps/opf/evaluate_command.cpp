@@ -5,8 +5,8 @@
 #include "drivers/data_directory.h"
 #include "estimator_arguments.h"
 #include "log_arguments.h"
-#include "opf/core/closest_name.h"
 #include "opf/core/error_accumulator.h"
+#include "opf/core/ground_truth.h"
 #include "opf/core/metrics.h"
 #include "opf/core/random.h"
 #include "opf/core/tracker.h"
@@ -25,6 +25,7 @@
 #include <iostream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -41,7 +42,8 @@ std::vector<OptionSpec> specs() {
   std::vector<OptionSpec> s = {
       {"in", "LOG.csv", "measurement log (default: the bundled experiments/data/example_log.csv)"},
       {"truth", "TRUTH.csv",
-       "ground truth: a log in the same units and columns with every object at every frame"},
+       "ground truth: a log in the same units and columns with every object, at its own times "
+       "(interpolated at each estimate's)"},
       {"estimators", "A,B,...", "estimators to compare (default: all registered)"},
       {"seeds", "N",
        "runs per estimator, seeds derived from --seed (default 5; 100000 runs at most)"},
@@ -69,67 +71,13 @@ constexpr const char* kSummary =
     "95% ellipsoid, of position and orientation), reacquisition after gaps and the alert's\n"
     "precision and recall (definitions: docs/metrics.md).";
 
-/// The ground truth by object, in time order, matched to a frame by the nearest time within the
-/// log's frame tolerance (a log's frames are at the mean time of their rows).
-class TruthTable {
- public:
-  TruthTable(const MeasurementLog& truth, double tolerance) : tolerance_(tolerance) {
-    for (const Frame& frame : truth.frames)
-      for (const Detection& d : frame.detections) poses_[d.object].emplace_back(frame.t, d.pose);
-  }
-  /// Why there is no truth for `object` at t: the object is missing from the truth (its objects
-  /// named, with a near miss), or its rows do not reach that time (their span given).
-  std::string missing(const std::string& object, double t) const {
-    std::ostringstream msg;
-    msg << "no ground truth for object '" << object << "' at t = " << t;
-    const auto series = poses_.find(object);
-    if (series == poses_.end()) {
-      std::vector<std::string> names;
-      for (const auto& [name, rows] : poses_) names.push_back(name);
-      msg << ": the truth has no such object (its objects: ";
-      for (std::size_t i = 0; i < names.size(); ++i) msg << (i ? ", " : "") << names[i];
-      msg << ")";
-      if (const auto closest = closest_name(object, names))
-        msg << "; did you mean '" << *closest << "'?";
-    } else {
-      msg << " (its rows run from " << series->second.front().first << " to "
-          << series->second.back().first << " s; a log frame matches a row within " << tolerance_
-          << " s)";
-    }
-    return msg.str();
-  }
-
-  const mrpt::poses::CPose3D* find(const std::string& object, double t) const {
-    const auto series = poses_.find(object);
-    if (series == poses_.end()) return nullptr;
-    const auto& rows = series->second;
-    auto it = std::lower_bound(rows.begin(), rows.end(), t,
-                               [](const auto& row, double time) { return row.first < time; });
-    const mrpt::poses::CPose3D* best = nullptr;
-    double best_distance = tolerance_;
-    for (auto candidate : {it, it == rows.begin() ? it : std::prev(it)}) {
-      if (candidate == rows.end()) continue;
-      const double distance = std::abs(candidate->first - t);
-      if (distance <= best_distance) {
-        best = &candidate->second;
-        best_distance = distance;
-      }
-    }
-    return best;
-  }
-
- private:
-  double tolerance_;
-  std::map<std::string, std::vector<std::pair<double, mrpt::poses::CPose3D>>> poses_;
-};
-
 /// The errors of one run, and how many estimates of filled frames had no truth to compare with.
 struct ScoredRun {
   RunErrors errors;
   std::size_t unscored = 0;
 };
 
-ScoredRun run_once(const MeasurementLog& log, const TruthTable& truth, const std::string& name,
+ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const std::string& name,
                    const EstimatorSettings& settings, std::uint64_t seed, std::size_t threads,
                    const std::string& truth_path, double alert_distance) {
   Tracker tracker(make_estimator_factory(name, settings), seed, threads);
@@ -137,7 +85,7 @@ ScoredRun run_once(const MeasurementLog& log, const TruthTable& truth, const std
   ScoredRun run;
   for (const Frame& frame : log.frames) {
     for (const Estimate& estimate : tracker.step(frame)) {
-      const mrpt::poses::CPose3D* pose = truth.find(estimate.object, frame.t);
+      const std::optional<mrpt::poses::CPose3D> pose = truth.at(estimate.object, frame.t);
       if (!pose && frame.filled) {
         ++run.unscored;  // a frame the log never had: no truth there is no fault
         continue;
@@ -154,14 +102,14 @@ ScoredRun run_once(const MeasurementLog& log, const TruthTable& truth, const std
 /// Every estimate a run writes is scored: each object at every frame of the log from its first
 /// detection on (filled frames excepted). A truth that misses one is refused before any run, not
 /// after the first.
-void require_truth_for_every_estimate(const MeasurementLog& log, const TruthTable& truth,
+void require_truth_for_every_estimate(const MeasurementLog& log, const GroundTruth& truth,
                                       const std::string& truth_path) {
   std::set<std::string> started;
   for (const Frame& frame : log.frames) {
     for (const Detection& d : frame.detections) started.insert(d.object);
     if (frame.filled) continue;
     for (const std::string& object : started)
-      if (!truth.find(object, frame.t))
+      if (!truth.at(object, frame.t))
         throw std::runtime_error(truth_path + ": " + truth.missing(object, frame.t));
   }
 }
@@ -386,10 +334,11 @@ EvaluateRequest evaluate_request(const Arguments& args) {
   return r;
 }
 
-/// The truth, read as the log is (its units and columns) but never filled, its frames matched
-/// to the log's within the log's frame tolerance.
-TruthTable read_truth(const Arguments& args, const std::string& truth_path,
-                      const MeasurementLog& log) {
+/// The truth, read as the log is (its units and columns) but never filled, at its own times: an
+/// estimate takes it interpolated at the estimate's time (core/ground_truth.h), beyond its span
+/// a row within the log's frame tolerance.
+GroundTruth read_truth(const Arguments& args, const std::string& truth_path,
+                       const MeasurementLog& log) {
   LogReadOptions truth_options = log_options_from(args, truth_path);
   // A TUM or ASL truth of the log's one object is that object's, whatever the files are called.
   if (is_one_object_format(truth_options.format) && !args.has("object") && log.objects.size() == 1)
@@ -397,13 +346,13 @@ TruthTable read_truth(const Arguments& args, const std::string& truth_path,
   truth_options.fill_gaps = false;
   // The rate fills gaps, which a truth never is, except where it times a box file's frame numbers.
   if (!is_frame_numbered_format(truth_options.format)) truth_options.rate.reset();
-  return TruthTable(read_measurement_log(truth_path, truth_options),
-                    std::max(log.report.frame_tolerance, kExactTimeTolerance));
+  return GroundTruth(read_measurement_log(truth_path, truth_options).frames,
+                     std::max(log.report.frame_tolerance, kExactTimeTolerance));
 }
 
 /// Every estimator over every seed, each printed as its seeds end: the first table.
 std::vector<Row> run_every_estimator(const EvaluateRequest& r, const MeasurementLog& log,
-                                     const TruthTable& truth, std::size_t& unscored) {
+                                     const GroundTruth& truth, std::size_t& unscored) {
   if (r.seeds == 1)
     std::printf("errors against the truth, each run's mean over frames (1 seed: no spread)\n");
   else
@@ -468,7 +417,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   if (log.objects.size() > 1 && assumes_top_down_camera(r.settings) &&
       std::find(r.names.begin(), r.names.end(), "opf") != r.names.end())
     std::cerr << missing_camera_warning("evaluate");
-  const TruthTable truth = read_truth(args, r.truth_path, log);
+  const GroundTruth truth = read_truth(args, r.truth_path, log);
   require_truth_for_every_estimate(log, truth, r.truth_path);
 
   std::printf("opf evaluate: %s, %zu frames, %zu objects, %zu %s, %zu + %zu particles\n\n",

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -124,6 +126,81 @@ TEST_F(OpfProgram, TrackWritesTheFullCovarianceOnRequest) {
   // The variance columns are the squares of the std columns.
   const double std_x = std::stod(cell(rows, 5, "std_x"));
   EXPECT_NEAR(std::stod(cell(rows, 5, "cov_x_x")), std_x * std_x, 1e-12 + 1e-9 * std_x * std_x);
+}
+
+// A cup moving at constant velocity and turning at a constant rate about a fixed axis, as a CSV
+// row at t: what a truth at any rate says of it, exactly, when interpolated.
+std::string cup_row(double t) {
+  const Eigen::Vector3d p = Eigen::Vector3d(0.3, 0.2, 0.05) + Eigen::Vector3d(0.6, -0.3, 0.0) * t;
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(1.5 * t, Eigen::Vector3d::UnitZ()));
+  std::ostringstream row;
+  row.precision(17);
+  row << t << ",cup," << p.x() << ',' << p.y() << ',' << p.z() << ',' << q.x() << ',' << q.y()
+      << ',' << q.z() << ',' << q.w() << '\n';
+  return row.str();
+}
+
+void write_cup(const std::filesystem::path& path, const std::vector<double>& times) {
+  std::ofstream out(path);
+  out << "t,object,x,y,z,qx,qy,qz,qw\n";
+  for (double t : times) out << cup_row(t);
+}
+
+std::vector<double> times(int first, int last, double rate, double offset = 0.0) {
+  std::vector<double> out;
+  for (int k = first; k <= last; ++k) out.push_back(offset + k / rate);
+  return out;
+}
+
+// A detector's log at 30 Hz with a 0.5 s gap, scored against motion capture at its own rate:
+// the truth is taken at each estimate's time, so a 100 Hz truth whose rows fall between the
+// log's frames and a 10 Hz one score every estimator as the truth at the log's own times does.
+// Matched to the nearest row instead, the 100 Hz truth is 1 ms (0.7 mm) off every frame, and the
+// 10 Hz one is refused.
+TEST_F(OpfProgram, EvaluateTakesATruthAtItsOwnRateInterpolatedAtEachEstimate) {
+  std::vector<double> log_times;
+  for (double t : times(0, 89, 30.0))
+    if (t < 1.3 || t > 1.8) log_times.push_back(t);
+  write_cup(dir_ / "log.csv", log_times);
+  write_cup(dir_ / "at_the_log.csv", times(0, 89, 30.0));
+  write_cup(dir_ / "mocap_100hz.csv", times(-1, 300, 100.0, 0.001));
+  write_cup(dir_ / "mocap_10hz.csv", times(-1, 30, 10.0, 0.05));
+  const auto table = [&](const std::string& truth) {
+    const auto written = dir_ / (truth + ".table.csv");
+    EXPECT_EQ(run("evaluate --in " + (dir_ / "log.csv").string() + " --truth " +
+                  (dir_ / (truth + ".csv")).string() +
+                  " --estimators cvkf,opf --seeds 2 --particles 300 --out " + written.string()),
+              0)
+        << truth << ": " << err();
+    EXPECT_EQ(out().find("not scored"), std::string::npos) << out();
+    return rows_of(read(written));
+  };
+  const auto reference = table("at_the_log");
+  ASSERT_EQ(reference.size(), 3u);
+  for (std::size_t r = 1; r < reference.size(); ++r)  // the gap's frames are scored
+    EXPECT_GT(std::stod(cell(reference, r, "hidden_translation")), 0.0);
+  for (const std::string truth : {"mocap_100hz", "mocap_10hz"}) {
+    const auto rows = table(truth);
+    ASSERT_EQ(rows.size(), reference.size()) << truth;
+    for (std::size_t r = 1; r < rows.size(); ++r)
+      for (const char* column : {"translation", "hidden_translation", "visible_translation",
+                                 "rotation_geodesic", "hidden_rotation", "nees_translation"})
+        EXPECT_NEAR(std::stod(cell(rows, r, column)), std::stod(cell(reference, r, column)),
+                    1e-9 * (1.0 + std::abs(std::stod(cell(reference, r, column)))))
+            << truth << ", " << cell(rows, r, "estimator") << ", " << column;
+  }
+  // A dropout of the truth is not bridged: a log frame inside it is refused, naming it.
+  std::vector<double> with_dropout;
+  for (double t : times(-1, 300, 100.0, 0.001))
+    if (t < 0.5 || t > 0.8) with_dropout.push_back(t);
+  write_cup(dir_ / "dropout.csv", with_dropout);
+  EXPECT_EQ(run("evaluate --in " + (dir_ / "log.csv").string() + " --truth " +
+                (dir_ / "dropout.csv").string() + " --estimators cvkf --seeds 1"),
+            1);
+  EXPECT_NE(err().find("no ground truth for object 'cup' at t = 0.5 (a dropout of the truth: no "
+                       "rows from 0.491 to 0.801 s"),
+            std::string::npos)
+      << err();
 }
 
 }  // namespace

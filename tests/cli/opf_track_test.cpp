@@ -399,7 +399,7 @@ TEST_F(OpfProgram, EvaluateRefusesMeaninglessRunsBeforeRunning) {
                 " --seeds 1 --estimators cvkf"),
             1);
   EXPECT_NE(err().find(": no ground truth for object 'ball' at t = 3 (its rows run from 0 to "
-                       "2.96667 s; a log frame matches a row within "),
+                       "2.96667 s; beyond them a row within "),
             std::string::npos)
       << err();
   EXPECT_EQ(out(), "");
