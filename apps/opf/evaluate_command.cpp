@@ -6,6 +6,7 @@
 #include "estimator_arguments.h"
 #include "log_arguments.h"
 #include "opf/core/error_accumulator.h"
+#include "opf/core/gap_errors.h"
 #include "opf/core/ground_truth.h"
 #include "opf/core/metrics.h"
 #include "opf/core/random.h"
@@ -51,6 +52,8 @@ std::vector<OptionSpec> specs() {
        "also write the tables: a row per estimator (csv), or with the provenance (json)"},
       {"hidden-profile", "FILE.csv",
        "also write the error against time hidden: a row per estimator and 0.1 s bin"},
+      {"gap-errors", "FILE.csv",
+       "also write the errors per gap of the log: a row per estimator, object and gap"},
       {"alert-distance", "M",
        "the error the alert should announce, for its precision and recall (default 0.1 m)"},
   };
@@ -74,6 +77,7 @@ constexpr const char* kSummary =
 /// The errors of one run, and how many estimates of filled frames had no truth to compare with.
 struct ScoredRun {
   RunErrors errors;
+  std::vector<GapError> gaps;
   std::size_t unscored = 0;
 };
 
@@ -82,6 +86,7 @@ ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const st
                    const std::string& truth_path, double alert_distance) {
   Tracker tracker(make_estimator_factory(name, settings), seed, threads);
   ErrorAccumulator errors(settings.opf.feedback.epsilon_safe, alert_distance);
+  GapErrors gaps;
   ScoredRun run;
   for (const Frame& frame : log.frames) {
     for (const Estimate& estimate : tracker.step(frame)) {
@@ -93,9 +98,13 @@ ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const st
       if (!pose)
         throw std::runtime_error(truth_path + ": " + truth.missing(estimate.object, frame.t));
       errors.add(estimate, *pose);
+      gaps.add(estimate.object, frame.t, frame.find(estimate.object) != nullptr,
+               translation_error(estimate.pose.mean, *pose),
+               rotation_error_geodesic(estimate.pose.mean, *pose));
     }
   }
   run.errors = errors.result();
+  run.gaps = gaps.gaps();
   return run;
 }
 
@@ -148,6 +157,19 @@ struct Row {
       alert_precision, alert_recall;
   /// Error against time hidden over every seed: frames and error sums per 0.1 s bin.
   std::vector<HiddenErrorBin> profile;
+  /// The log's gaps, by start and object: frames and error sums over every seed.
+  std::map<std::pair<double, std::string>, GapError> gaps;
+
+  void add(const ScoredRun& run) {
+    for (const GapError& gap : run.gaps) {
+      auto [it, fresh] = gaps.try_emplace({gap.start, gap.object}, gap);
+      if (fresh) continue;
+      it->second.frames += gap.frames;
+      it->second.translation += gap.translation;
+      it->second.rotation += gap.rotation;
+    }
+    add(run.errors);
+  }
 
   void add(const RunErrors& r) {
     translation.push_back(r.translation);
@@ -216,6 +238,21 @@ void write_hidden_profile(const std::filesystem::path& path, const std::vector<R
             << csv::format_double(static_cast<double>(k + 1) * HiddenErrorProfile::kBinWidth) << ','
             << bin.frames << ',' << csv::format_double(bin.translation / n) << ','
             << csv::format_double(bin.rotation / n) << '\n';
+      }
+  });
+}
+
+/// The errors per gap of the log: a row per estimator, object and gap, pooled over seeds.
+void write_gap_errors(const std::filesystem::path& path, const std::vector<Row>& rows) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "estimator,object,gap_start,gap_end,frames,hidden_translation,hidden_rotation\n";
+    for (const Row& row : rows)
+      for (const auto& [key, gap] : row.gaps) {
+        const auto n = static_cast<double>(gap.frames);
+        out << csv::quote_if_needed(row.name) << ',' << csv::quote_if_needed(gap.object) << ','
+            << csv::format_double(gap.start) << ',' << csv::format_double(gap.end) << ','
+            << gap.frames << ',' << csv::format_double(gap.translation / n) << ','
+            << csv::format_double(gap.rotation / n) << '\n';
       }
   });
 }
@@ -316,11 +353,14 @@ EvaluateRequest evaluate_request(const Arguments& args) {
   require_known_estimators("estimators", r.names);  // all before the first run
   require_extension(args, "out", {".csv", ".json"}, ".csv or .json");
   const std::string config = args.get("config").value_or("");
-  for (const char* output : {"out", "hidden-profile"})
+  for (const char* output : {"out", "hidden-profile", "gap-errors"})
     refuse_output_over_input({"--" + std::string(output), args.get(output).value_or("")},
                              {{"--in", r.in}, {"--truth", r.truth_path}, {"--config", config}});
   refuse_output_over_input({"--hidden-profile", args.get("hidden-profile").value_or("")},
                            {{"--out", args.get("out").value_or("")}});
+  refuse_output_over_input({"--gap-errors", args.get("gap-errors").value_or("")},
+                           {{"--out", args.get("out").value_or("")},
+                            {"--hidden-profile", args.get("hidden-profile").value_or("")}});
   r.seeds = seeds_from(args, r.names.size());
   r.settings = settings_from(args);
   require_camera_for_line_of_sight(r.settings);
@@ -331,6 +371,7 @@ EvaluateRequest evaluate_request(const Arguments& args) {
   if (!(r.alert_distance > 0.0) || !std::isfinite(r.alert_distance))
     throw UsageError{"option '--alert-distance' must be a positive distance in metres"};
   require_extension(args, "hidden-profile", {".csv"}, ".csv");
+  require_extension(args, "gap-errors", {".csv"}, ".csv");
   return r;
 }
 
@@ -369,7 +410,7 @@ std::vector<Row> run_every_estimator(const EvaluateRequest& r, const Measurement
       const ScoredRun run = run_once(log, truth, name, r.settings, derive_seed(r.base_seed, k),
                                      r.threads, r.truth_path, r.alert_distance);
       unscored = std::max(unscored, run.unscored);
-      row.add(run.errors);
+      row.add(run);
     }
     std::printf("%-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
                 cell(mean_std(row.translation)).c_str(), cell(mean_std(row.paper)).c_str(),
@@ -429,6 +470,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   print_hidden_and_visible(rows);
   print_calibration(rows, r.alert_distance);
   if (const auto path = args.get("hidden-profile")) write_hidden_profile(*path, rows);
+  if (const auto path = args.get("gap-errors")) write_gap_errors(*path, rows);
   if (const auto path = args.get("out"))
     write_evaluation(*path, rows,
                      provenance_json(command_line("evaluate", raw), {{"", r.settings}}, 2));

@@ -7,9 +7,12 @@ with every estimator and seed, in parallel across the cores, and writes into OUT
 
   results.csv   tidy: one row per log, preset and estimator (means over seeds)
   profile.csv   the error against time hidden, per log, preset, estimator and 0.1 s bin
+  gaps.csv      the errors per gap of each log, per preset and estimator
   summary.md    per estimator and preset: the geometric mean of its hidden error over the
                 constant-velocity Kalman filter's, the worst row, the share of rows where it is
-                best, the calibration pooled over every hidden frame; then every row
+                best, the calibration pooled over every hidden frame; the geometric mean's
+                95% interval over resampled recordings, the worst row's over its gaps; then
+                every row
   hidden_error_<kind>.png   error against time hidden, one figure per kind of motion
 
 Same inputs and seeds give the same bytes. Metrics: docs/metrics.md; the protocol:
@@ -172,7 +175,7 @@ def evaluate_command(job, opf, estimators, seeds, base, config=None):
     if config is not None:
         command += ["--config", config]
     return command + ["--threads", "1", "--out", base + ".csv",
-                      "--hidden-profile", base + "_profile.csv"]
+                      "--hidden-profile", base + "_profile.csv", "--gap-errors", base + "_gaps.csv"]
 
 
 def evaluate(job, opf, estimators, seeds, runs_dir, config=None):
@@ -183,7 +186,9 @@ def evaluate(job, opf, estimators, seeds, runs_dir, config=None):
         table = list(csv.DictReader(f))
     with open(base + "_profile.csv", newline="") as f:
         profile = list(csv.DictReader(f))
-    return job, table, profile
+    with open(base + "_gaps.csv", newline="") as f:
+        gaps = list(csv.DictReader(f))
+    return job, table, profile, gaps
 
 
 def run_all(jobs, args, runs_dir):
@@ -210,10 +215,11 @@ def number(text):
 
 
 def write_tidy(out, results):
-    """results.csv and profile.csv: one row per log, preset and estimator (and bin)."""
+    """results.csv, profile.csv and gaps.csv: one row per log, preset and estimator (and bin, or
+    gap)."""
     keys = ("sequence", "kind", "rate", "gap", "preset", "estimator")
-    rows, bins = [], []
-    for job, table, profile in results:
+    rows, bins, gaps = [], [], []
+    for job, table, profile, gap_rows in results:
         ident = (job["name"], job["kind"], job["rate"], job["gap"], job["preset"])
         for r in table:
             row = dict(zip(keys, ident + (r["estimator"],)), **{m: number(r[m]) for m in METRICS})
@@ -227,12 +233,18 @@ def write_tidy(out, results):
                              frames=int(b["frames"]),
                              hidden_translation=number(b["hidden_translation"]),
                              hidden_rotation=number(b["hidden_rotation"])))
-    for name, data in (("results.csv", rows), ("profile.csv", bins)):
+        for g in gap_rows:
+            gaps.append(dict(zip(keys, ident + (g["estimator"],)), object=g["object"],
+                             gap_start=number(g["gap_start"]),
+                             gap_end=number(g["gap_end"]), frames=int(g["frames"]),
+                             hidden_translation=number(g["hidden_translation"]),
+                             hidden_rotation=number(g["hidden_rotation"])))
+    for name, data in (("results.csv", rows), ("profile.csv", bins), ("gaps.csv", gaps)):
         with open(os.path.join(out, name), "w", newline="") as f:
             writer = csv.DictWriter(f, fieldnames=list(data[0]), lineterminator="\n")
             writer.writeheader()
             writer.writerows({k: fmt(v) for k, v in r.items()} for r in data)
-    return rows, bins
+    return rows, bins, gaps
 
 
 def fmt(value):
@@ -294,13 +306,41 @@ def geometric_mean_interval(ratios_by_log, draws, level=INTERVAL_LEVEL):
                 count += sums[name][1]
         if count:
             means.append(math.exp(total / count))
-    if not means:
+    return percentile_interval(means, level)
+
+
+def percentile_interval(values, level=INTERVAL_LEVEL):
+    """(low, high): the (1 - level) / 2 and (1 + level) / 2 quantiles of the values; (nan, nan)
+    for none."""
+    if not values:
         return math.nan, math.nan
-    means.sort()
+    values = sorted(values)
     tail = (1.0 - level) / 2.0
-    low = means[int(math.floor(tail * len(means)))]
-    high = means[min(len(means) - 1, int(math.ceil((1.0 - tail) * len(means))) - 1)]
+    low = values[int(math.floor(tail * len(values)))]
+    high = values[min(len(values) - 1, int(math.ceil((1.0 - tail) * len(values))) - 1)]
     return low, high
+
+
+def gap_ratio_interval(mine, reference, resamples=BOOTSTRAP_RESAMPLES, seed=BOOTSTRAP_SEED,
+                       level=INTERVAL_LEVEL):
+    """A log's hidden error over the reference's, with its interval over the log's gaps resampled
+    (seeded): how much the ratio rests on a few of them. mine and reference map a gap (object,
+    start) to (frames, mean error); the gaps both have count. (ratio, low, high, gaps); the
+    interval is (nan, nan) with fewer than two gaps."""
+    sums = [(mine[g][0] * mine[g][1], reference[g][0] * reference[g][1])
+            for g in sorted(set(mine) & set(reference))]
+    total = sum(b for _, b in sums)
+    ratio = sum(a for a, _ in sums) / total if total > 0 else math.nan
+    if len(sums) < 2:
+        return ratio, math.nan, math.nan, len(sums)
+    rng = random.Random(seed)
+    ratios = []
+    for _ in range(resamples):
+        draw = [sums[rng.randrange(len(sums))] for _ in sums]
+        reference_sum = sum(b for _, b in draw)
+        if reference_sum > 0:
+            ratios.append(sum(a for a, _ in draw) / reference_sum)
+    return (ratio, *percentile_interval(ratios, level), len(sums))
 
 
 FRAME_KEYS = ("sequence", "rate", "gap", "preset", "estimator")  # a log, preset and estimator
@@ -318,8 +358,18 @@ def pooled(rows, frames, metric):
     return total / weight if weight > 0 else math.nan
 
 
-def summarise(rows, bins):
-    """Per estimator and preset: ratios over the reference, wins, calibration."""
+def gaps_by_run(gaps):
+    """(sequence, rate, gap, estimator, preset) -> {(object, gap start): (frames, mean error)}."""
+    runs = defaultdict(dict)
+    for g in gaps:
+        runs[(g["sequence"], g["rate"], g["gap"], g["estimator"], g["preset"])][
+            (g["object"], g["gap_start"])] = (g["frames"], g["hidden_translation"])
+    return runs
+
+
+def summarise(rows, bins, gaps=()):
+    """Per estimator and preset: ratios over the reference, wins, calibration; with the gaps, the
+    worst row's interval over its gaps."""
     frames = defaultdict(int)  # hidden frames per log, preset and estimator (over the seeds)
     for b in bins:
         frames[tuple(b[k] for k in FRAME_KEYS)] += b["frames"]
@@ -330,9 +380,10 @@ def summarise(rows, bins):
                      key=lambda e: (PRESETS.index(e[1]), ESTIMATORS.split(",").index(e[0])
                                     if e[0] in ESTIMATORS.split(",") else 99, e[0]))
     draws = bootstrap_draws({recording(log[0]) for log in by_log})
+    gap_runs = gaps_by_run(gaps)
     summary = []
     for entry in entries:
-        ratios, rot_ratios, wins, logs, worst = {}, [], 0, 0, (0.0, "")
+        ratios, rot_ratios, wins, logs, worst, worst_log = {}, [], 0, 0, (0.0, ""), None
         for log, runs in by_log.items():
             if entry not in runs or REFERENCE not in runs:
                 continue
@@ -343,20 +394,32 @@ def summarise(rows, bins):
             rot_ratios.append(mine["hidden_rotation"] / ref["hidden_rotation"]
                               if ref["hidden_rotation"] > 0 else math.nan)
             if ratio > worst[0]:
-                worst = (ratio, "/".join(log))
+                worst, worst_log = (ratio, "/".join(log)), log
             wins += mine["hidden_translation"] <= min(r["hidden_translation"]
                                                       for r in runs.values())
+        worst_gaps = (math.nan, math.nan, 0)
+        if worst_log is not None:
+            _, low, high, count = gap_ratio_interval(gap_runs.get(worst_log + entry, {}),
+                                                     gap_runs.get(worst_log + REFERENCE, {}))
+            worst_gaps = (low, high, count)
         mine_rows = [r for r in rows if (r["estimator"], r["preset"]) == entry]
         summary.append({
             "estimator": entry[0], "preset": entry[1], "rows": logs,
             "hidden_ratio": geometric_mean(ratios.values()),
             "hidden_ratio_interval": geometric_mean_interval(ratios, draws),
             "rotation_ratio": geometric_mean(rot_ratios),
-            "worst": worst[0], "worst_row": worst[1], "best_share": wins / logs if logs else 0,
+            "worst": worst[0], "worst_row": worst[1], "worst_gaps": worst_gaps,
+            "best_share": wins / logs if logs else 0,
             **{m: pooled(mine_rows, frames, m) for m in (
                 "nees_translation", "inside95_translation", "nees_rotation", "inside95_rotation")},
         })
     return summary
+
+
+def gaps_text(s):
+    """The worst row's interval over its gaps, as the table's worst cell adds it."""
+    low, high, count = s.get("worst_gaps", (math.nan, math.nan, 0))
+    return "" if math.isnan(low) else f"; {low:.2f}-{high:.2f} over its {count} gaps"
 
 
 def interval_text(low, high):
@@ -375,7 +438,8 @@ def markdown(summary, rows, args):
              "and the share of hidden frames inside the 95% ellipsoid, pooled over the hidden "
              "frames of every log "
              "(docs/metrics.md). The 95% interval of the geometric mean resamples the "
-             f"recordings the logs were cut from ({BOOTSTRAP_RESAMPLES} draws, seeded)." +
+             f"recordings the logs were cut from, the worst log's its gaps ({BOOTSTRAP_RESAMPLES} "
+             "draws each, seeded)." +
              (f" Estimator settings `{args.config}` on top of each preset." if args.config
               else ""), "",
              "| estimator | preset | logs | hidden error / cvkf (geo. mean) | 95% interval | worst "
@@ -384,7 +448,7 @@ def markdown(summary, rows, args):
              "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for s in summary:
         reference = (s["estimator"], s["preset"]) == REFERENCE
-        worst = "–" if reference else f"{s['worst']:.2f} ({s['worst_row']})"
+        worst = "–" if reference else f"{s['worst']:.2f} ({s['worst_row']}{gaps_text(s)})"
         interval = "–" if reference else interval_text(*s["hidden_ratio_interval"])
         lines.append(f"| {s['estimator']} | {s['preset']} | {s['rows']} | "
                      f"{s['hidden_ratio']:.3f} | {interval} | {worst} | "
@@ -484,8 +548,8 @@ def main():
     print(f"run_benchmark: {len(logs)} logs, {len(args.estimators.split(','))} estimators "
           f"(the paper preset: {', '.join(PAPER_ESTIMATORS)}), {args.seeds} seeds", flush=True)
     results = run_all(jobs, args, runs_dir)
-    rows, bins = write_tidy(out, results)
-    summary = summarise(rows, bins)
+    rows, bins, gaps = write_tidy(out, results)
+    summary = summarise(rows, bins, gaps)
     text = markdown(summary, rows, args)
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write(text)

@@ -68,11 +68,16 @@ TEST_F(OpfProgram, EvaluateWritesCalibrationAndTheErrorAgainstTimeHidden) {
   EXPECT_LT(std::stod(bins[1][4]), std::stod(bins[3][4]));
 }
 
-TEST_F(OpfProgram, EvaluateRefusesABadAlertDistanceOrProfileName) {
+TEST_F(OpfProgram, EvaluateRefusesABadAlertDistanceOrOutputName) {
   EXPECT_EQ(run("evaluate --seeds 1 --estimators cvkf --alert-distance -1"), 2);
   EXPECT_NE(err().find("--alert-distance"), std::string::npos) << err();
   EXPECT_EQ(run("evaluate --seeds 1 --estimators cvkf --hidden-profile p.txt"), 2);
   EXPECT_NE(err().find("--hidden-profile"), std::string::npos) << err();
+  EXPECT_EQ(run("evaluate --seeds 1 --estimators cvkf --gap-errors g.txt"), 2);
+  EXPECT_NE(err().find("--gap-errors"), std::string::npos) << err();
+  const std::string same = (dir_ / "same.csv").string();
+  EXPECT_EQ(run("evaluate --seeds 1 --estimators cvkf --out " + same + " --gap-errors " + same), 2);
+  EXPECT_NE(err().find("--gap-errors"), std::string::npos) << err();
 }
 
 // A mistyped --seeds would run for years: a command makes at most 100 000 runs, seeds times the
@@ -188,6 +193,27 @@ TEST_F(OpfProgram, EvaluateTakesATruthAtItsOwnRateInterpolatedAtEachEstimate) {
         EXPECT_NEAR(std::stod(cell(rows, r, column)), std::stod(cell(reference, r, column)),
                     1e-9 * (1.0 + std::abs(std::stod(cell(reference, r, column)))))
             << truth << ", " << cell(rows, r, "estimator") << ", " << column;
+  }
+  // The gap's errors, pooled over the seeds: the log's one gap (1.3-1.8 s), 16 frames a seed,
+  // whose mean is the table's hidden error.
+  const auto gaps = dir_ / "gaps.csv";
+  ASSERT_EQ(run("evaluate --in " + (dir_ / "log.csv").string() + " --truth " +
+                (dir_ / "mocap_100hz.csv").string() +
+                " --estimators cvkf,opf --seeds 2 --particles 300 --gap-errors " + gaps.string()),
+            0)
+      << err();
+  const auto gap_rows = rows_of(read(gaps));
+  ASSERT_EQ(gap_rows.size(), 3u) << read(gaps);
+  EXPECT_EQ(gap_rows[0],
+            (std::vector<std::string>{"estimator", "object", "gap_start", "gap_end", "frames",
+                                      "hidden_translation", "hidden_rotation"}));
+  for (std::size_t r = 1; r < gap_rows.size(); ++r) {
+    EXPECT_EQ(cell(gap_rows, r, "estimator"), cell(reference, r, "estimator"));
+    EXPECT_NEAR(std::stod(cell(gap_rows, r, "gap_start")), 1.3, 1e-6);
+    EXPECT_NEAR(std::stod(cell(gap_rows, r, "gap_end")), 1.8, 1e-6);
+    EXPECT_EQ(cell(gap_rows, r, "frames"), "32");
+    EXPECT_NEAR(std::stod(cell(gap_rows, r, "hidden_translation")),
+                std::stod(cell(reference, r, "hidden_translation")), 1e-9);
   }
   // A dropout of the truth is not bridged: a log frame inside it is refused, naming it.
   std::vector<double> with_dropout;

@@ -30,7 +30,8 @@ def test_the_settings_file_follows_the_preset_in_every_evaluate():
 def test_without_a_settings_file_the_command_has_none():
     command = bench.evaluate_command(JOB, "opf", "opf,cvkf", 3, "runs/a")
     assert "--config" not in command
-    assert command[-4:] == ["--out", "runs/a.csv", "--hidden-profile", "runs/a_profile.csv"]
+    assert command[-6:] == ["--out", "runs/a.csv", "--hidden-profile", "runs/a_profile.csv",
+                            "--gap-errors", "runs/a_gaps.csv"]
 
 
 def test_a_missing_settings_file_is_refused_by_name(tmp_path):

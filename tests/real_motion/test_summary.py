@@ -90,3 +90,29 @@ def test_the_interval_is_seeded_and_skips_what_it_cannot_take_the_log_of():
     nothing = bench.geometric_mean_interval(ratios_of([("a", math.nan)]),
                                             bench.bootstrap_draws({"a"}))
     assert all(math.isnan(v) for v in nothing)
+
+
+def test_the_worst_rows_interval_resamples_its_gaps():
+    # Three gaps of 10 frames; the OPF 2 cm, 1 cm and 1 cm where cvkf is 1 cm on each: 4/3 over
+    # the row, 1 where a draw has no first gap, 2 where it has only that one.
+    cvkf = {("o", t): (10, 0.01) for t in (1.0, 2.0, 3.0)}
+    opf = {("o", 1.0): (10, 0.02), ("o", 2.0): (10, 0.01), ("o", 3.0): (10, 0.01)}
+    ratio, low, high, count = bench.gap_ratio_interval(opf, cvkf)
+    assert (ratio, low, high, count) == pytest.approx((4 / 3, 1.0, 2.0, 3))
+    # Gaps one run lacks are left out; one gap gives no interval.
+    ratio, low, high, count = bench.gap_ratio_interval({("o", 1.0): (10, 0.02)}, cvkf)
+    assert ratio == pytest.approx(2.0) and count == 1 and math.isnan(low) and math.isnan(high)
+
+
+def test_the_summary_names_the_worst_rows_interval_over_its_gaps():
+    rows = [dict(row("a", "opf", 1.0, 0.9), hidden_translation=0.0133),
+            dict(row("a", "cvkf", 1.0, 0.9), hidden_translation=0.01)]
+    bins = frames("a", "opf", [30]) + frames("a", "cvkf", [30])
+    gaps = [{"sequence": "a", "rate": "native", "gap": "1", "preset": "default",
+             "estimator": estimator, "object": "o", "gap_start": t, "frames": 10,
+             "hidden_translation": error}
+            for estimator, errors in (("opf", (0.02, 0.01, 0.01)), ("cvkf", (0.01,) * 3))
+            for t, error in zip((1.0, 2.0, 3.0), errors)]
+    opf = next(s for s in bench.summarise(rows, bins, gaps) if s["estimator"] == "opf")
+    assert opf["worst_gaps"] == pytest.approx((1.0, 2.0, 3))
+    assert bench.gaps_text(opf) == "; 1.00-2.00 over its 3 gaps"
