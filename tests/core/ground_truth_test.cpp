@@ -10,7 +10,9 @@ namespace {
 
 // The truth of one object at `times`: moving at (1, -0.5, 0.2) m/s from the origin, turning at
 // 2 rad/s about a fixed tilted axis, so that linear interpolation and slerp are exact.
-Eigen::Vector3d position_at(double t) { return Eigen::Vector3d(1.0, -0.5, 0.2) * t; }
+Eigen::Vector3d position_at(double t) {
+  return Eigen::Vector3d(1.0, -0.5, 0.2) * t;
+}
 Eigen::Quaterniond orientation_at(double t) {
   return so3::exp(2.0 * t * Eigen::Vector3d(1.0, 2.0, 2.0).normalized());
 }
@@ -71,12 +73,13 @@ TEST(GroundTruth, BeyondItsRowsARowWithinTheToleranceServes) {
   EXPECT_EQ(translation_of(*truth.at("cup", 0.097)), position_at(0.10));
   EXPECT_FALSE(truth.at("cup", 0.095).has_value());
   EXPECT_FALSE(truth.at("cup", 0.125).has_value());
-  EXPECT_NE(truth.missing("cup", 0.125).find(
-                "(its rows run from 0.1 to 0.12 s; beyond them a row within 0.004 s is taken)"),
-            std::string::npos)
+  EXPECT_NE(
+      truth.missing("cup", 0.125)
+          .find("(its rows run from 0.1 to 0.12 s; beyond them a row within 0.004 s is taken)"),
+      std::string::npos)
       << truth.missing("cup", 0.125);
-  EXPECT_NE(truth.missing("cups", 0.11).find(
-                "the truth has no such object (its objects: cup); did you mean 'cup'?"),
+  EXPECT_NE(truth.missing("cups", 0.11)
+                .find("the truth has no such object (its objects: cup); did you mean 'cup'?"),
             std::string::npos)
       << truth.missing("cups", 0.11);
 }
