@@ -514,14 +514,21 @@ def real_motion_seeds(directory):
 def load_real_motion(directory):
     """The real-motion benchmark in `directory`: (summary, rows). `summary` holds one dict per
     estimator and preset, as run_benchmark.py summarises results.csv and profile.csv (ratios over
-    cvkf, calibration pooled over the hidden frames); `rows` the rows of results.csv."""
+    cvkf with their intervals, calibration pooled over the hidden frames); `rows` the rows of
+    results.csv."""
     bench = _real_motion_script("run_benchmark")
     with open(os.path.join(directory, "results.csv"), newline="") as f:
         rows = [{k: bench.number(v) if k in bench.METRICS else v for k, v in r.items()}
                 for r in csv.DictReader(f)]
     with open(os.path.join(directory, "profile.csv"), newline="") as f:
         bins = [dict(r, frames=int(r["frames"])) for r in csv.DictReader(f)]
-    return bench.summarise(rows, bins), rows
+    gaps = []  # the errors per gap, for the worst log's interval (a run before them has none)
+    if os.path.exists(os.path.join(directory, "gaps.csv")):
+        with open(os.path.join(directory, "gaps.csv"), newline="") as f:
+            gaps = [dict(r, frames=int(r["frames"]), gap_start=float(r["gap_start"]),
+                         hidden_translation=bench.number(r["hidden_translation"]))
+                    for r in csv.DictReader(f)]
+    return bench.summarise(rows, bins, gaps), rows
 
 
 def hidden_ratios(rows, entry=("opf", "default"), reference=("cvkf", "default")):
