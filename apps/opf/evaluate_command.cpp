@@ -74,10 +74,38 @@ constexpr const char* kSummary =
     "95% ellipsoid, of position and orientation), reacquisition after gaps and the alert's\n"
     "precision and recall (definitions: docs/metrics.md).";
 
+/// An estimator's further hypotheses (the OPF's: carried or left, several occluders) over the
+/// hidden frames of a run: in how many the object had more than one, and the translation error of
+/// the hypothesis nearest the truth against the main one's (sums over the hidden frames).
+struct HypothesisTally {
+  std::size_t hidden_frames = 0;
+  std::size_t with_more = 0;
+  double main = 0.0;
+  double nearest = 0.0;
+
+  void add(const Estimate& estimate, const std::vector<Estimate>& hypotheses,
+           const mrpt::poses::CPose3D& truth) {
+    if (estimate.mode == EstimateMode::kMeasured) return;
+    const double main_error = translation_error(estimate.pose.mean, truth);
+    double nearest_error = main_error;
+    bool more = false;
+    for (const Estimate& h : hypotheses) {
+      if (h.object != estimate.object) continue;
+      more = true;
+      nearest_error = std::min(nearest_error, translation_error(h.pose.mean, truth));
+    }
+    ++hidden_frames;
+    with_more += more;
+    main += main_error;
+    nearest += nearest_error;
+  }
+};
+
 /// The errors of one run, and how many estimates of filled frames had no truth to compare with.
 struct ScoredRun {
   RunErrors errors;
   std::vector<GapError> gaps;
+  HypothesisTally hypotheses;
   std::size_t unscored = 0;
 };
 
@@ -101,6 +129,7 @@ ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const st
       gaps.add(estimate.object, frame.t, frame.find(estimate.object) != nullptr,
                translation_error(estimate.pose.mean, *pose),
                rotation_error_geodesic(estimate.pose.mean, *pose));
+      run.hypotheses.add(estimate, tracker.hypotheses(), *pose);
     }
   }
   run.errors = errors.result();
@@ -154,7 +183,9 @@ struct Row {
   std::vector<double> translation, paper, geodesic, hidden_translation, hidden_rotation,
       visible_translation, visible_rotation, coverage, normalised, nees_translation, nees_rotation,
       inside95_translation, inside95_rotation, reacquisition_error, reacquisition_frames,
-      alert_precision, alert_recall;
+      alert_precision, alert_recall, nearest_hidden_translation;
+  /// Further hypotheses over every seed.
+  HypothesisTally hypotheses;
   /// Error against time hidden over every seed: frames and error sums per 0.1 s bin.
   std::vector<HiddenErrorBin> profile;
   /// The log's gaps, by start and object: frames and error sums over every seed.
@@ -168,6 +199,13 @@ struct Row {
       it->second.translation += gap.translation;
       it->second.rotation += gap.rotation;
     }
+    const HypothesisTally& h = run.hypotheses;
+    nearest_hidden_translation.push_back(
+        h.hidden_frames ? h.nearest / static_cast<double>(h.hidden_frames) : std::nan(""));
+    hypotheses.hidden_frames += h.hidden_frames;
+    hypotheses.with_more += h.with_more;
+    hypotheses.main += h.main;
+    hypotheses.nearest += h.nearest;
     add(run.errors);
   }
 
@@ -222,6 +260,7 @@ constexpr Column kColumns[] = {
     {"reacquisition_frames", &Row::reacquisition_frames},
     {"alert_precision", &Row::alert_precision},
     {"alert_recall", &Row::alert_recall},
+    {"nearest_hidden_translation", &Row::nearest_hidden_translation},
 };
 
 /// The error against time hidden: a row per estimator and non-empty 0.1 s bin, pooled over seeds.
@@ -293,6 +332,22 @@ void write_evaluation(const std::filesystem::path& path, const std::vector<Row>&
 }
 
 /// The third table: calibration on hidden frames, reacquisition and the alert as a detector.
+/// For the estimators that kept further hypotheses: in how many hidden frames, and how near the
+/// nearest came (as `opf run` says it of an experiment).
+void print_hypotheses(const std::vector<Row>& rows) {
+  bool first = true;
+  for (const Row& row : rows) {
+    const HypothesisTally& h = row.hypotheses;
+    if (h.with_more == 0) continue;
+    if (std::exchange(first, false)) std::printf("\n");
+    const auto n = static_cast<double>(h.hidden_frames);
+    std::printf(
+        "%-10s more than one hypothesis in %zu of %zu hidden frames; hidden error of the one "
+        "nearest the truth %.5f m (the main one's %.5f m)\n",
+        row.name.c_str(), h.with_more, h.hidden_frames, h.nearest / n, h.main / n);
+  }
+}
+
 void print_calibration(const std::vector<Row>& rows, double alert_distance) {
   std::printf("\n%-10s %-10s %-10s %-10s %-10s %-12s %-12s %-10s %-10s\n", "estimator", "NEES/3 t",
               "in95 t", "NEES/3 r", "in95 r", "reacq. [m]", "settle [fr]", "alert P", "alert R");
@@ -469,6 +524,7 @@ int evaluate_command(const std::vector<std::string>& raw) {
   const std::vector<Row> rows = run_every_estimator(r, log, truth, unscored);
   print_hidden_and_visible(rows);
   print_calibration(rows, r.alert_distance);
+  print_hypotheses(rows);
   if (const auto path = args.get("hidden-profile")) write_hidden_profile(*path, rows);
   if (const auto path = args.get("gap-errors")) write_gap_errors(*path, rows);
   if (const auto path = args.get("out"))

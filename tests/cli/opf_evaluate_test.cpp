@@ -68,6 +68,30 @@ TEST_F(OpfProgram, EvaluateWritesCalibrationAndTheErrorAgainstTimeHidden) {
   EXPECT_LT(std::stod(bins[1][4]), std::stod(bins[3][4]));
 }
 
+// The bundled example's ball is hidden under the mug: the OPF keeps it left or carried, and
+// evaluate says how near the nearest hypothesis came beside the main one's error. An estimator
+// without hypotheses has its nearest error equal to its hidden error, and no line.
+TEST_F(OpfProgram, EvaluateGivesTheNearestHypothesisBesideTheMainOne) {
+  const auto table = dir_ / "table.csv";
+  ASSERT_EQ(run("evaluate --seeds 2 --particles 300 --estimators opf,cvkf --camera 0,0,1,0 --out " +
+                table.string()),
+            0)
+      << err();
+  const std::string text = out();
+  const std::string said = "\nopf        more than one hypothesis in ";
+  const auto at = text.find(said);
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_EQ(text.find("cvkf       more than one hypothesis"), std::string::npos) << text;
+  const auto rows = rows_of(read(table));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(cell(rows, 1, "estimator"), "opf");
+  const double opf_nearest = std::stod(cell(rows, 1, "nearest_hidden_translation"));
+  const double opf_main = std::stod(cell(rows, 1, "hidden_translation"));
+  EXPECT_GT(opf_nearest, 0.0);
+  EXPECT_LT(opf_nearest, opf_main);
+  EXPECT_EQ(cell(rows, 2, "nearest_hidden_translation"), cell(rows, 2, "hidden_translation"));
+}
+
 TEST_F(OpfProgram, EvaluateRefusesABadAlertDistanceOrOutputName) {
   EXPECT_EQ(run("evaluate --seeds 1 --estimators cvkf --alert-distance -1"), 2);
   EXPECT_NE(err().find("--alert-distance"), std::string::npos) << err();

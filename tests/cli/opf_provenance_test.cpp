@@ -100,7 +100,8 @@ TEST_F(OpfProgram, EvaluateWritesItsTablesAsCsvOrJson) {
             "nees_rotation_std,inside95_translation,inside95_translation_std,inside95_rotation,"
             "inside95_rotation_std,reacquisition_error,reacquisition_error_std,"
             "reacquisition_frames,reacquisition_frames_std,alert_precision,alert_precision_std,"
-            "alert_recall,alert_recall_std");
+            "alert_recall,alert_recall_std,nearest_hidden_translation,"
+            "nearest_hidden_translation_std");
   EXPECT_TRUE(contains(csv, "\ncvkf,")) << csv;
   EXPECT_TRUE(contains(csv, "\npf,")) << csv;
   ASSERT_EQ(run(common + (dir_ / "table.json").string()), 0) << err();
