@@ -331,7 +331,6 @@ void write_evaluation(const std::filesystem::path& path, const std::vector<Row>&
   });
 }
 
-/// The third table: calibration on hidden frames, reacquisition and the alert as a detector.
 /// For the estimators that kept further hypotheses: in how many hidden frames, and how near the
 /// nearest came (as `opf run` says it of an experiment).
 void print_hypotheses(const std::vector<Row>& rows) {
@@ -348,6 +347,7 @@ void print_hypotheses(const std::vector<Row>& rows) {
   }
 }
 
+/// The third table: calibration on hidden frames, reacquisition and the alert as a detector.
 void print_calibration(const std::vector<Row>& rows, double alert_distance) {
   std::printf("\n%-10s %-10s %-10s %-10s %-10s %-12s %-12s %-10s %-10s\n", "estimator", "NEES/3 t",
               "in95 t", "NEES/3 r", "in95 r", "reacq. [m]", "settle [fr]", "alert P", "alert R");
