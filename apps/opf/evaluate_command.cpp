@@ -83,10 +83,11 @@ struct HypothesisTally {
   double main = 0.0;
   double nearest = 0.0;
 
-  void add(const Estimate& estimate, const std::vector<Estimate>& hypotheses,
+  /// The main estimate, its translation error against `truth`, and the estimator's further
+  /// hypotheses after the step.
+  void add(const Estimate& estimate, double main_error, const std::vector<Estimate>& hypotheses,
            const mrpt::poses::CPose3D& truth) {
     if (estimate.mode == EstimateMode::kMeasured) return;
-    const double main_error = translation_error(estimate.pose.mean, truth);
     double nearest_error = main_error;
     bool more = false;
     for (const Estimate& h : hypotheses) {
@@ -98,6 +99,14 @@ struct HypothesisTally {
     with_more += more;
     main += main_error;
     nearest += nearest_error;
+  }
+
+  HypothesisTally& operator+=(const HypothesisTally& other) {
+    hidden_frames += other.hidden_frames;
+    with_more += other.with_more;
+    main += other.main;
+    nearest += other.nearest;
+    return *this;
   }
 };
 
@@ -126,10 +135,10 @@ ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const st
       if (!pose)
         throw std::runtime_error(truth_path + ": " + truth.missing(estimate.object, frame.t));
       errors.add(estimate, *pose);
-      gaps.add(estimate.object, frame.t, frame.find(estimate.object) != nullptr,
-               translation_error(estimate.pose.mean, *pose),
+      const double translation = translation_error(estimate.pose.mean, *pose);
+      gaps.add(estimate.object, frame.t, frame.find(estimate.object) != nullptr, translation,
                rotation_error_geodesic(estimate.pose.mean, *pose));
-      run.hypotheses.add(estimate, tracker.hypotheses(), *pose);
+      run.hypotheses.add(estimate, translation, tracker.hypotheses(), *pose);
     }
   }
   run.errors = errors.result();
@@ -202,10 +211,7 @@ struct Row {
     const HypothesisTally& h = run.hypotheses;
     nearest_hidden_translation.push_back(
         h.hidden_frames ? h.nearest / static_cast<double>(h.hidden_frames) : std::nan(""));
-    hypotheses.hidden_frames += h.hidden_frames;
-    hypotheses.with_more += h.with_more;
-    hypotheses.main += h.main;
-    hypotheses.nearest += h.nearest;
+    hypotheses += h;
     add(run.errors);
   }
 

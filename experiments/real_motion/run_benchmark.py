@@ -280,8 +280,8 @@ def recording(sequence):
 
 
 def bootstrap_draws(recordings, resamples=BOOTSTRAP_RESAMPLES, seed=BOOTSTRAP_SEED):
-    """`resamples` draws of len(recordings) recordings with replacement, seeded: the same draws
-    serve every estimator, so their intervals are comparable."""
+    """`resamples` draws of len(recordings) recordings (or gaps) with replacement, seeded: the same
+    draws serve every estimator, so their intervals are comparable."""
     rng = random.Random(seed)
     names = sorted(recordings)
     return [[names[rng.randrange(len(names))] for _ in names] for _ in range(resamples)]
@@ -333,13 +333,11 @@ def gap_ratio_interval(mine, reference, resamples=BOOTSTRAP_RESAMPLES, seed=BOOT
     ratio = sum(a for a, _ in sums) / total if total > 0 else math.nan
     if len(sums) < 2:
         return ratio, math.nan, math.nan, len(sums)
-    rng = random.Random(seed)
     ratios = []
-    for _ in range(resamples):
-        draw = [sums[rng.randrange(len(sums))] for _ in sums]
-        reference_sum = sum(b for _, b in draw)
+    for draw in bootstrap_draws(range(len(sums)), resamples, seed):
+        reference_sum = sum(sums[k][1] for k in draw)
         if reference_sum > 0:
-            ratios.append(sum(a for a, _ in draw) / reference_sum)
+            ratios.append(sum(sums[k][0] for k in draw) / reference_sum)
     return (ratio, *percentile_interval(ratios, level), len(sums))
 
 

@@ -24,6 +24,13 @@ double bridge_of(const std::vector<std::pair<double, mrpt::poses::CPose3D>>& row
   return 2.0 * *middle;
 }
 
+// The first row at or after t.
+template <class Rows>
+auto first_at_or_after(const Rows& rows, double t) {
+  return std::lower_bound(rows.begin(), rows.end(), t,
+                          [](const auto& row, double time) { return row.first < time; });
+}
+
 mrpt::poses::CPose3D interpolate(const mrpt::poses::CPose3D& a, const mrpt::poses::CPose3D& b,
                                  double fraction) {
   const Eigen::Vector3d p = translation_of(a) + fraction * (translation_of(b) - translation_of(a));
@@ -53,10 +60,9 @@ const GroundTruth::Series* GroundTruth::series(const std::string& object) const 
 
 std::optional<mrpt::poses::CPose3D> GroundTruth::at(const std::string& object, double t) const {
   const Series* s = series(object);
-  if (!s || s->rows.empty()) return std::nullopt;
-  const auto& rows = s->rows;
-  const auto after = std::lower_bound(
-      rows.begin(), rows.end(), t, [](const auto& row, double time) { return row.first < time; });
+  if (!s) return std::nullopt;
+  const auto& rows = s->rows;  // an object of the truth has a row at least
+  const auto after = first_at_or_after(rows, t);
   if (after != rows.end() && after->first == t) return after->second;  // a row at t: as it is
   if (after != rows.end() && after != rows.begin()) {
     const auto& [t0, pose0] = *std::prev(after);
@@ -92,8 +98,7 @@ std::string GroundTruth::missing(const std::string& object, double t) const {
     return msg.str();
   }
   const auto& rows = s->rows;
-  const auto after = std::lower_bound(
-      rows.begin(), rows.end(), t, [](const auto& row, double time) { return row.first < time; });
+  const auto after = first_at_or_after(rows, t);
   if (after != rows.begin() && after != rows.end())
     msg << " (a dropout of the truth: no rows from " << std::prev(after)->first << " to "
         << after->first << " s, further apart than twice its median interval, " << s->bridge / 2
