@@ -31,6 +31,8 @@ RotationModelBankOptions rotation_bank_options(const DynamicsOptions& dynamics,
   bank.constant_orientation = holds(dynamics.rotation_models, RotationModel::kConstantOrientation);
   bank.constant_angular_velocity =
       holds(dynamics.rotation_models, RotationModel::kConstantAngularVelocity);
+  bank.damped_angular_velocity =
+      holds(dynamics.rotation_models, RotationModel::kDampedAngularVelocity);
   bank.memory = dynamics.memory;
   bank.observation_noise = observation_noise;
   return bank;

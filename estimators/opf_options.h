@@ -48,9 +48,10 @@ inline constexpr EnumNames<MotionModel, 4> kBankModelNames = {
      {MotionModel::kDampedVelocity, "damped"},
      {MotionModel::kBallistic, "ballistic"}}};
 /// The rotation models' names in `dynamics.rotation_models`.
-inline constexpr EnumNames<RotationModel, 2> kRotationBankModelNames = {
+inline constexpr EnumNames<RotationModel, 3> kRotationBankModelNames = {
     {{RotationModel::kConstantOrientation, "orientation"},
-     {RotationModel::kConstantAngularVelocity, "angular_velocity"}}};
+     {RotationModel::kConstantAngularVelocity, "angular_velocity"},
+     {RotationModel::kDampedAngularVelocity, "damped_angular_velocity"}}};
 
 struct DynamicsOptions {
   DynamicsPredictor predictor = DynamicsPredictor::kBank;
@@ -58,7 +59,8 @@ struct DynamicsOptions {
   std::vector<MotionModel> models = {MotionModel::kConstantPosition, MotionModel::kConstantVelocity,
                                      MotionModel::kDampedVelocity, MotionModel::kBallistic};
   std::vector<RotationModel> rotation_models = {RotationModel::kConstantOrientation,
-                                                RotationModel::kConstantAngularVelocity};
+                                                RotationModel::kConstantAngularVelocity,
+                                                RotationModel::kDampedAngularVelocity};
   /// T_memory (s) of the models' weights (permanence/model_weights.h).
   double memory = 1.0;
   /// The world's up (gravity is -9.81 up m/s^2): the ballistic model, and the occluder module's

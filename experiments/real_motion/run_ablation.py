@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The dynamics module's ablation on the real-motion benchmark: the OPF with its full bank of
 motion models, then with each model removed in turn (`opf.dynamics.models`, and the rotation
-bank's constant angular velocity), on every log of the benchmark (run_benchmark.py's logs and
+bank's two models of a turning body: `opf.dynamics.rotation_models`), on every log of the benchmark (run_benchmark.py's logs and
 protocol), against the constant-velocity Kalman filter.
 
 Writes into OUT:
@@ -30,11 +30,12 @@ bench = importlib.util.module_from_spec(_spec)
 _spec.loader.exec_module(bench)
 
 MODELS = ("position", "velocity", "damped", "ballistic")
-ROTATION_MODELS = ("orientation", "angular_velocity")
+ROTATION_MODELS = ("orientation", "angular_velocity", "damped_angular_velocity")
 # (name, translation models, rotation models): the full bank, then one model out at a time.
 VARIANTS = [("full bank", MODELS, ROTATION_MODELS)] + \
     [(f"without {m}", tuple(x for x in MODELS if x != m), ROTATION_MODELS) for m in MODELS] + \
-    [("without angular_velocity", MODELS, ("orientation",))]
+    [(f"without {m}", MODELS, tuple(x for x in ROTATION_MODELS if x != m))
+     for m in ROTATION_MODELS[1:]]
 
 
 def parse_arguments():

@@ -147,11 +147,11 @@ std::string MixtureParticleMotion::label(const MotionModelBank& translation,
     }
     text += std::string(axis == 0 ? "" : ",") + std::string(model_name(best));
   }
-  const bool turning = rotation.model_weight(RotationModel::kConstantAngularVelocity) >
-                       rotation.model_weight(RotationModel::kConstantOrientation);
-  return text + "/" +
-         std::string(rotation_model_name(turning ? RotationModel::kConstantAngularVelocity
-                                                 : RotationModel::kConstantOrientation));
+  RotationModel likeliest = RotationModel::kConstantOrientation;
+  for (const RotationModel model :
+       {RotationModel::kConstantAngularVelocity, RotationModel::kDampedAngularVelocity})
+    if (rotation.model_weight(model) > rotation.model_weight(likeliest)) likeliest = model;
+  return text + "/" + std::string(rotation_model_name(likeliest));
 }
 
 }  // namespace opf

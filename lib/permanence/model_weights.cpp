@@ -6,6 +6,19 @@
 
 namespace opf {
 
+std::vector<double> equal_model_priors(std::span<const int> model_of_member) {
+  std::vector<int> models(model_of_member.begin(), model_of_member.end());
+  std::sort(models.begin(), models.end());
+  const auto model_count =
+      static_cast<double>(std::unique(models.begin(), models.end()) - models.begin());
+  std::vector<double> priors;
+  for (const int m : model_of_member) {
+    const auto members = std::count(model_of_member.begin(), model_of_member.end(), m);
+    priors.push_back(1.0 / (model_count * static_cast<double>(members)));
+  }
+  return priors;
+}
+
 ModelWeights::ModelWeights(std::vector<double> priors) : weights_(priors.size(), 0.0) {
   double sum = 0.0;
   for (const double p : priors) {

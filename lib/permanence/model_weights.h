@@ -15,6 +15,10 @@ namespace opf {
 /// The floor of a member's probability.
 inline constexpr double kModelWeightFloor = 1e-12;
 
+/// The banks' priors: each model 1 / (number of models), shared equally by its members;
+/// `model_of_member` names each member's model by any integer.
+std::vector<double> equal_model_priors(std::span<const int> model_of_member);
+
 class ModelWeights {
  public:
   /// Starts at the priors (positive, normalised here).

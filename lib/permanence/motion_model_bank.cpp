@@ -71,14 +71,7 @@ MotionModelBank::MotionModelBank(const MotionModelBankOptions& options) : option
     if (options_.ballistic && !(g == 0.0 && options_.constant_velocity))
       add({MotionModel::kBallistic, 0.0, 1.0, g}, kBankAccelerationNoiseBase, false);
 
-    // Each model 1 / model_count, shared equally by its members.
-    std::vector<int> members_of_model(static_cast<std::size_t>(model_count), 0);
-    for (const int m : model_of_member) ++members_of_model[static_cast<std::size_t>(m)];
-    std::vector<double> priors;
-    for (const int m : model_of_member)
-      priors.push_back(1.0 / (static_cast<double>(model_count) *
-                              static_cast<double>(members_of_model[static_cast<std::size_t>(m)])));
-    weights_.emplace_back(std::move(priors));
+    weights_.emplace_back(equal_model_priors(model_of_member));
     filters_[axis].resize(models.size());
   }
 }

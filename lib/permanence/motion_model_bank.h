@@ -58,8 +58,6 @@ inline constexpr std::array<double, 3> kBankIntensityFactors = {0.1, 1.0, 10.0};
 inline constexpr double kBankPositionNoiseBase = 0.01;
 /// The other models' base acceleration density (m/s^2/sqrt(Hz)).
 inline constexpr double kBankAccelerationNoiseBase = 0.3;
-/// The damped model's time constants (s).
-inline constexpr std::array<double, 3> kBankDampingTimeConstants = {0.3, 1.0, 3.0};
 /// The floor of a member's probability (model_weights.h).
 inline constexpr double kBankWeightFloor = kModelWeightFloor;
 

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <stdexcept>
 
 namespace opf {
@@ -24,6 +25,9 @@ inline constexpr double kBankNoiseDof = 1.0;
 inline constexpr int kSurprisesToRestart = 2;
 /// The rotation members' gate: the chi-square 99.9% quantile with 3 degrees of freedom.
 inline constexpr double kRotationGateChiSquare = 16.266;
+/// Both banks' damped models' time constants T (s): a push that dies within a gap (0.3 s) to a
+/// glide (3 s).
+inline constexpr std::array<double, 3> kBankDampingTimeConstants = {0.3, 1.0, 3.0};
 
 struct MotionModelBankOptions {
   /// The models the bank holds (each at its intensity grid); at least one.

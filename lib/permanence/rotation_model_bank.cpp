@@ -22,7 +22,21 @@ std::vector<TangentRotationFilter> members_of(const RotationModelBankOptions& op
       members.emplace_back(
           RotationModel::kConstantAngularVelocity,
           factor * kRotationBankAngularAccelerationNoiseBase * options.intensity_scale);
+  if (options.damped_angular_velocity)
+    for (const double factor : kRotationBankIntensityFactors)
+      for (const double time_constant : kBankDampingTimeConstants)
+        members.emplace_back(
+            RotationModel::kDampedAngularVelocity,
+            factor * kRotationBankAngularAccelerationNoiseBase * options.intensity_scale,
+            time_constant);
   return members;
+}
+
+std::vector<double> priors_of(const std::vector<TangentRotationFilter>& members) {
+  std::vector<int> model_of_member;
+  for (const TangentRotationFilter& f : members)
+    model_of_member.push_back(static_cast<int>(f.model()));
+  return equal_model_priors(model_of_member);
 }
 
 }  // namespace
@@ -31,7 +45,7 @@ RotationModelBank::RotationModelBank(const RotationModelBankOptions& options)
     : options_(options),
       filters_(members_of(options)),
       surprises_(filters_.size(), 0),
-      weights_(std::vector<double>(filters_.size(), 1.0)),  // models x 3 members: equal
+      weights_(priors_of(filters_)),
       log_likelihoods_(filters_.size(), 0.0) {}
 
 void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) {

@@ -6,9 +6,11 @@
 // options.intensity_scale):
 //   constant orientation       q in {0.003, 0.03, 0.3} rad/s/sqrt(Hz)     (0.1, 1, 10 x 0.03)
 //   constant angular velocity  q in {0.1, 1, 10} rad/s^2/sqrt(Hz)         (0.1, 1, 10 x 1)
+//   damped angular velocity    q as constant angular velocity, x T in {0.3, 1, 3} s
 // The bases: an object at rest, held or on a table, wanders by a few hundredths of a radian a
-// second; a turning one changes its rate by about 1 rad/s within a second. Each model has the
-// prior 1/2, shared equally by its three members.
+// second; a turning one changes its rate by about 1 rad/s within a second; a turn of the wrist
+// dies away within a gap (0.3 s), a tossed object's spin glides (3 s), as the translation bank's
+// damped model. Each model has the prior 1 / (number of models), shared equally by its members.
 
 #include "opf/permanence/model_weights.h"
 #include "opf/permanence/motion_model_bank_options.h"

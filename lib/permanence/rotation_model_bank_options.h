@@ -12,6 +12,7 @@ struct RotationModelBankOptions {
   /// The models the bank holds (each at its intensity grid); at least one.
   bool constant_orientation = true;
   bool constant_angular_velocity = true;
+  bool damped_angular_velocity = true;
   /// The weights' memory T_memory (s), as the translation bank's.
   double memory = 1.0;
   /// The measured orientation's noise standard deviation per tangent axis (rad).
@@ -28,6 +29,7 @@ void describe_options(Visitor& v, RotationModelBankOptions& o) {
   v.section("models", [&] {
     v.flag("constant_orientation", o.constant_orientation);
     v.flag("constant_angular_velocity", o.constant_angular_velocity);
+    v.flag("damped_angular_velocity", o.damped_angular_velocity);
   });
   v.number("memory", o.memory, positive("a positive number (s)"));
   v.number("observation_noise", o.observation_noise, positive("a positive number (rad)"));
@@ -39,7 +41,7 @@ void describe_options(Visitor& v, RotationModelBankOptions& o) {
 /// Throws std::invalid_argument naming the first option out of range.
 inline void validate(const RotationModelBankOptions& o) {
   check_options(o, "rotation model bank");
-  if (!o.constant_orientation && !o.constant_angular_velocity)
+  if (!o.constant_orientation && !o.constant_angular_velocity && !o.damped_angular_velocity)
     throw std::invalid_argument(
         "rotation model bank option models must include at least one model, got none");
 }

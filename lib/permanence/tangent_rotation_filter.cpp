@@ -1,12 +1,37 @@
 #include "opf/permanence/tangent_rotation_filter.h"
 
 #include "opf/core/so3.h"
+#include "opf/permanence/constant_position_motion.h"
+#include "opf/permanence/constant_velocity_motion.h"
+#include "opf/permanence/damped_velocity_motion.h"
+
+#include <Eigen/LU>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
 
 namespace opf {
 
 std::string_view rotation_model_name(RotationModel model) {
-  return model == RotationModel::kConstantOrientation ? "constant_orientation"
-                                                      : "constant_angular_velocity";
+  switch (model) {
+    case RotationModel::kConstantOrientation:
+      return "constant_orientation";
+    case RotationModel::kConstantAngularVelocity:
+      return "constant_angular_velocity";
+    case RotationModel::kDampedAngularVelocity:
+      return "damped_angular_velocity";
+  }
+  return "unknown";
+}
+
+TangentRotationFilter::TangentRotationFilter(RotationModel model, double intensity,
+                                             double time_constant)
+    : model_(model), intensity_(intensity), time_constant_(time_constant) {
+  if (model == RotationModel::kDampedAngularVelocity &&
+      !(time_constant > 0.0 && std::isfinite(time_constant)))
+    throw std::invalid_argument(
+        "TangentRotationFilter: damped angular velocity needs a positive time constant (s)");
 }
 
 void TangentRotationFilter::initialise(const Eigen::Quaterniond& orientation,
@@ -14,49 +39,86 @@ void TangentRotationFilter::initialise(const Eigen::Quaterniond& orientation,
                                        const Eigen::Vector3d& rate) {
   orientation_ = orientation.normalized();
   angular_velocity_.setZero();
-  if (model_ == RotationModel::kConstantAngularVelocity) angular_velocity_ = rate;
+  if (has_rate()) angular_velocity_ = rate;
   covariance_.setZero();
   covariance_.topLeftCorner<3, 3>().diagonal().setConstant(orientation_std * orientation_std);
-  if (model_ == RotationModel::kConstantAngularVelocity)
-    covariance_.bottomRightCorner<3, 3>().diagonal().setConstant(rate_std * rate_std);
+  if (has_rate()) covariance_.bottomRightCorner<3, 3>().diagonal().setConstant(rate_std * rate_std);
 }
 
-kalman::LinearModel<6> TangentRotationFilter::step(double dt) const {
-  const double q2 = intensity_ * intensity_;
-  if (model_ == RotationModel::kConstantOrientation) {
-    kalman::LinearModel<6> m{kalman::Matrix<6>::Zero(), kalman::Matrix<6>::Zero()};
-    m.transition.topLeftCorner<3, 3>().setIdentity();
-    m.process_noise.topLeftCorner<3, 3>().diagonal().setConstant(q2 * dt);
-    return m;
+AxisMotionStep TangentRotationFilter::axis_step(double dt) const {
+  switch (model_) {
+    case RotationModel::kConstantOrientation:
+      return constant_position_motion(intensity_, dt);
+    case RotationModel::kConstantAngularVelocity:
+      return constant_velocity_motion(intensity_, dt);
+    case RotationModel::kDampedAngularVelocity:
+      return damped_velocity_motion(intensity_, time_constant_, dt);
   }
-  return {
-      kalman::constant_rate_transition(so3::exp(-angular_velocity_ * dt).toRotationMatrix(), dt),
-      kalman::white_noise_acceleration(intensity_, dt)};
+  return {};
 }
 
 void TangentRotationFilter::predict(double dt) {
-  const kalman::LinearModel<6> m = step(dt);
-  orientation_ = (orientation_ * so3::exp(angular_velocity_ * dt)).normalized();
-  kalman::predict_covariance(covariance_, m.transition, m.process_noise);
+  // Per tangent axis (value, rate) steps by the axis model's F = [1 turn; 0 decay] and Q; the
+  // rate's turn over the step carries the error through the step's own rotation, so over
+  // (dtheta, dw) F = [spin  turn I; 0  decay I], spin = exp(-w turn). With P = [A B; B^T C],
+  // F P F^T is formed by blocks (a 6 x 6 product costs three times as much).
+  const AxisMotionStep axis = axis_step(dt);
+  const double turn = axis.transition(0, 1), decay = axis.transition(1, 1);
+  const Eigen::Quaterniond step_turn = so3::exp(angular_velocity_ * turn);
+  const Eigen::Matrix3d spin = step_turn.conjugate().toRotationMatrix();
+  orientation_ = (orientation_ * step_turn).normalized();
+  angular_velocity_ *= decay;
+  const Eigen::Matrix3d a = covariance_.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d b = covariance_.topRightCorner<3, 3>();
+  const Eigen::Matrix3d c = covariance_.bottomRightCorner<3, 3>();
+  const Eigen::Matrix3d spun_rate = spin * b + turn * c;  // top right of F P
+  Eigen::Matrix3d value = (spin * a + turn * b.transpose()) * spin.transpose() + turn * spun_rate;
+  value = 0.5 * (value + value.transpose()).eval();
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  covariance_.topLeftCorner<3, 3>() = value + axis.process_noise(0, 0) * identity;
+  covariance_.topRightCorner<3, 3>() = decay * spun_rate + axis.process_noise(0, 1) * identity;
+  covariance_.bottomLeftCorner<3, 3>() = covariance_.topRightCorner<3, 3>().transpose();
+  covariance_.bottomRightCorner<3, 3>() = decay * decay * c + axis.process_noise(1, 1) * identity;
 }
 
 kalman::Correction<6, 3> TangentRotationFilter::update(
     const Eigen::Quaterniond& measured, double variance,
     const std::optional<kalman::StudentTNoise>& heavy_tails) {
-  kalman::Matrix<3, 6> h = kalman::Matrix<3, 6>::Zero();
-  h.leftCols<3>().setIdentity();
-  const Eigen::Matrix3d noise = variance * Eigen::Matrix3d::Identity();
+  // H = [I 0]: H P H^T is P's value block and P H^T its value columns X, so the update is
+  // P <- P - X S^-1 X^T with S = A + R, R = variance I, and the correction X S^-1 r.
   const Eigen::Vector3d residual = so3::difference(orientation_, measured);
-  const auto correction =
-      heavy_tails
-          ? kalman::update_covariance_student_t<6, 3>(covariance_, h, noise, residual, *heavy_tails)
-          : kalman::update_covariance<6, 3>(covariance_, h, noise, residual);
+  const Eigen::Matrix3d a = covariance_.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  // S is symmetric positive definite and 3 x 3: its closed-form inverse (cofactors over the
+  // determinant) is as accurate as a factorisation here and a fraction of its cost.
+  const Eigen::Matrix3d s = a + variance * identity;
+  kalman::Correction<6, 3> out;
+  out.innovation = residual;
+  out.squared_distance = residual.dot(s.inverse() * residual);
+  const double log_det = std::log(s.determinant());
+  double noise = variance;
+  if (heavy_tails) {
+    // Student-t noise (linear_kalman.h, update_covariance_student_t): R scaled by the posterior
+    // mean of 1 / w, the density Student-t's.
+    const kalman::StudentTNoise& t = *heavy_tails;
+    out.log_likelihood = t.log_normaliser - 0.5 * log_det -
+                         0.5 * (t.dof + 3.0) * std::log1p(out.squared_distance / t.dof);
+    noise *= (t.dof + out.squared_distance) / (t.dof + 3.0);
+  } else {
+    out.log_likelihood =
+        -0.5 * (out.squared_distance + log_det + 3.0 * std::log(2.0 * std::numbers::pi));
+  }
+  const Eigen::Matrix<double, 6, 3> x = covariance_.leftCols<3>();
+  const Eigen::Matrix<double, 3, 6> gain_transposed =
+      (a + noise * identity).inverse() * x.transpose();
+  out.correction = gain_transposed.transpose() * residual;
+  covariance_ -= x * gain_transposed;
+  covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
   // The reset Jacobian I - [dtheta/2]x is left out, as in the Kalman baselines: a relative
   // O(|dtheta|) change of P.
-  orientation_ = (orientation_ * so3::exp(correction.correction.head<3>())).normalized();
-  if (model_ == RotationModel::kConstantAngularVelocity)
-    angular_velocity_ += correction.correction.tail<3>();
-  return correction;
+  orientation_ = (orientation_ * so3::exp(out.correction.head<3>())).normalized();
+  if (has_rate()) angular_velocity_ += out.correction.tail<3>();
+  return out;
 }
 
 TangentRotationFilter::Prediction TangentRotationFilter::predicted(double horizon) const {

@@ -1,7 +1,7 @@
 #pragma once
 // One orientation model's error-state Kalman filter in the body tangent space: the state is the
 // orientation R and its body-frame angular velocity w, the error (dtheta, dw) with R_true =
-// R exp(dtheta) (core/so3.h), measured by H = [I 0] with isotropic variance (rad^2). Two models:
+// R exp(dtheta) (core/so3.h), measured by H = [I 0] with isotropic variance (rad^2). Three models:
 //
 //   constant orientation       the orientation random-walks, white angular velocity of density
 //                              q (rad/s/sqrt(Hz)): F = [I 0; 0 0], Q = [q^2 dt I 0; 0 0] (w
@@ -9,12 +9,18 @@
 //   constant angular velocity  R <- R exp(w dt), white angular acceleration q
 //                              (rad/s^2/sqrt(Hz)): F = [exp(-w dt) dt I; 0 I] (the error carried
 //                              through the step's own rotation, dw -> dtheta to first order),
-//                              Q = q^2 [dt^3/3 I  dt^2/2 I; dt^2/2 I  dt I].
+//                              Q = q^2 [dt^3/3 I  dt^2/2 I; dt^2/2 I  dt I];
+//   damped angular velocity    the rate an Ornstein-Uhlenbeck process of time constant T (s):
+//                              dw = -w / T dt + q dW, so R <- R exp(w T (1 - e)), w <- e w,
+//                              e = exp(-dt / T); F = [exp(-w T (1 - e))  T (1 - e) I; 0  e I],
+//                              Q per axis damped_velocity_motion.h's.
 //
-// The rotation counterparts of constant position and constant velocity (Bar-Shalom, Li &
-// Kirubarajan 2001, ch. 6, per tangent axis).
+// The rotation counterparts of constant position, constant velocity and damped velocity
+// (Bar-Shalom, Li & Kirubarajan 2001, ch. 6; Singer 1970), per tangent axis: each axis steps by
+// that model's (value, rate) F and Q, the value block turned by the step's own rotation.
 
 #include "opf/core/linear_kalman.h"
+#include "opf/permanence/axis_motion_model.h"
 #include "opf/permanence/rotation_model.h"
 
 #include <Eigen/Core>
@@ -30,10 +36,11 @@ std::string_view rotation_model_name(RotationModel model);
 
 class TangentRotationFilter {
  public:
-  /// `intensity` q: rad/s/sqrt(Hz) for constant orientation, rad/s^2/sqrt(Hz) for constant
-  /// angular velocity.
-  TangentRotationFilter(RotationModel model, double intensity)
-      : model_(model), intensity_(intensity) {}
+  /// `intensity` q: rad/s/sqrt(Hz) for constant orientation, rad/s^2/sqrt(Hz) for the rate
+  /// models.
+  /// `time_constant` T (s): damped angular velocity's (positive), ignored by the others. Throws
+  /// std::invalid_argument for a damped model without a positive, finite T.
+  TangentRotationFilter(RotationModel model, double intensity, double time_constant = 0.0);
 
   /// At `orientation` with std `orientation_std` (rad per tangent axis), the rate zero with std
   /// `rate_std` (rad/s; zero for constant orientation, whose rate is pinned).
@@ -59,17 +66,21 @@ class TangentRotationFilter {
 
   RotationModel model() const { return model_; }
   double intensity() const { return intensity_; }
+  double time_constant() const { return time_constant_; }
   const Eigen::Quaterniond& orientation() const { return orientation_; }
   const Eigen::Vector3d& angular_velocity() const { return angular_velocity_; }
   /// Over the error state (dtheta, dw).
   const kalman::Matrix<6>& covariance() const { return covariance_; }
 
  private:
-  /// F and Q over dt at the current rate.
-  kalman::LinearModel<6> step(double dt) const;
+  /// One tangent axis's (value, rate) step over dt: the model's F and Q.
+  AxisMotionStep axis_step(double dt) const;
+
+  bool has_rate() const { return model_ != RotationModel::kConstantOrientation; }
 
   RotationModel model_;
   double intensity_;
+  double time_constant_;
   Eigen::Quaterniond orientation_ = Eigen::Quaterniond::Identity();
   Eigen::Vector3d angular_velocity_ = Eigen::Vector3d::Zero();  ///< body frame
   kalman::Matrix<6> covariance_ = kalman::Matrix<6>::Identity();

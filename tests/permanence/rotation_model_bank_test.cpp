@@ -28,27 +28,67 @@ RotationModelBank measured(double rate, std::uint64_t seed) {
   return bank;
 }
 
-// Six members: constant orientation at 0.003, 0.03, 0.3 rad/s/sqrt(Hz), constant angular velocity
-// at 0.1, 1, 10 rad/s^2/sqrt(Hz); each model half the prior.
+// Fifteen members: constant orientation at 0.003, 0.03, 0.3 rad/s/sqrt(Hz), constant angular
+// velocity at 0.1, 1, 10 rad/s^2/sqrt(Hz), damped angular velocity at those densities times
+// T = 0.3, 1, 3 s; each model a third of the prior.
 TEST(RotationModelBank, MembersAreTheStatedGrid) {
   const RotationModelBank bank;
-  ASSERT_EQ(bank.members().size(), 6u);
+  ASSERT_EQ(bank.members().size(), 15u);
   const std::vector<double> q = {0.003, 0.03, 0.3, 0.1, 1.0, 10.0};
   for (std::size_t j = 0; j < 6; ++j) {
     EXPECT_NEAR(bank.members()[j].intensity(), q[j], 1e-15) << j;
     EXPECT_EQ(bank.members()[j].model(), j < 3 ? RotationModel::kConstantOrientation
                                                : RotationModel::kConstantAngularVelocity);
   }
-  EXPECT_NEAR(bank.model_weight(RotationModel::kConstantOrientation), 0.5, 1e-12);
+  const std::vector<double> time_constants = {0.3, 1.0, 3.0};
+  for (std::size_t j = 6; j < 15; ++j) {
+    const TangentRotationFilter& member = bank.members()[j];
+    EXPECT_EQ(member.model(), RotationModel::kDampedAngularVelocity) << j;
+    EXPECT_NEAR(member.intensity(), q[3 + (j - 6) / 3], 1e-15) << j;
+    EXPECT_EQ(member.time_constant(), time_constants[(j - 6) % 3]) << j;
+  }
+  for (const RotationModel model :
+       {RotationModel::kConstantOrientation, RotationModel::kConstantAngularVelocity,
+        RotationModel::kDampedAngularVelocity})
+    EXPECT_NEAR(bank.model_weight(model), 1.0 / 3.0, 1e-12);
 }
 
-// A spin at 2 rad/s: constant angular velocity holds nearly all the weight; a still object:
+// A spin at 2 rad/s: the two models of a turning body hold nearly all the weight; a still object:
 // constant orientation holds most of it (on 5 seeds each).
 TEST(RotationModelBank, TheModelThatDrewTheDataWins) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
-    EXPECT_GT(measured(2.0, seed).model_weight(RotationModel::kConstantAngularVelocity), 0.99)
+    const RotationModelBank spinning = measured(2.0, seed);
+    EXPECT_GT(spinning.model_weight(RotationModel::kConstantAngularVelocity) +
+                  spinning.model_weight(RotationModel::kDampedAngularVelocity),
+              0.99)
         << seed;
     EXPECT_GT(measured(0.0, seed).model_weight(RotationModel::kConstantOrientation), 0.5) << seed;
+  }
+}
+
+// Flicks of a wrist: every 0.5 s the body rate jumps to 3 rad/s about a new axis and dies away
+// with a time constant of 0.3 s. Damped angular velocity, the model that drew the data, holds most
+// of the weight at the end (5 seeds).
+TEST(RotationModelBank, FlicksThatDieAwayAreDampedAngularVelocity) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    Random random(seed);
+    RotationModelBankOptions options;
+    options.observation_noise = 0.01;
+    RotationModelBank bank(options);
+    Eigen::Quaterniond truth = Eigen::Quaterniond::Identity();
+    Eigen::Vector3d rate = Eigen::Vector3d::Zero();
+    const double dt = 1.0 / 30.0, decay = std::exp(-dt / 0.3);
+    for (int k = 0; k < 150; ++k) {
+      if (k % 15 == 0) {
+        const Eigen::Vector3d axis(random.normal(), random.normal(), random.normal());
+        rate = 3.0 * axis.normalized();
+      }
+      const Eigen::Vector3d e(random.normal(), random.normal(), random.normal());
+      bank.update(k * dt, truth * so3::exp(0.01 * e));
+      truth = truth * so3::exp(rate * 0.3 * (1.0 - decay));  // the exact turn over dt
+      rate *= decay;
+    }
+    EXPECT_GT(bank.model_weight(RotationModel::kDampedAngularVelocity), 0.5) << seed;
   }
 }
 
@@ -57,9 +97,9 @@ TEST(RotationModelBank, TheModelThatDrewTheDataWins) {
 TEST(RotationModelBank, PredictListsEveryMember) {
   const RotationModelBank bank = measured(2.0, 7);
   const auto prediction = bank.predict(0.5);
-  ASSERT_EQ(prediction.size(), 6u);
+  ASSERT_EQ(prediction.size(), 15u);
   double sum = 0.0;
-  for (std::size_t j = 0; j < 6; ++j) {
+  for (std::size_t j = 0; j < prediction.size(); ++j) {
     sum += prediction[j].weight;
     EXPECT_EQ(prediction[j].weight, bank.weights()[j]);
     if (prediction[j].weight > 0.1) {

@@ -2,6 +2,7 @@
 
 #include "opf/core/random.h"
 #include "opf/core/so3.h"
+#include "opf/permanence/damped_velocity_motion.h"
 
 #include <gtest/gtest.h>
 
@@ -117,6 +118,84 @@ TEST(TangentRotationFilter, AnUpdateMovesAlongTheResidualByTheScalarGainAndIgnor
     EXPECT_NEAR(moved.head<2>().norm(), 0.0, 1e-12) << sign;
     EXPECT_NEAR(filter.covariance()(2, 2), 0.5 * 0.0025, 1e-15) << sign;
     EXPECT_NEAR(filter.covariance()(0, 0), 0.5 * 0.0025, 1e-15) << sign;
+  }
+}
+
+// Damped angular velocity forgets its rate: from w0 about a fixed axis, h s ahead the body has
+// turned by w0 T (1 - exp(-h / T)) and the rate is w0 exp(-h / T), in one step or in ten.
+TEST(TangentRotationFilter, DampedAngularVelocityForgetsItsRate) {
+  const double time_constant = 0.5, h = 0.8;
+  const Eigen::Vector3d rate = 2.0 * kAxis;
+  TangentRotationFilter once(RotationModel::kDampedAngularVelocity, 1.0, time_constant);
+  once.initialise(kStart, 0.05, 1.0, rate);
+  TangentRotationFilter stepped = once;
+  once.predict(h);
+  for (int k = 0; k < 10; ++k) stepped.predict(h / 10.0);
+  const double decay = std::exp(-h / time_constant);
+  const Eigen::Quaterniond expected = kStart * so3::exp(rate * time_constant * (1.0 - decay));
+  EXPECT_LT(so3::angle_between(once.orientation(), expected), 1e-14);
+  EXPECT_LT(so3::angle_between(stepped.orientation(), expected), 1e-13);
+  EXPECT_LT((once.angular_velocity() - decay * rate).norm(), 1e-15);
+  EXPECT_LT((stepped.angular_velocity() - decay * rate).norm(), 1e-14);
+  EXPECT_THROW(TangentRotationFilter(RotationModel::kDampedAngularVelocity, 1.0, 0.0),
+               std::invalid_argument);
+  EXPECT_EQ(rotation_model_name(RotationModel::kDampedAngularVelocity), "damped_angular_velocity");
+}
+
+// At rate zero every tangent axis steps by damped velocity's F and Q (damped_velocity_motion.h):
+// from P = diag(0.0025, 1) per axis, P <- F P F^T + Q.
+TEST(TangentRotationFilter, DampedAngularVelocityStepsEachAxisByTheDampedModel) {
+  const double q = 2.0, time_constant = 0.3, dt = 0.1;
+  TangentRotationFilter filter(RotationModel::kDampedAngularVelocity, q, time_constant);
+  filter.initialise(kStart, 0.05, 1.0);
+  filter.predict(dt);
+  const AxisMotionStep axis = damped_velocity_motion(q, time_constant, dt);
+  Eigen::Matrix2d p0;
+  p0 << 0.0025, 0.0, 0.0, 1.0;
+  const Eigen::Matrix2d expected =
+      axis.transition * p0 * axis.transition.transpose() + axis.process_noise;
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(filter.covariance()(i, i), expected(0, 0), 1e-15) << i;
+    EXPECT_NEAR(filter.covariance()(i, i + 3), expected(0, 1), 1e-15) << i;
+    EXPECT_NEAR(filter.covariance()(i + 3, i + 3), expected(1, 1), 1e-15) << i;
+  }
+  EXPECT_NEAR(filter.covariance()(0, 1), 0.0, 1e-15);
+}
+
+// With T far beyond the horizon the damped model is constant angular velocity.
+TEST(TangentRotationFilter, DampedAngularVelocityWithALongTimeConstantIsConstantRate) {
+  TangentRotationFilter damped(RotationModel::kDampedAngularVelocity, 1.0, 1e6);
+  TangentRotationFilter constant(RotationModel::kConstantAngularVelocity, 1.0);
+  for (TangentRotationFilter* f : {&damped, &constant}) f->initialise(kStart, 0.05, 1.0, kAxis);
+  const auto a = damped.predicted(0.5), b = constant.predicted(0.5);
+  EXPECT_LT(so3::angle_between(a.orientation, b.orientation), 1e-6);
+  EXPECT_TRUE(a.covariance.isApprox(b.covariance, 1e-5)) << a.covariance << "\n" << b.covariance;
+}
+
+// The filter's update, formed by blocks for H = [I 0], is the Kalman core's general update
+// (Joseph form, linear_kalman.h) to rounding: after a turn with a correlated covariance, with
+// Gaussian and with Student-t noise.
+TEST(TangentRotationFilter, TheBlockUpdateIsTheGeneralKalmanUpdate) {
+  for (const bool heavy : {false, true}) {
+    TangentRotationFilter filter(RotationModel::kDampedAngularVelocity, 1.0, 1.0);
+    filter.initialise(kStart, 0.05, 1.0, 2.0 * kAxis);
+    filter.predict(0.2);
+    const Eigen::Quaterniond measured =
+        filter.orientation() * so3::exp(Eigen::Vector3d(0.03, -0.02, 0.05));
+    kalman::Matrix<6> covariance = filter.covariance();
+    kalman::Matrix<3, 6> h = kalman::Matrix<3, 6>::Zero();
+    h.leftCols<3>().setIdentity();
+    const Eigen::Matrix3d noise = 0.0004 * Eigen::Matrix3d::Identity();
+    const Eigen::Vector3d residual = so3::difference(filter.orientation(), measured);
+    const kalman::StudentTNoise t = kalman::student_t_noise<3>(1.0);
+    const auto general =
+        heavy ? kalman::update_covariance_student_t<6, 3>(covariance, h, noise, residual, t)
+              : kalman::update_covariance<6, 3>(covariance, h, noise, residual);
+    const auto block = heavy ? filter.update(measured, 0.0004, t) : filter.update(measured, 0.0004);
+    EXPECT_TRUE(filter.covariance().isApprox(covariance, 1e-12)) << heavy;
+    EXPECT_TRUE(block.correction.isApprox(general.correction, 1e-12)) << heavy;
+    EXPECT_NEAR(block.squared_distance, general.squared_distance, 1e-12) << heavy;
+    EXPECT_NEAR(block.log_likelihood, general.log_likelihood, 1e-12) << heavy;
   }
 }
 
