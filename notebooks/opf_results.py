@@ -112,7 +112,7 @@ def directory_from_env(variable, default):
     return os.environ.get(variable, os.path.join(REPO, default))
 
 
-def benchmark_from_env(default="bench/results/amd-epyc-2cpu-2026-11-28.json"):
+def benchmark_from_env(default="bench/results/amd-epyc-2cpu-2026-12-06.json"):
     """The benchmark report: OPF_BENCH, else the one under bench/results/."""
     return os.environ.get("OPF_BENCH", os.path.join(REPO, default))
 
@@ -447,6 +447,8 @@ def plot_sweep(rows, parameter, metric, ax, series="estimator", log_x=False):
     with error bars of one sample std over seeds (the axis clipped at zero for errors)."""
     summary = summarise(rows, [series, parameter], metric)
     names = list(summary[series].unique())
+    # An earlier call on this axis fixed its limits with set_ylim: scale to every line drawn.
+    ax.autoscale(enable=True, axis="y")
     for name in drawing_order(names):
         group = summary[summary[series] == name]
         x = group[parameter] if log_x else group[parameter].astype(str)  # one step per value

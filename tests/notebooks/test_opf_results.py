@@ -58,3 +58,19 @@ def test_dynamics_ablation_summary_is_a_geometric_mean():
     assert table.loc["without velocity", "translation / cvkf"] == pytest.approx(2.0)
     assert table.loc["without velocity", "driving"] == pytest.approx(4.0)
     assert table.attrs["logs"] == 2
+
+
+def test_sweeps_drawn_on_one_axis_all_show():
+    # Two experiments' sweeps on one axis, the second an order of magnitude above the first: the
+    # axis starts at zero and holds the second's error bars too.
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots()
+    for experiment, error in (("general_op", 0.005), ("baseball", 0.4)):
+        rows = pd.DataFrame({"series": f"opf {experiment}", "kappa": [1.0, 1.0, 2.0, 2.0],
+                             "translation_error": [error, error * 1.1, error, error * 1.1]})
+        opf_results.plot_sweep(rows, "kappa", "translation_error", ax, series="series")
+    low, high = ax.get_ylim()
+    plt.close(fig)
+    assert low == 0.0 and high >= 0.44
