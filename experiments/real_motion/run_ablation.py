@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The dynamics module's ablation on the real-motion benchmark: the OPF with its full bank of
 motion models, then with each model removed in turn (`opf.dynamics.models`, and the rotation
-bank's two models of a turning body: `opf.dynamics.rotation_models`), on every log of the benchmark (run_benchmark.py's logs and
-protocol), against the constant-velocity Kalman filter.
+bank's two models of a turning body in `opf.dynamics.rotation_models`), on every log of the
+benchmark (run_benchmark.py's logs and protocol), against the constant-velocity Kalman filter.
 
 Writes into OUT:
   ablation.csv  tidy: one row per variant and log (means over seeds), with the ratio of the OPF's
