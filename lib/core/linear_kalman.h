@@ -94,6 +94,12 @@ Vector<N> joseph_update(Matrix<N>& covariance, const Matrix<M, N>& observation,
 
 }  // namespace detail
 
+/// log N(r; 0, S) in `dimensions` dimensions from d^2 = r^T S^-1 r and log det S:
+/// -(d^2 + log det S + M log 2 pi) / 2.
+inline double gaussian_log_density(double squared_distance, double log_det, int dimensions) {
+  return -0.5 * (squared_distance + log_det + dimensions * std::log(2.0 * std::numbers::pi));
+}
+
 /// The update for a given innovation r (z - H x for a linear filter, a tangent-space difference
 /// for an error-state one): P <- (I - K H) P (I - K H)^T + K R K^T, symmetrised. The Joseph form
 /// keeps P symmetric positive definite under rounding, which the short form (I - K H) P does not
@@ -107,9 +113,7 @@ Correction<N, M> update_covariance(Matrix<N>& covariance, const Matrix<M, N>& ob
   Correction<N, M> out;
   out.innovation = innovation;
   out.squared_distance = innovation.dot(s.solve(innovation));
-  // log N(r; 0, S) = -(r^T S^-1 r + log det S + M log 2 pi) / 2.
-  out.log_likelihood =
-      -0.5 * (out.squared_distance + s.log_det() + M * std::log(2.0 * std::numbers::pi));
+  out.log_likelihood = gaussian_log_density(out.squared_distance, s.log_det(), M);
   out.correction = detail::joseph_update(covariance, observation, noise, hp, s, innovation);
   return out;
 }
@@ -126,6 +130,21 @@ template <int M>
 StudentTNoise student_t_noise(double dof) {
   return {dof, std::lgamma((dof + M) / 2.0) - std::lgamma(dof / 2.0) -
                    0.5 * M * std::log(dof * std::numbers::pi)};
+}
+
+/// log t_dof(r; 0, S) in `dimensions` dimensions (those `t` was made for) from d^2 = r^T S^-1 r
+/// and log det S.
+inline double student_t_log_density(const StudentTNoise& t, double squared_distance, double log_det,
+                                    int dimensions) {
+  return t.log_normaliser - 0.5 * log_det -
+         0.5 * (t.dof + dimensions) * std::log1p(squared_distance / t.dof);
+}
+
+/// The factor on R of the variational-Bayes step below: the inverse of w's posterior mean,
+/// (dof + d^2) / (dof + M).
+inline double student_t_noise_scale(const StudentTNoise& t, double squared_distance,
+                                    int dimensions) {
+  return (t.dof + squared_distance) / (t.dof + dimensions);
 }
 
 /// The update under Student-t measurement noise, a Gaussian scale mixture: the noise is
@@ -145,9 +164,8 @@ Correction<N, M> update_covariance_student_t(Matrix<N>& covariance, const Matrix
   Correction<N, M> out;
   out.innovation = innovation;
   out.squared_distance = innovation.dot(s.solve(innovation));
-  out.log_likelihood = t.log_normaliser - 0.5 * s.log_det() -
-                       0.5 * (t.dof + M) * std::log1p(out.squared_distance / t.dof);
-  const Matrix<M> scaled = noise * ((t.dof + out.squared_distance) / (t.dof + M));
+  out.log_likelihood = student_t_log_density(t, out.squared_distance, s.log_det(), M);
+  const Matrix<M> scaled = noise * student_t_noise_scale(t, out.squared_distance, M);
   const detail::SymmetricSolver<M> s_scaled(hpht + scaled);
   out.correction = detail::joseph_update(covariance, observation, scaled, hp, s_scaled, innovation);
   return out;

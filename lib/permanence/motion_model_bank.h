@@ -52,8 +52,6 @@
 
 namespace opf {
 
-/// The intensity grid's factors on each model's base density.
-inline constexpr std::array<double, 3> kBankIntensityFactors = {0.1, 1.0, 10.0};
 /// Constant position's base velocity density (m/s/sqrt(Hz)).
 inline constexpr double kBankPositionNoiseBase = 0.01;
 /// The other models' base acceleration density (m/s^2/sqrt(Hz)).

@@ -25,6 +25,8 @@ inline constexpr double kBankNoiseDof = 1.0;
 inline constexpr int kSurprisesToRestart = 2;
 /// The rotation members' gate: the chi-square 99.9% quantile with 3 degrees of freedom.
 inline constexpr double kRotationGateChiSquare = 16.266;
+/// Both banks' intensity grid: the factors on each model's base density.
+inline constexpr std::array<double, 3> kBankIntensityFactors = {0.1, 1.0, 10.0};
 /// Both banks' damped models' time constants T (s): a push that dies within a gap (0.3 s) to a
 /// glide (3 s).
 inline constexpr std::array<double, 3> kBankDampingTimeConstants = {0.3, 1.0, 3.0};

@@ -14,16 +14,16 @@ std::vector<TangentRotationFilter> members_of(const RotationModelBankOptions& op
   validate(options);
   std::vector<TangentRotationFilter> members;
   if (options.constant_orientation)
-    for (const double factor : kRotationBankIntensityFactors)
+    for (const double factor : kBankIntensityFactors)
       members.emplace_back(RotationModel::kConstantOrientation,
                            factor * kRotationBankOrientationNoiseBase * options.intensity_scale);
   if (options.constant_angular_velocity)
-    for (const double factor : kRotationBankIntensityFactors)
+    for (const double factor : kBankIntensityFactors)
       members.emplace_back(
           RotationModel::kConstantAngularVelocity,
           factor * kRotationBankAngularAccelerationNoiseBase * options.intensity_scale);
   if (options.damped_angular_velocity)
-    for (const double factor : kRotationBankIntensityFactors)
+    for (const double factor : kBankIntensityFactors)
       for (const double time_constant : kBankDampingTimeConstants)
         members.emplace_back(
             RotationModel::kDampedAngularVelocity,

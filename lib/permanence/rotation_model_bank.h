@@ -20,14 +20,12 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include <array>
 #include <span>
 #include <string_view>
 #include <vector>
 
 namespace opf {
 
-inline constexpr std::array<double, 3> kRotationBankIntensityFactors = {0.1, 1.0, 10.0};
 /// Constant orientation's base angular-velocity density (rad/s/sqrt(Hz)).
 inline constexpr double kRotationBankOrientationNoiseBase = 0.03;
 /// Constant angular velocity's base angular-acceleration density (rad/s^2/sqrt(Hz)).

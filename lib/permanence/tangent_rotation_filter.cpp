@@ -8,7 +8,6 @@
 #include <Eigen/LU>
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 namespace opf {
@@ -92,25 +91,24 @@ kalman::Correction<6, 3> TangentRotationFilter::update(
   // S is symmetric positive definite and 3 x 3: its closed-form inverse (cofactors over the
   // determinant) is as accurate as a factorisation here and a fraction of its cost.
   const Eigen::Matrix3d s = a + variance * identity;
+  const Eigen::Matrix3d s_inverse = s.inverse();
   kalman::Correction<6, 3> out;
   out.innovation = residual;
-  out.squared_distance = residual.dot(s.inverse() * residual);
+  out.squared_distance = residual.dot(s_inverse * residual);
   const double log_det = std::log(s.determinant());
-  double noise = variance;
+  Eigen::Matrix3d gain_inverse = s_inverse;  // S^-1 of the noise the update takes
   if (heavy_tails) {
     // Student-t noise (linear_kalman.h, update_covariance_student_t): R scaled by the posterior
     // mean of 1 / w, the density Student-t's.
-    const kalman::StudentTNoise& t = *heavy_tails;
-    out.log_likelihood = t.log_normaliser - 0.5 * log_det -
-                         0.5 * (t.dof + 3.0) * std::log1p(out.squared_distance / t.dof);
-    noise *= (t.dof + out.squared_distance) / (t.dof + 3.0);
-  } else {
     out.log_likelihood =
-        -0.5 * (out.squared_distance + log_det + 3.0 * std::log(2.0 * std::numbers::pi));
+        kalman::student_t_log_density(*heavy_tails, out.squared_distance, log_det, 3);
+    const double scale = kalman::student_t_noise_scale(*heavy_tails, out.squared_distance, 3);
+    gain_inverse = (a + variance * scale * identity).inverse();
+  } else {
+    out.log_likelihood = kalman::gaussian_log_density(out.squared_distance, log_det, 3);
   }
   const Eigen::Matrix<double, 6, 3> x = covariance_.leftCols<3>();
-  const Eigen::Matrix<double, 3, 6> gain_transposed =
-      (a + noise * identity).inverse() * x.transpose();
+  const Eigen::Matrix<double, 3, 6> gain_transposed = gain_inverse * x.transpose();
   out.correction = gain_transposed.transpose() * residual;
   covariance_ -= x * gain_transposed;
   covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
