@@ -61,7 +61,11 @@ void TangentRotationFilter::predict(double dt) {
   // rate's turn over the step carries the error through the step's own rotation, so over
   // (dtheta, dw) F = [spin  turn I; 0  decay I], spin = exp(-w turn). With P = [A B; B^T C],
   // F P F^T is formed by blocks (a 6 x 6 product costs three times as much).
-  const AxisMotionStep axis = axis_step(dt);
+  if (dt != step_dt_) {
+    step_ = axis_step(dt);
+    step_dt_ = dt;
+  }
+  const AxisMotionStep& axis = step_;
   const double turn = axis.transition(0, 1), decay = axis.transition(1, 1);
   const Eigen::Quaterniond step_turn = so3::exp(angular_velocity_ * turn);
   const Eigen::Matrix3d spin = step_turn.conjugate().toRotationMatrix();

@@ -81,6 +81,9 @@ class TangentRotationFilter {
   RotationModel model_;
   double intensity_;
   double time_constant_;
+  /// The axis step of the last predict's dt, reused while frames keep one rate.
+  double step_dt_ = -1.0;
+  AxisMotionStep step_;
   Eigen::Quaterniond orientation_ = Eigen::Quaterniond::Identity();
   Eigen::Vector3d angular_velocity_ = Eigen::Vector3d::Zero();  ///< body frame
   kalman::Matrix<6> covariance_ = kalman::Matrix<6>::Identity();

@@ -142,6 +142,21 @@ TEST(TangentRotationFilter, DampedAngularVelocityForgetsItsRate) {
   EXPECT_EQ(rotation_model_name(RotationModel::kDampedAngularVelocity), "damped_angular_velocity");
 }
 
+// A step is reused while the interval repeats and made afresh when it changes: after 0.1, 0.1,
+// 0.35 and 0.1 s the rate has decayed by exp(-0.65 / T) and the body turned by w0 T (1 - that), as
+// in one step of 0.65 s; a stale 0.1 s step in place of the 0.35 s one would leave exp(-0.4 / T).
+TEST(TangentRotationFilter, ARepeatedIntervalReusesItsStepAndANewOneDoesNot) {
+  const double time_constant = 0.5;
+  const Eigen::Vector3d rate = 2.0 * kAxis;
+  TangentRotationFilter stepped(RotationModel::kDampedAngularVelocity, 1.0, time_constant);
+  stepped.initialise(kStart, 0.05, 1.0, rate);
+  for (const double dt : {0.1, 0.1, 0.35, 0.1}) stepped.predict(dt);
+  const double decay = std::exp(-0.65 / time_constant);
+  const Eigen::Quaterniond expected = kStart * so3::exp(rate * time_constant * (1.0 - decay));
+  EXPECT_LT((stepped.angular_velocity() - decay * rate).norm(), 1e-14);
+  EXPECT_LT(so3::angle_between(stepped.orientation(), expected), 1e-13);
+}
+
 // At rate zero every tangent axis steps by damped velocity's F and Q (damped_velocity_motion.h):
 // from P = diag(0.0025, 1) per axis, P <- F P F^T + Q.
 TEST(TangentRotationFilter, DampedAngularVelocityStepsEachAxisByTheDampedModel) {
