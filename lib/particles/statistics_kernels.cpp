@@ -93,7 +93,7 @@ OPF_ALWAYS_INLINE std::array<double, 6> tangent(const float* __restrict q, std::
       });
     else
       in_lanes<16>(size, [&](std::size_t j, std::size_t l) OPF_INLINE_LAMBDA {
-        add(begin, j, l, 2.0f * vmath::atan2_nonnegative_over_y(std::sqrt(t[j]), vw[j]));
+        add(begin, j, l, 2.0f * vmath::atan2_unit_over_y_of_square(t[j], vw[j]));
       });
   }
   return sums.totals();
