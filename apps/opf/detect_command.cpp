@@ -105,7 +105,7 @@ DetectRequest detect_request(const Arguments& args) {
                            {{"--video", r.video.string()}, {"--objects", r.spec_path.string()}});
   r.rate = args.get_number("rate");
   // As the log reader's limit: a log at a lower rate would be refused as not in seconds.
-  if (r.rate && !(*r.rate >= kMinFrameRate))
+  if (r.rate && !is_frame_rate(*r.rate))
     throw UsageError{"option '--rate' expects " + std::string(kFrameRateExpectation)};
   r.first = args.get_count("first").value_or(0);
   if (const auto count = args.get_count("frames")) {

@@ -25,7 +25,7 @@ std::optional<double> box_frame_rate(const std::string& path) {
       if (!line.empty() && line.back() == '\r') line.pop_back();
       if (line.rfind("frameRate=", 0) != 0) continue;
       const auto rate = csv::parse_double(line.substr(10));
-      if (rate && *rate >= kMinFrameRate && std::isfinite(*rate)) return rate;
+      if (rate && is_frame_rate(*rate)) return rate;
     }
   }
   return std::nullopt;
@@ -99,7 +99,7 @@ LogReadOptions log_read_options(const LogArguments& a, const std::string& path,
     options.frame_tolerance = *a.frame_tolerance;
   }
   if (a.rate) {
-    if (!(*a.rate >= kMinFrameRate) || !std::isfinite(*a.rate))
+    if (!is_frame_rate(*a.rate))
       refuse(name("rate"), " expects " + std::string(kFrameRateExpectation));
     options.rate = *a.rate;
   }

@@ -106,9 +106,16 @@ inline constexpr double kMaxPlausibleInterval = 10.0;
 /// Hz: the lowest frame rate a command takes (--rate), frames at most kMaxPlausibleInterval
 /// apart; a log at a lower rate would be refused as not in seconds.
 inline constexpr double kMinFrameRate = 1.0 / kMaxPlausibleInterval;
-/// What an error says a rate must be, wherever kMinFrameRate is checked.
+/// Hz: the highest, frames 1 ns apart: the finest clock a log format here stores (EuRoC's integer
+/// nanoseconds); no camera or motion-capture system comes near it.
+inline constexpr double kMaxFrameRate = 1e9;
+/// Whether `hz` is a frame rate a command takes: within [kMinFrameRate, kMaxFrameRate].
+inline constexpr bool is_frame_rate(double hz) {
+  return hz >= kMinFrameRate && hz <= kMaxFrameRate;
+}
+/// What an error says a rate must be, wherever is_frame_rate is checked.
 inline constexpr std::string_view kFrameRateExpectation =
-    "a frame rate in Hz of at least 0.1 (frames at most 10 s apart)";
+    "a frame rate in Hz from 0.1 to 1e9 (frames 10 s to 1 ns apart)";
 /// Gaps longer than this (s) are not filled (reported instead): a clock jump, not a dropout.
 inline constexpr double kMaxFilledGap = 10.0;
 /// More frames than this in one gap are not filled either: a period of microseconds over seconds

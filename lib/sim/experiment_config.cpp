@@ -276,7 +276,7 @@ ExperimentConfig parse_experiment(const std::string& yaml_text, const std::strin
   yaml.get_positive("rate", config.rate);
   // As a log's (io/log_read_options.h): frames further apart are not a tracking run, and a rate
   // near zero makes the frame interval overflow.
-  yaml.require("rate", config.rate >= kMinFrameRate, std::string(kFrameRateExpectation));
+  yaml.require("rate", is_frame_rate(config.rate), std::string(kFrameRateExpectation));
   std::size_t frames = 0;
   yaml.get_positive("frames", frames);
   // The frame counter is an int: a larger count would wrap around to a few frames or none.

@@ -314,14 +314,19 @@ TEST_F(OpfProgram, BadCommandLinesFailWithAMessageOnStderr) {
     EXPECT_NE(err().find("'--particles' must be a positive integer below 2^31"), std::string::npos)
         << err();
   }
-  // Frames more than 10 s apart: the log reader would take such times as not in seconds.
+  // Frames more than 10 s apart: the log reader would take such times as not in seconds; less
+  // than 1 ns apart: finer than any log format's clock.
   const std::string rate =
-      "'--rate' expects a frame rate in Hz of at least 0.1 (frames at most "
-      "10 s apart)";
-  EXPECT_EQ(run("track --in " + kData + "example_log.csv --out x --rate 0.05"), 2);
-  EXPECT_NE(err().find(rate), std::string::npos) << err();
-  EXPECT_EQ(run("detect --video v.mp4 --objects s.yaml --out x.csv --rate 1e-300"), 2);
-  EXPECT_NE(err().find(rate), std::string::npos) << err();
+      "'--rate' expects a frame rate in Hz from 0.1 to 1e9 (frames 10 s to 1 ns apart)";
+  for (const char* hz : {"0.05", "2e9"}) {
+    EXPECT_EQ(run("track --in " + kData + "example_log.csv --out x --rate " + hz), 2) << hz;
+    EXPECT_NE(err().find(rate), std::string::npos) << err();
+  }
+  for (const char* hz : {"1e-300", "1e12"}) {
+    EXPECT_EQ(run("detect --video v.mp4 --objects s.yaml --out x.csv --rate " + std::string(hz)), 2)
+        << hz;
+    EXPECT_NE(err().find(rate), std::string::npos) << err();
+  }
 }
 
 TEST_F(OpfProgram, MissingInputFileFailsWithoutWritingOutput) {

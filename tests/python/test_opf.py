@@ -406,7 +406,7 @@ def test_track_log_refuses_a_bad_option_in_opf_tracks_words(tmp_path, options, f
         f"opf track: option '{flag[0]}': {message} (see 'opf track --help')\n", 2)
 
 
-RATE = "a frame rate in Hz of at least 0.1 (frames at most 10 s apart)"
+RATE = "a frame rate in Hz from 0.1 to 1e9 (frames 10 s to 1 ns apart)"
 
 
 def test_track_log_refuses_the_other_bad_options_by_name():
@@ -414,6 +414,7 @@ def test_track_log_refuses_the_other_bad_options_by_name():
         ({"rate": 0}, f"option 'rate' expects {RATE}"),
         ({"rate": 0.09}, f"option 'rate' expects {RATE}"),
         ({"rate": math.inf}, f"option 'rate' expects {RATE}"),
+        ({"rate": 1e12}, f"option 'rate' expects {RATE}"),
         ({"frame_tolerance": -0.1}, "option 'frame_tolerance' expects seconds >= 0"),
         ({"rate": 20, "fill": False}, "options 'rate' and 'fill=False' contradict each other: "
                                       "rate sets the rate gaps are filled at"),

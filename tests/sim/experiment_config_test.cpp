@@ -130,13 +130,14 @@ TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {
   }
 
   // A rate near zero made the frame interval overflow (the run ended in an unrelated error);
-  // the bound is the log reader's: frames at most 10 s apart.
-  for (const char* rate : {"rate: 1e-300", "rate: 0.09"}) {
+  // the bounds are the log reader's: frames 10 s to 1 ns apart.
+  for (const char* rate : {"rate: 1e-300", "rate: 0.09", "rate: 1.1e9"}) {
     e = error_of(kMinimal + rate + "\n");
     EXPECT_EQ(e.field(), "rate") << rate;
     EXPECT_EQ(e.line(), 10u) << rate;
   }
   EXPECT_EQ(parse_experiment(kMinimal + "rate: 0.1\n", "tiny.yaml").rate, 0.1);
+  EXPECT_EQ(parse_experiment(kMinimal + "rate: 1e9\n", "tiny.yaml").rate, 1e9);
   // Noise past kMaxNoise (1e6) turns the detections' and the estimates' squares into inf.
   e = error_of(kMinimal + "measurement: {position_noise: 1e308}\n");
   EXPECT_EQ(e.field(), "measurement.position_noise");
