@@ -67,87 +67,115 @@ std::vector<std::string> replay_lines(const std::filesystem::path& settings_file
   return lines;
 }
 
-int run_experiments(const std::vector<std::string>& paths, const Arguments& args,
-                    const std::string& command, const std::filesystem::path& out) {
-  const auto names =
-      args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
-  require_known_estimators("estimators", names);  // before any rendering
-  const std::size_t seeds = seeds_from(args, names.size() * paths.size());
-  settings_from(args);  // a bad --config fails before any rendering
-  const std::uint64_t seed = seed_from(args);
-  const std::size_t threads = threads_from(args);
-  const std::size_t first_seed = args.get_count("first-seed").value_or(0);
-  const std::optional<std::size_t> frames = args.get_count("frames");
-  if (frames && *frames == 0) throw UsageError{"option '--frames' must be at least 1"};
-  const bool with_figures = !args.has("no-figures");
-  const bool with_measurements = args.has("measurements");
+// What `opf run` and `opf reproduce` were asked for, checked before any rendering.
+struct RunRequest {
+  std::vector<std::string> names;
+  std::size_t seeds = 0;
+  std::uint64_t seed = 0;
+  std::size_t threads = 1;
+  std::size_t first_seed = 0;
+  std::optional<std::size_t> frames;
+  bool with_figures = true;
+  bool with_measurements = false;
+  experiments::Progress progress;
+};
 
+RunRequest run_request(const Arguments& args, std::size_t experiment_count) {
+  RunRequest r;
+  r.names = args.has("estimators") ? split_list(*args.get("estimators")) : estimator_names();
+  require_known_estimators("estimators", r.names);
+  r.seeds = seeds_from(args, r.names.size() * experiment_count);
+  settings_from(args);  // a bad --config fails here too
+  r.seed = seed_from(args);
+  r.threads = threads_from(args);
+  r.first_seed = args.get_count("first-seed").value_or(0);
+  r.frames = args.get_count("frames");
+  if (r.frames && *r.frames == 0) throw UsageError{"option '--frames' must be at least 1"};
+  r.with_figures = !args.has("no-figures");
+  r.with_measurements = args.has("measurements");
+  // A progress line redrawn in place: on a terminal only, so that no escape codes reach a file.
+  if (!args.has("quiet") && isatty(STDERR_FILENO) != 0)
+    r.progress = [](const std::string& line) { std::cerr << "\r\033[K" << line << std::flush; };
+  else
+    r.progress = [](const std::string&) {};
+  return r;
+}
+
+// What the experiments' runs leave to write and print.
+struct RunOutputs {
   std::vector<experiments::ExperimentResults> all;
   std::vector<std::pair<std::string, EstimatorSettings>> effective;  // per experiment
   std::vector<std::filesystem::path> figures;
   std::size_t logs = 0;
   std::vector<std::string> replays;
+};
+
+void run_experiment(const std::string& path, const Arguments& args, const RunRequest& r,
+                    const std::filesystem::path& out, RunOutputs& o) {
+  sim::ExperimentConfig config = sim::load_experiment(path);
+  if (r.frames) {
+    if (*r.frames > static_cast<std::size_t>(config.frames))
+      throw UsageError{"option '--frames': " + path + " has " + std::to_string(config.frames) +
+                       " frames"};
+    config.frames = static_cast<int>(*r.frames);
+  }
+  const EstimatorSettings settings =
+      with_experiment_camera(settings_from(args, config.paper_preset_config), config);
+  o.effective.emplace_back(config.name, settings);
+  if (config.closed_loop && r.with_measurements)
+    throw UsageError{"option '--measurements': " + path +
+                     " is a closed loop, whose detections depend on the estimator driving the "
+                     "robot; the measurement logs are written for open-loop experiments"};
+  experiments::Observation observation;
+  if (config.closed_loop) {
+    o.all.push_back(experiments::run_closed_loop(config, r.names, settings, r.seeds, r.seed,
+                                                 r.progress, r.threads, r.first_seed));
+  } else {
+    observation = experiments::observe_experiment(config, r.progress);
+    o.all.push_back(experiments::run_open_loop(config, observation, r.names, settings, r.seeds,
+                                               r.seed, r.progress, r.threads, r.first_seed));
+  }
+  if (r.with_measurements) {
+    const auto written = experiments::write_measurement_logs(out, config, observation, r.seed,
+                                                             r.first_seed, r.seeds);
+    o.logs += written.size();
+    const std::filesystem::path settings_file = out / (config.name + "_settings.yaml");
+    write_file_atomically(settings_file,
+                          [&](std::ostream& file) { file << dump_estimator_settings(settings); });
+    for (auto& line : replay_lines(settings_file, written, r.seed, r.first_seed))
+      o.replays.push_back(std::move(line));
+  }
+  if (r.with_figures)
+    for (auto& figure : experiments::write_figures(out, config, observation, o.all.back()))
+      o.figures.push_back(std::move(figure));
+}
+
+void write_results(const RunOutputs& o, const RunRequest& r, const std::string& command,
+                   const std::filesystem::path& out) {
+  // The runs CSV last: its presence tells a sweep that this run finished.
+  for (const auto& results : o.all)
+    experiments::write_records_csv(out / (results.experiment + "_frames.csv"), results);
+  experiments::write_summary_json(out / "summary.json", o.all,
+                                  provenance_json(command, o.effective, 2));
+  for (const auto& results : o.all)
+    experiments::write_runs_csv(out / (results.experiment + "_runs.csv"), results);
+  experiments::print_results_table(std::cout, o.all);
+  std::cout << "\nper-frame and per-run results, summary.json, " << o.figures.size()
+            << " figure files (PNG, SVG)";
+  if (r.with_measurements) std::cout << ", " << o.logs << " measurement logs and their settings";
+  std::cout << " written to " << out.string() << "\n";
+  for (const std::string& line : o.replays) std::cout << line << '\n';
+}
+
+int run_experiments(const std::vector<std::string>& paths, const Arguments& args,
+                    const std::string& command, const std::filesystem::path& out) {
+  const RunRequest request = run_request(args, paths.size());
   require_folder({"--out", out.string()});
   std::filesystem::create_directories(out);
-  // A progress line redrawn in place: on a terminal only, so that no escape codes reach a file.
-  const bool show_progress = !args.has("quiet") && isatty(STDERR_FILENO) != 0;
-  const auto progress = [show_progress](const std::string& line) {
-    if (show_progress) std::cerr << "\r\033[K" << line << std::flush;
-  };
-  for (const std::string& path : paths) {
-    sim::ExperimentConfig config = sim::load_experiment(path);
-    if (frames) {
-      if (*frames > static_cast<std::size_t>(config.frames))
-        throw UsageError{"option '--frames': " + path + " has " + std::to_string(config.frames) +
-                         " frames"};
-      config.frames = static_cast<int>(*frames);
-    }
-    const EstimatorSettings settings =
-        with_experiment_camera(settings_from(args, config.paper_preset_config), config);
-    effective.emplace_back(config.name, settings);
-    if (config.closed_loop && with_measurements)
-      throw UsageError{"option '--measurements': " + path +
-                       " is a closed loop, whose detections depend on the estimator driving the "
-                       "robot; the measurement logs are written for open-loop experiments"};
-    if (config.closed_loop) {
-      all.push_back(experiments::run_closed_loop(config, names, settings, seeds, seed, progress,
-                                                 threads, first_seed));
-      if (with_figures)
-        for (auto& figure : experiments::write_figures(out, config, {}, all.back()))
-          figures.push_back(std::move(figure));
-      continue;
-    }
-    const experiments::Observation observation = experiments::observe_experiment(config, progress);
-    all.push_back(experiments::run_open_loop(config, observation, names, settings, seeds, seed,
-                                             progress, threads, first_seed));
-    if (with_measurements) {
-      const auto written =
-          experiments::write_measurement_logs(out, config, observation, seed, first_seed, seeds);
-      logs += written.size();
-      const std::filesystem::path settings_file = out / (config.name + "_settings.yaml");
-      write_file_atomically(settings_file,
-                            [&](std::ostream& file) { file << dump_estimator_settings(settings); });
-      for (auto& line : replay_lines(settings_file, written, seed, first_seed))
-        replays.push_back(std::move(line));
-    }
-    if (with_figures)
-      for (auto& figure : experiments::write_figures(out, config, observation, all.back()))
-        figures.push_back(std::move(figure));
-  }
-  if (show_progress) std::cerr << "\r\033[K";
-  // The runs CSV last: its presence tells a sweep that this run finished.
-  for (const auto& results : all)
-    experiments::write_records_csv(out / (results.experiment + "_frames.csv"), results);
-  experiments::write_summary_json(out / "summary.json", all,
-                                  provenance_json(command, effective, 2));
-  for (const auto& results : all)
-    experiments::write_runs_csv(out / (results.experiment + "_runs.csv"), results);
-  experiments::print_results_table(std::cout, all);
-  std::cout << "\nper-frame and per-run results, summary.json, " << figures.size()
-            << " figure files (PNG, SVG)";
-  if (with_measurements) std::cout << ", " << logs << " measurement logs and their settings";
-  std::cout << " written to " << out.string() << "\n";
-  for (const std::string& line : replays) std::cout << line << '\n';
+  RunOutputs outputs;
+  for (const std::string& path : paths) run_experiment(path, args, request, out, outputs);
+  request.progress("");  // clears the line
+  write_results(outputs, request, command, out);
   return 0;
 }
 
