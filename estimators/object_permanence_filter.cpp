@@ -55,6 +55,15 @@ constexpr double kSubstantialBayesFactor = 3.1622776601683795;  // 10^(1/2)
 // position's squared Mahalanobis distance from the mixture's one-step prediction.
 constexpr double kBankGateChiSquare = 16.266;
 
+// The occluders that carry a hypothesis. With the gate, every probable one (and the object left
+// in place is one more); without it, the paper's rule: the nearest, and O_i' for a runner-up
+// within epsilon_occ.
+std::vector<WeightedOccluder> hypothesis_occluders(const OccluderChoice& choice, bool gate) {
+  if (gate) return probable_occluders(choice, kOccluderHypothesisFloor, kMaxOccluderHypotheses);
+  if (choice.second) return {{*choice.nearest, 0.5}, {*choice.second, 0.5}};
+  return {{*choice.nearest, 1.0}};
+}
+
 }  // namespace
 
 void validate(const OpfOptions& options) {
@@ -354,17 +363,8 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool 
                                            options_.dynamics.up, own.mean, orientation,
                                            candidates[k].object, *candidate_estimates[k], ensemble);
   };
-  // With the gate, every probable occluder carries a hypothesis and the object left in place is
-  // one more; without it, the paper's rule: the nearest, and O_i' for a runner-up within
-  // epsilon_occ.
-  std::vector<WeightedOccluder> occluders;
   const bool with_left = options_.occluder.gate;
-  if (with_left)
-    occluders = probable_occluders(choice, kOccluderHypothesisFloor, kMaxOccluderHypotheses);
-  else if (choice.second)
-    occluders = {{*choice.nearest, 0.5}, {*choice.second, 0.5}};
-  else
-    occluders = {{*choice.nearest, 1.0}};
+  const std::vector<WeightedOccluder> occluders = hypothesis_occluders(choice, with_left);
   const std::size_t k0 = occluders[0].candidate;
   // The occluder's estimate is the last frame's, when this object was still seen.
   hiding_radius_ = hiding_radius(own.mean, candidates[k0].mean, options_.occluder);
