@@ -49,6 +49,7 @@ def main():
     opf_step, pf_step = t.get("BM_EstimatorStep/opf/n:5000"), t.get("BM_EstimatorStep/pf/n:5000")
     show("OPF step, 5000 + 5000 particles", opf_step, 50)
     show("PF step, 5000 + 5000 particles", pf_step, 50)
+    show("OPF step while hidden, 5000 + 5000 particles", t.get("BM_OpfHiddenStep/n:5000"), 50)
     low = fastest(report)
     low_opf, low_pf = low.get("BM_EstimatorStep/opf/n:5000"), low.get("BM_EstimatorStep/pf/n:5000")
     if low_opf and low_pf:
