@@ -5,7 +5,7 @@ The raw files keep their datasets' own formats (TUM, EuRoC/ASL, KITTI, MOTChalle
 they can be checked against the originals; this converter applies one fixed protocol (README.md)
 so that every machine produces the same logs, byte for byte, from the same inputs and seed.
 
-    python3 experiments/real_motion/convert.py --out DIR [--seed N]
+    python3 experiments/real_motion/convert.py --out DIR [--seed N] [--gaps 0.3,0.6,1]
 """
 
 import argparse
@@ -21,7 +21,26 @@ HEADER = "t,object,x,y,z,qx,qy,qz,qw"
 RESAMPLED_HZ = 30.0
 GAP_LENGTHS = (0.3, 0.6, 1.0)  # s, one log per length
 GAP_FIRST = 2.0  # s after the start: the first gap begins here
-GAP_PERIOD = 2.5  # s between gap starts
+GAP_PERIOD = 2.5  # s between gap starts, for gaps up to 1 s
+GAP_VISIBLE = 1.5  # s seen between longer gaps: their period is the length plus this
+MAX_GAP = 30.0  # s: a longer gap leaves a recording excerpt (about a minute) nothing to track
+
+
+def gap_period(length):
+    """Seconds between gap starts: 2.5, or the gap plus 1.5 s seen where that is longer."""
+    return max(GAP_PERIOD, length + GAP_VISIBLE)
+
+
+def parse_gaps(text):
+    """'0.3,0.6,1' -> (0.3, 0.6, 1.0): gap lengths in seconds, each in (0, 30], none twice."""
+    try:
+        gaps = tuple(float(g) for g in text.split(","))
+    except ValueError:
+        raise ConvertError(f"--gaps {text!r}: expected seconds separated by commas, as 0.3,0.6,1")
+    if not all(0.0 < g <= MAX_GAP for g in gaps) or len(set(gaps)) != len(gaps):
+        raise ConvertError(f"--gaps {text!r}: expected gap lengths in seconds, each above 0 and "
+                           f"at most {MAX_GAP:g}, none twice")
+    return gaps
 POSITION_SIGMA = 0.002  # m per axis
 ROTATION_SIGMA = 0.01  # rad per axis of the rotation-vector noise
 PIXEL = 0.001  # protocol unit: 1 px -> 1 mm, so image motion stays in plausible metres
@@ -212,12 +231,13 @@ def resample(t, p, q, hz=RESAMPLED_HZ):
 
 
 def gap_mask(t, length):
-    """Frames hidden by the synthetic gaps: t (from 0) in [2.0 + 2.5 n, 2.0 + 2.5 n + length)."""
+    """Frames hidden by the synthetic gaps: t (from 0) in [2.0 + P n, 2.0 + P n + length), P the
+    gap_period (2.5 s up to 1 s gaps)."""
     hidden = np.zeros(len(t), dtype=bool)
     start = GAP_FIRST
     while start <= t[-1]:
         hidden |= (t >= start) & (t < start + length)
-        start += GAP_PERIOD
+        start += gap_period(length)
     return hidden
 
 
@@ -262,7 +282,7 @@ def write_log(path, obj, t, p, q):
             f.write(",".join(["%.9g" % ti, obj] + ["%.9g" % v for v in (*pi, *qi)]) + "\n")
 
 
-def convert_trajectory(name, kind, t, p, q, rates, out, seed):
+def convert_trajectory(name, kind, t, p, q, rates, out, seed, gaps=GAP_LENGTHS):
     """One sequence: a truth file per rate and a noisy log per rate and gap length."""
     entries = []
     q = continuous(q)
@@ -275,7 +295,7 @@ def convert_trajectory(name, kind, t, p, q, rates, out, seed):
             raise ConvertError(f"sequence {name}: field rates: unknown rate {rate!r}")
         truth = f"{name}_{rate}_truth.csv"
         write_log(out / truth, name, tr, pr, qr)
-        for length in GAP_LENGTHS:
+        for length in gaps:
             visible = ~gap_mask(tr, length)
             rng = np.random.default_rng(seed_for(name, rate, length, seed))
             pn, qn = add_noise(pr[visible], qr[visible], rng)
@@ -338,7 +358,7 @@ def load_manifest(path):
     return rows
 
 
-def convert_all(out, seed=0, manifest=HERE / "sequences.csv"):
+def convert_all(out, seed=0, manifest=HERE / "sequences.csv", gaps=GAP_LENGTHS):
     """Converts every manifest row into `out` and writes out/index.csv; returns the index rows."""
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -363,7 +383,7 @@ def convert_all(out, seed=0, manifest=HERE / "sequences.csv"):
             t, p, q = read_kitti(path, base / aux if aux else None, label, aux)
         else:
             raise ConvertError(f"{manifest}: sequence {name}: field format: unknown {fmt!r}")
-        entries += convert_trajectory(name, kind, t, p, q, rates, out, seed)
+        entries += convert_trajectory(name, kind, t, p, q, rates, out, seed, gaps)
     with open(out / "index.csv", "w", encoding="utf-8", newline="\n") as f:
         f.write("name,kind,rate,gap,log,truth,frames,hidden_frames,duration\n")
         for e in entries:
@@ -376,9 +396,12 @@ def main(argv=None):
     parser.add_argument("--out", required=True, help="directory for the logs, truths and index.csv")
     parser.add_argument("--seed", type=int, default=0, help="base seed of the noise (default 0)")
     parser.add_argument("--manifest", default=HERE / "sequences.csv", type=Path)
+    parser.add_argument("--gaps", default="0.3,0.6,1",
+                        help="gap lengths in seconds, a log per length (default 0.3,0.6,1); gaps "
+                             "over 1 s are 1.5 s apart")
     args = parser.parse_args(argv)
     try:
-        entries = convert_all(args.out, args.seed, args.manifest)
+        entries = convert_all(args.out, args.seed, args.manifest, parse_gaps(args.gaps))
     except (ConvertError, OSError) as error:
         print(f"convert.py: {error}", file=sys.stderr)
         return 1

@@ -19,7 +19,7 @@ Same inputs and seeds give the same bytes. Metrics: docs/metrics.md; the protoco
 experiments/real_motion/README.md.
 
 Usage: run_benchmark.py OUT_DIR [--subset] [--seeds N] [--estimators A,B] [--jobs N]
-                        [--config FILE.yaml]
+                        [--config FILE.yaml] [--gaps 0.3,0.6,1]
 """
 
 import argparse
@@ -36,6 +36,8 @@ from collections import defaultdict
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.abspath(os.path.join(HERE, "..", ".."))
+sys.path.insert(0, HERE)
+import convert  # noqa: E402  (the protocol's gap lengths and periods)
 sys.path.insert(0, os.path.join(REPO, "notebooks"))
 
 ESTIMATORS = "opf,pf,cvkf,imm,oapf"
@@ -48,8 +50,7 @@ REFERENCE = ("cvkf", "default")  # every ratio is over this estimator's hidden e
 # real-video benchmark segments them (experiments/real_video/*.yaml).
 CLIPS = (("box", "box.mp4", ()), ("vtest", "vtest.avi", ("--first", "450", "--frames", "271")),
          ("cup", "cup.mp4", ()))
-GAPS = ("0.3", "0.6", "1")  # s, named as convert.py names them
-GAP_PERIOD, GAP_START = 2.5, 2.0  # s, as convert.py cuts the recorded trajectories
+GAP_START = 2.0  # s, as convert.py cuts the recorded trajectories
 METRICS = ("hidden_translation", "hidden_rotation", "visible_translation", "visible_rotation",
            "nees_translation", "nees_rotation", "inside95_translation", "inside95_rotation",
            "coverage", "reacquisition_error", "reacquisition_frames", "alert_precision",
@@ -74,7 +75,16 @@ def parse_arguments():
     parser.add_argument("--config", default=None,
                         help="estimator settings (FILE.yaml) for every `opf evaluate`, on top "
                              "of each preset: a sensitivity study; the summary names the file")
+    parser.add_argument("--gaps", default=None,
+                        help="gap lengths in seconds, a log per recording, rate and length "
+                             "(default 0.3,0.6,1); gaps over 1 s are 1.5 s apart")
     args = parser.parse_args()
+    if args.subset and args.gaps is not None:
+        parser.error("--subset runs the 0.6 s gaps only: leave out --gaps")
+    try:
+        args.gaps = convert.parse_gaps(args.gaps or "0.3,0.6,1")
+    except convert.ConvertError as error:
+        parser.error(str(error))
     if args.seeds is None:
         args.seeds = 1 if args.subset else 3
     if args.seeds < 1 or args.jobs < 1:
@@ -95,10 +105,12 @@ def run(command, **kwargs):
     return done.stdout
 
 
-def recorded_logs(out, subset):
-    """The recordings converted by convert.py: rows of its index.csv."""
+def recorded_logs(out, subset, gaps):
+    """The recordings converted by convert.py with gaps of the given lengths: rows of its
+    index.csv."""
     logs_dir = os.path.join(out, "logs")
-    run([sys.executable, os.path.join(HERE, "convert.py"), "--out", logs_dir])
+    run([sys.executable, os.path.join(HERE, "convert.py"), "--out", logs_dir, "--gaps",
+         ",".join(f"{g:g}" for g in gaps)])
     with open(os.path.join(logs_dir, "index.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     for row in rows:
@@ -132,7 +144,7 @@ def find_clip(name):
     return None
 
 
-def video_logs(out, opf, subset):
+def video_logs(out, opf, subset, gaps):
     """OpenCV's three sample clips through `opf detect`, with gaps of the recordings' protocol."""
     rows = []
     clips = CLIPS[:1] if subset else CLIPS
@@ -156,10 +168,11 @@ def video_logs(out, opf, subset):
              *extra])
         with open(truth, newline="") as f:
             first_t = float(next(csv.DictReader(f))["t"])
-        for gap in (("0.6",) if subset else GAPS):
+        for length in ((0.6,) if subset else gaps):
+            gap = f"{length:g}"
             log = os.path.join(video_dir, f"{clip}_{gap}.csv")
             run([opf, "dropout", "--in", truth, "--out", log, "--length", gap, "--period",
-                 str(GAP_PERIOD), "--start", repr(first_t + GAP_START)])
+                 str(convert.gap_period(length)), "--start", repr(first_t + GAP_START)])
             rows.append({"name": clip, "kind": "video", "rate": "native", "gap": gap,
                          "log": log, "truth": truth})
     return rows
@@ -530,9 +543,9 @@ def prepare(args):
     out = os.path.abspath(args.out)
     runs_dir = os.path.join(out, "runs")
     os.makedirs(runs_dir, exist_ok=True)
-    logs = recorded_logs(out, args.subset)
+    logs = recorded_logs(out, args.subset, args.gaps)
     if not args.no_video:
-        logs += video_logs(out, args.opf, args.subset)
+        logs += video_logs(out, args.opf, args.subset, args.gaps)
     return out, runs_dir, logs
 
 

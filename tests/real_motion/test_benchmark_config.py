@@ -1,5 +1,5 @@
-"""The benchmark's --config: the settings file reaches every `opf evaluate`, a missing one is
-refused before anything runs."""
+"""The benchmark's --config and --gaps: the settings file reaches every `opf evaluate`; a missing
+one, bad gap lengths and gaps with the subset are refused before anything runs."""
 
 import importlib.util
 import subprocess
@@ -42,3 +42,15 @@ def test_a_missing_settings_file_is_refused_by_name(tmp_path):
     assert done.returncode == 2
     assert f"--config {missing}: no such settings file" in done.stderr
     assert not (tmp_path / "out").exists()
+
+
+def test_bad_gap_lengths_and_gaps_with_the_subset_are_refused_before_anything_runs(tmp_path):
+    for extra, message in ((["--gaps", "2,x"], "--gaps '2,x': expected seconds"),
+                           (["--gaps", "40"], "each above 0 and at most 30"),
+                           (["--subset", "--gaps", "2"], "--subset runs the 0.6 s gaps only")):
+        done = subprocess.run([sys.executable, str(SCRIPT), str(tmp_path / "out"), "--opf",
+                               sys.executable, *extra], capture_output=True, text=True,
+                              check=False)
+        assert done.returncode == 2, extra
+        assert message in done.stderr, done.stderr
+        assert not (tmp_path / "out").exists()

@@ -69,6 +69,20 @@ def test_gap_windows_hide_exactly_start_to_start_plus_length():
     assert hidden[60] and not hidden[59] and not hidden[69] and hidden[68]  # [2.0, 2.3)
 
 
+def test_longer_gaps_leave_one_and_a_half_seconds_seen_between_them():
+    t = np.arange(0, 601) / 30.0  # 0 .. 20 s at 30 Hz
+    assert convert.gap_period(1.0) == 2.5 and convert.gap_period(4.0) == 5.5
+    hidden = convert.gap_mask(t, 4.0)
+    expected = np.zeros_like(hidden)
+    for start in (2.0, 7.5, 13.0, 18.5):
+        expected |= (t >= start) & (t < start + 4.0)
+    assert (hidden == expected).all()
+    assert convert.parse_gaps("2,4") == (2.0, 4.0)
+    for bad in ("", "2,x", "0", "-1", "31", "2,2"):
+        with pytest.raises(convert.ConvertError, match="--gaps"):
+            convert.parse_gaps(bad)
+
+
 def test_noise_on_visible_rows_only_truth_clean_and_seeded(tmp_path):
     t = np.arange(0, 181) / 30.0
     p = np.column_stack([t, np.zeros_like(t), np.ones_like(t)])
@@ -161,3 +175,10 @@ def test_cli_writes_index_and_is_deterministic(tmp_path):
     index = (tmp_path / "o1" / "index.csv").read_text().splitlines()
     assert len(index) == 1 + 6 + 1 and index[-1].startswith("m,pedestrian,native,occluded,")
     assert "a_30hz_1.csv" in files and "a_native_truth.csv" in files
+    # Other gap lengths: a log per length, named by it; the truths are the same.
+    assert convert.main(["--out", str(tmp_path / "o3"), "--manifest", str(manifest), "--gaps",
+                         "2.5"]) == 0
+    long_gaps = sorted(p.name for p in (tmp_path / "o3").iterdir())
+    assert "a_30hz_2.5.csv" in long_gaps and "a_30hz_1.csv" not in long_gaps
+    assert ((tmp_path / "o3" / "a_native_truth.csv").read_bytes() ==
+            (tmp_path / "o1" / "a_native_truth.csv").read_bytes())
