@@ -165,7 +165,8 @@ void ObjectPermanenceFilter::predict_with_bank_velocity(Hypothesis& h, double dt
   const Eigen::Quaterniond q = history_.back().orientation.normalized();
   const Eigen::Quaterniond turn =
       q * so3::exp(rotation_bank_.angular_velocity() * dt) * q.conjugate();
-  h.filter.predict(dt, translation_bank_.velocity() * dt, turn.normalized());
+  h.filter.predict(dt, translation_bank_.velocity() * dt, turn.normalized(),
+                   translation_bank_.variance_growth(dt), rotation_bank_.variance_growth(dt));
 }
 
 // The detector's jitter is never taken wider than configured (a moving object's differences
@@ -248,8 +249,8 @@ Estimate ObjectPermanenceFilter::update(double t, double dt,
     seen -= extra_noise * bias.mean;
     h.filter.set_translation_extra_noise(extra_noise * std::sqrt(bias.variance));
   }
-  const bool lost = h.filter.update_with_measurement(
-      seen, orientation, hidden_ ? options_.reacquisition_gaussian_share : 0.0);
+  const bool lost =
+      h.filter.update_with_measurement(seen, orientation, options_.gaussian_update_share);
   h.filter.set_translation_extra_noise(0.0);
   const ResampleReport report = h.filter.normalise_and_resample();
   h.motion.reset();

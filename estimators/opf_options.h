@@ -106,13 +106,14 @@ struct OpfOptions {
   ///   configured observation_noise.rotation and that value: a likelihood wider than the
   ///   detector's noise trails every turn by a share of it.
   bool detector_noise = true;
-  /// At the first measurement after a gap, where the translation likelihood would leave fewer
-  /// than this share of the particles effective (the object turns up in the far tail of the
-  /// cloud the gap left), the translation takes the Gaussian posterior of the cloud's moments and
-  /// the measurement instead (PoseParticleFilter::update_with_measurement): reweighted, the cloud
-  /// would collapse onto the few particles nearest the measurement and report their tiny spread
-  /// several centimetres off. 0: always reweight (the paper's).
-  double reacquisition_gaussian_share = 0.01;
+  /// Where a measurement's translation likelihood would leave fewer than this share of the
+  /// particles effective (it falls in the far tail of the cloud: the first one after a gap, or one
+  /// of a slow log whose step the banks could not predict to within the detector's noise), the
+  /// translation takes the Gaussian posterior of the cloud's moments and the measurement instead
+  /// (PoseParticleFilter::update_with_measurement): reweighted, the cloud would collapse onto the
+  /// few particles nearest the measurement and report their tiny spread centimetres off. 0:
+  /// always reweight (the paper's).
+  double gaussian_update_share = 0.01;
   DynamicsOptions dynamics;
   MotionThresholds motion;
   TrajectoryFitOptions trajectory;
@@ -134,7 +135,7 @@ void describe_options(Visitor& v, OpfOptions& o) {
   v.flag("carry_particles", o.carry_particles);
   v.flag("velocity_drift", o.velocity_drift);
   v.flag("detector_noise", o.detector_noise);
-  v.number("reacquisition_gaussian_share", o.reacquisition_gaussian_share,
+  v.number("gaussian_update_share", o.gaussian_update_share,
            between(0.0, 1.0, "a share from 0 to 1"));
   v.section("dynamics", [&] {
     v.choice("predictor", kDynamicsPredictorNames, o.dynamics.predictor);

@@ -135,6 +135,18 @@ void PoseParticleFilter::predict(double dt, const Eigen::Vector3d& translation,
   predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), rotation, noise_);
 }
 
+void PoseParticleFilter::predict(double dt, const Eigen::Vector3d& translation,
+                                 const Eigen::Quaterniond& rotation,
+                                 const Eigen::Vector3d& variance, double rotation_variance) {
+  if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
+  const double walk = options_.process_noise_translation * std::sqrt(dt);
+  const Eigen::Vector3d sigma = variance.cwiseMax(walk * walk).cwiseSqrt();
+  predict_random_walk(translation_, sigma, translation, noise_);
+  const double turn = options_.process_noise_rotation * std::sqrt(dt);
+  predict_random_walk(rotation_, std::sqrt(std::max(turn * turn, rotation_variance)), rotation,
+                      noise_);
+}
+
 void PoseParticleFilter::shift(const Eigen::Vector3d& translation,
                                const Eigen::Quaterniond& rotation) {
   // Row by row: each coordinate is contiguous (structure of arrays), so the add vectorises; a
@@ -223,15 +235,46 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
                                                  const Eigen::Quaterniond& orientation,
                                                  double min_effective_share) {
   if (!(min_effective_share > 0.0)) return update_with_measurement(position, orientation);
+  if (!translation_.weights.uniform())
+    return gaussian_where_degenerate(position, orientation, min_effective_share);
+  // Equal prior weights (every resampled frame): reweight once, and read the share the
+  // likelihood left effective from the posterior weights.
+  reweight_translation(position);
+  const double best = translation_best_exponent_;
+  // The share in single precision, as resampling reads it (1e-7 relative: far finer than any
+  // threshold); NaN, and so not under the share, when no weight is usable.
+  const LogWeights& weights = translation_.weights;
+  const double share = kernels::effective_fraction(weights.log().data(), weights.size());
+  if (beyond_reset_gate(best) || !(best >= kLikelihoodUnderflowExponent) ||
+      !(share < min_effective_share)) {
+    reweight_rotation(orientation);
+    const PortionsReset reset =
+        reset_unreached(position, orientation, best, rotation_best_exponent_);
+    translation_reset_ = reset.translation;
+    translation_gaussian_ = false;
+    return reset.any();
+  }
+  translation_.weights.reset();  // the prior's moments: its weights were equal
+  return take_gaussian_posterior(position, orientation, best);
+}
+
+bool PoseParticleFilter::gaussian_where_degenerate(const Eigen::Vector3d& position,
+                                                   const Eigen::Quaterniond& orientation,
+                                                   double min_effective_share) {
   const Eigen::VectorXd exponents = translation_exponents(position);
   const double best = exponents.maxCoeff();
   const Eigen::ArrayXd log_weights = exponents.array() + translation_.weights.log().array();
   const Eigen::ArrayXd weights = (log_weights - log_weights.maxCoeff()).exp();
   const double effective = weights.sum() * weights.sum() / weights.square().sum();
-  if (beyond_reset_gate(best) ||
+  if (beyond_reset_gate(best) || !(best >= kLikelihoodUnderflowExponent) ||
       !(effective < min_effective_share * static_cast<double>(translation_.size())))
     return update_with_measurement(position, orientation);
+  return take_gaussian_posterior(position, orientation, best);
+}
 
+bool PoseParticleFilter::take_gaussian_posterior(const Eigen::Vector3d& position,
+                                                 const Eigen::Quaterniond& orientation,
+                                                 double best_exponent) {
   const TranslationMoments prior = translation_moments();
   const Eigen::Matrix3d innovation =
       prior.covariance + translation_likelihood_noise_.cwiseAbs2().asDiagonal().toDenseMatrix();
@@ -246,7 +289,7 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   translation_.states = (root.matrixL() * translation_.states).colwise() + mean;
   translation_.columns.setZero();
   translation_reweighted_ = translation_underflow_ = false;
-  translation_best_exponent_ = best;
+  translation_best_exponent_ = best_exponent;
 
   reweight_rotation(orientation);
   const PortionsReset reset = reset_unreached(position, orientation, 0.0, rotation_best_exponent_);

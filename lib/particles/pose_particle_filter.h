@@ -91,6 +91,11 @@ class PoseParticleFilter {
 
   /// shift(translation, rotation), then predict(dt), in one pass over the particles.
   void predict(double dt, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
+  /// The same with the translation's spread per world axis at least sqrt(variance(d)) (m) and
+  /// the rotation's per tangent axis at least sqrt(rotation_variance) (rad): a motion model whose
+  /// step is less certain than the random walk spreads the particles as it does.
+  void predict(double dt, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation,
+               const Eigen::Vector3d& variance, double rotation_variance);
 
   /// Moves every particle rigidly: translation particles by `translation`, rotation particles by
   /// the world-frame rotation `rotation` (q <- rotation * q). The motion model f of paper Eq. 3
@@ -181,6 +186,14 @@ class PoseParticleFilter {
   /// Whether a portion's best exponent (-d^2/2, in sigmas) puts the measurement beyond
   /// options().reset_gate of every particle (never with the gate at 0).
   bool beyond_reset_gate(double best_exponent) const;
+  /// update_with_measurement's share test on weights that are not all equal: the likelihood's
+  /// exponents and the prior's weights together, before anything is changed.
+  bool gaussian_where_degenerate(const Eigen::Vector3d& position,
+                                 const Eigen::Quaterniond& orientation, double min_effective_share);
+  /// The translation portion redrawn from the Gaussian posterior of its moments and the
+  /// measurement; the rotation reweighted.
+  bool take_gaussian_posterior(const Eigen::Vector3d& position,
+                               const Eigen::Quaterniond& orientation, double best_exponent);
 
   PoseParticleFilterOptions options_;
   /// m per axis: options_' value on every axis unless set_translation_likelihood_noise

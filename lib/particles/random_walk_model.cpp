@@ -81,6 +81,11 @@ void predict_random_walk(TranslationParticles& particles, double sigma,
   add_noise(particles, Eigen::Vector3d::Constant(sigma), nullptr, noise, &offset);
 }
 
+void predict_random_walk(TranslationParticles& particles, const Eigen::Vector3d& sigma,
+                         const Eigen::Vector3d& offset, GaussianSampler& noise) {
+  add_noise(particles, sigma, nullptr, noise, &offset);
+}
+
 void predict_random_walk(RotationParticles& particles, double sigma, const Eigen::Quaterniond& turn,
                          GaussianSampler& noise) {
   perturb(particles, sigma, nullptr, noise, &turn);

@@ -21,6 +21,9 @@ void predict_random_walk(RotationParticles& particles, double sigma, GaussianSam
 /// pass over the particles as the random walk: the velocity drift costs no pass of its own.
 void predict_random_walk(TranslationParticles& particles, double sigma,
                          const Eigen::Vector3d& offset, GaussianSampler& noise);
+/// The same with a spread per world axis (sigma(d) for coordinate d).
+void predict_random_walk(TranslationParticles& particles, const Eigen::Vector3d& sigma,
+                         const Eigen::Vector3d& offset, GaussianSampler& noise);
 void predict_random_walk(RotationParticles& particles, double sigma, const Eigen::Quaterniond& turn,
                          GaussianSampler& noise);
 

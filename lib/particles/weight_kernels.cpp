@@ -84,6 +84,19 @@ OPF_KERNEL NormalisedWeights resampling_weights(const double* __restrict log_w,
   return {true, sums[0] * sums[0] / (static_cast<double>(n) * sums[1])};
 }
 
+OPF_KERNEL double effective_fraction(const double* __restrict log_w, std::size_t n) {
+  bool nan = false;
+  const double top = n ? max_value(log_w, n, nan) : 0.0;
+  if (n == 0 || nan || !std::isfinite(top)) return std::numeric_limits<double>::quiet_NaN();
+  const std::array<double, 2> sums = sum_in_lanes<float, 2>(
+      n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) OPF_INLINE_LAMBDA {
+        const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
+        a[0][l] += w;
+        a[1][l] += w * w;
+      });
+  return sums[0] * sums[0] / (static_cast<double>(n) * sums[1]);
+}
+
 OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __restrict linear,
                                    std::size_t n) {
   bool nan = false;

@@ -229,6 +229,34 @@ BankPrediction MotionModelBank::predict(double horizon) const {
   return out;
 }
 
+Eigen::Vector3d MotionModelBank::variance_growth(double horizon) const {
+  if (!initialised_) throw std::logic_error("MotionModelBank: predict() before any update()");
+  Eigen::Vector3d growth;
+  for (int axis = 0; axis < 3; ++axis) {
+    // Moments about the first member's position: far from the origin, squares of positions
+    // would cancel the variances' digits.
+    const double reference = filters_[axis][0].mean[0];
+    const std::span<const double> w = weights(axis);
+    double mean_now = 0.0, square_now = 0.0, mean_ahead = 0.0, square_ahead = 0.0;
+    for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
+      const Filter& f = filters_[axis][j];
+      const AxisMotionStep step =
+          std::abs(horizon - f.step_dt) <= kSameInterval ? f.step : models_[axis][j].step(horizon);
+      const double now = f.mean[0] - reference;
+      const double ahead = (step.transition.row(0) * f.mean)(0, 0) + step.offset[0] - reference;
+      const double variance_ahead =
+          (step.transition.row(0) * f.covariance * step.transition.row(0).transpose())(0, 0) +
+          step.process_noise(0, 0);
+      mean_now += w[j] * now;
+      square_now += w[j] * (f.covariance(0, 0) + now * now);
+      mean_ahead += w[j] * ahead;
+      square_ahead += w[j] * (variance_ahead + ahead * ahead);
+    }
+    growth[axis] = (square_ahead - mean_ahead * mean_ahead) - (square_now - mean_now * mean_now);
+  }
+  return growth;
+}
+
 Eigen::Vector3d MotionModelBank::velocity() const {
   Eigen::Vector3d v = Eigen::Vector3d::Zero();
   for (int axis = 0; axis < 3; ++axis) {

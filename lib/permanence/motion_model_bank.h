@@ -106,6 +106,10 @@ class MotionModelBank {
   /// every member's weight, mean and variance (of the position itself; its measurement adds
   /// options.observation_noise^2).
   BankPrediction predict(double horizon) const;
+  /// How much the predictive mixture's variance per world axis grows from the last update to
+  /// `horizon` s after it (m^2): predict(horizon).variance() less predict(0).variance(), without
+  /// building the mixtures.
+  Eigen::Vector3d variance_growth(double horizon) const;
   /// One member's prediction (its weight included), member indices as members(axis).
   MemberPrediction member_prediction(int axis, std::size_t index, double horizon) const;
 

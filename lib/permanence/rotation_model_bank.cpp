@@ -107,6 +107,14 @@ std::vector<RotationMemberPrediction> RotationModelBank::predict(double horizon)
   return out;
 }
 
+double RotationModelBank::variance_growth(double horizon) const {
+  if (!initialised_) throw std::logic_error("RotationModelBank: predict() before any update()");
+  double growth = 0.0;
+  for (std::size_t j = 0; j < filters_.size(); ++j)
+    growth += weights_.weights()[j] * filters_[j].orientation_variance_growth(horizon);
+  return growth / 3.0;
+}
+
 Eigen::Vector3d RotationModelBank::angular_velocity() const {
   Eigen::Vector3d rate = Eigen::Vector3d::Zero();
   for (std::size_t j = 0; j < filters_.size(); ++j)

@@ -55,6 +55,9 @@ class RotationModelBank {
   Eigen::Vector3d angular_velocity() const;
   /// Every member's prediction `horizon` s (>= 0) after the last update.
   std::vector<RotationMemberPrediction> predict(double horizon) const;
+  /// How much the members' orientation variance grows over `horizon` s, per tangent axis
+  /// (rad^2): sum_k w_k [tr C_k(horizon) - tr C_k(0)] / 3.
+  double variance_growth(double horizon) const;
   RotationMemberPrediction member_prediction(std::size_t index, double horizon) const;
 
   std::span<const TangentRotationFilter> members() const { return filters_; }

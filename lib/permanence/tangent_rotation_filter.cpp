@@ -123,6 +123,17 @@ kalman::Correction<6, 3> TangentRotationFilter::update(
   return out;
 }
 
+double TangentRotationFilter::orientation_variance_growth(double horizon) const {
+  // predict()'s value block is spin A spin^T + turn (B^T spin^T + spin B) + turn^2 C + Q: the
+  // turn leaves A's trace as it is.
+  const AxisMotionStep axis = horizon == step_dt_ ? step_ : axis_step(horizon);
+  const double turn = axis.transition(0, 1);
+  const Eigen::Matrix3d spin = so3::exp(angular_velocity_ * turn).conjugate().toRotationMatrix();
+  return 2.0 * turn * (spin * covariance_.topRightCorner<3, 3>()).trace() +
+         turn * turn * covariance_.bottomRightCorner<3, 3>().trace() +
+         3.0 * axis.process_noise(0, 0);
+}
+
 TangentRotationFilter::Prediction TangentRotationFilter::predicted(double horizon) const {
   TangentRotationFilter ahead = *this;
   ahead.predict(horizon);

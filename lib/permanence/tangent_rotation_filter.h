@@ -63,6 +63,9 @@ class TangentRotationFilter {
     Eigen::Matrix3d covariance;
   };
   Prediction predicted(double horizon) const;
+  /// How much the orientation's tangent covariance grows in trace over `horizon` s (rad^2):
+  /// predicted(horizon).covariance.trace() less the present one's, in closed form.
+  double orientation_variance_growth(double horizon) const;
 
   RotationModel model() const { return model_; }
   double intensity() const { return intensity_; }

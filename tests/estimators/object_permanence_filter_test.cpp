@@ -669,7 +669,7 @@ TEST(ObjectPermanenceFilter, HiddenUncertaintyCoversTheError) {
 
 TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) {
   OpfOptions reweighting;
-  reweighting.reacquisition_gaussian_share = 0.0;
+  reweighting.gaussian_update_share = 0.0;
   double sum_gaussian = 0.0, sum_reweighted = 0.0;
   std::vector<double> gaussian_errors, reweighted_errors;
   const auto spread_of = [](const std::vector<double>& v) {  // standard deviation
@@ -704,6 +704,41 @@ TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) 
   EXPECT_GT(spread_of(reweighted_errors), 2.0 * spread_of(gaussian_errors));
 }
 
+// A car on a 25 m circle at 8 m/s, seen at 5 Hz and at 2 Hz (1.6 and 4 m a frame) with 2 mm
+// noise. The banks predict each step to within centimetres only (the turn), so the particles
+// spread by the banks' one-step growth; where that leaves under 1% of them effective, the
+// measurement updates the cloud's moments as a Kalman filter would. The estimate then keeps to
+// the measurement's own error (3.2 mm on average for 2 mm per axis), at most 1.4 times it: 4.2-4.4
+// mm at 5 Hz, 3.0 at 2 Hz. Spread by the random walk alone (0.05 m/sqrt(s)) the cloud sat a few
+// centimetres from the measurement and the posterior between them: 20-21 mm at 5 Hz; spread by the
+// growth but always reweighted, it collapsed at 2 Hz onto the few particles near the measurement:
+// 15-21 mm.
+TEST(ObjectPermanenceFilter, ACarSeenAtFiveAndTwoHertzIsFollowedToTheDetectorsNoise) {
+  for (const double rate : {5.0, 2.0}) {
+    Scene scene;
+    scene.rate = rate;
+    scene.frames = static_cast<int>(20.0 * rate);
+    constexpr double kRadius = 25.0, kSpeed = 8.0;
+    scene.objects.push_back(
+        {"car",
+         [](double t) {
+           const double a = kSpeed / kRadius * t;
+           return Eigen::Vector3d(kRadius * std::cos(a), kRadius * std::sin(a), 0.0);
+         },
+         [](double t) {
+           return so3::exp(Eigen::Vector3d(0, 0, kSpeed / kRadius * t + M_PI / 2));
+         }});
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+      const SceneRun r = run(scene, opf_factory(OpfOptions{}), seed);
+      double sum = 0.0;
+      int count = 0;
+      for (int k = static_cast<int>(4.0 * rate); k < scene.frames; ++k, ++count)
+        sum += error_at(r, scene, "car", k);
+      EXPECT_LT(sum / count, 1.4 * 0.0032) << rate << " Hz, seed " << seed;
+    }
+  }
+}
+
 // A cup turning at 2.7 rad/s: with the paper's random walk (0.1 rad/sqrt(s)) the particles trail
 // the measurements by a large fraction of a frame's turn every step; the drift by the recent
 // angular velocity removes the lag, leaving the measurement noise (0.01 rad) filtered.
@@ -734,9 +769,10 @@ TEST(ObjectPermanenceFilter, VelocityDriftFollowsAFastTurnWithoutLag) {
 // A detector ten times better than the configured 0.05 rad (0.005 rad per axis, whose geodesic
 // error averages 0.005 E|chi_3| = 0.008 rad), on a cup tilted back and forth by hand (1 rad at
 // 4 rad/s): the likelihood narrowed to the detector's measured jitter follows it within its noise
-// (0.008 rad); the configured one trails the reversals by 0.03 rad (errors against the truth). On
-// a steady turn the configured likelihood's averaging is the better guess (0.004 rad against the
-// adapted 0.0075): the cost of trusting the detector, kept within its noise.
+// (0.0086 rad). So does the configured one (0.0092 rad): at each reversal the rotation bank's
+// one-step growth widens the particles' step, where the random walk alone left them trailing by
+// 0.03 rad. On a steady turn the configured likelihood's averaging is the better guess (0.0035 rad
+// against the adapted 0.0075): the cost of trusting the detector, kept within its noise.
 TEST(ObjectPermanenceFilter, APreciseDetectorIsFollowedAsPreciselyAsItMeasures) {
   const auto mean_rotation_error = [](const Scene& scene, const OpfOptions& options) {
     const SceneRun r = run(scene, opf_factory(options));
@@ -760,7 +796,7 @@ TEST(ObjectPermanenceFilter, APreciseDetectorIsFollowedAsPreciselyAsItMeasures) 
   configured.detector_noise = false;
   const Scene tilted = scene_turning([](double t) { return std::sin(4.0 * t); });
   EXPECT_LT(mean_rotation_error(tilted, adapted), 0.010);
-  EXPECT_GT(mean_rotation_error(tilted, configured), 0.025);
+  EXPECT_LT(mean_rotation_error(tilted, configured), 0.010);
   const Scene steady = scene_turning([](double t) { return 2.7 * t; });
   EXPECT_LT(mean_rotation_error(steady, adapted), 0.009);
   EXPECT_LT(mean_rotation_error(steady, configured), 0.005);

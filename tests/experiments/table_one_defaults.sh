@@ -5,7 +5,7 @@
 # 0.01 m; general_op (paper 0.0114 m) within 0.7x of the paper's (measured 0.45-0.52x over these
 # seeds; 1.17-1.18x with the detections' stated extra noise ignored, opf.detector_noise: false);
 # sugar_drop (paper 0.0213 m, the cube landing in the moving mug) within 0.5x (measured
-# 0.38-0.44x; 1.32-4.00x with it ignored), with the cube in the mug in at least 4 of 5 runs
+# 0.38-0.44x; 1.22-3.28x with it ignored), with the cube in the mug in at least 4 of 5 runs
 # (measured 5).
 #   bash table_one_defaults.sh OPF_BINARY WORK_DIR
 set -euo pipefail

@@ -143,6 +143,64 @@ TEST(PoseParticleFilter, AMeasurementInTheCloudsFarTailTakesTheGaussianPosterior
   EXPECT_FALSE(covered.translation().weights.uniform());
 }
 
+// The share test reads the same whether the prior's weights are known to be equal (every
+// resampled frame: the likelihood's own weights are read) or are stored (their product with the
+// likelihood is read): the same choice and, but for rounding, the same particles.
+TEST(PoseParticleFilter, TheShareTestIsTheSameWithStoredEqualWeights) {
+  const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+  const auto widened = [](bool stored) {
+    PoseParticleFilter filter = small_filter(5000);
+    auto& states = filter.translation().states;
+    const Eigen::Vector3d mean = filter.translation_moments().mean;
+    states = ((states.colwise() - mean) * 2.0).colwise() + mean;
+    if (stored) filter.translation().weights.log();  // written out: no longer known equal
+    return filter;
+  };
+  for (const double offset : {0.08, 0.0}) {
+    PoseParticleFilter equal = widened(false), stored = widened(true);
+    ASSERT_TRUE(equal.translation().weights.uniform());
+    ASSERT_FALSE(stored.translation().weights.uniform());
+    const Eigen::Vector3d z = equal.translation_moments().mean + Eigen::Vector3d(offset, 0, 0);
+    EXPECT_EQ(equal.update_with_measurement(z, identity, 0.01),
+              stored.update_with_measurement(z, identity, 0.01));
+    EXPECT_EQ(equal.translation_took_gaussian_posterior(), offset > 0.0);
+    EXPECT_EQ(stored.translation_took_gaussian_posterior(), offset > 0.0);
+    equal.normalise_and_resample();
+    stored.normalise_and_resample();
+    EXPECT_LT((equal.translation().states - stored.translation().states).cwiseAbs().maxCoeff(),
+              1e-12)
+        << "offset " << offset;
+  }
+}
+
+// A step with a floor on its spread: where the floor is under the random walk's the step is the
+// random walk's, particle for particle; above it, each axis spreads by its own floor.
+TEST(PoseParticleFilter, AStepSpreadsByItsFloorWhereThatIsWider) {
+  const Eigen::Vector3d shift(0.01, 0.0, -0.02);
+  const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitZ()));
+  const double dt = 0.1, walk = 0.05 * 0.05 * dt;  // the default 0.05 m/sqrt(s), squared
+  PoseParticleFilter plain = small_filter(5000), floored = small_filter(5000);
+  plain.predict(dt, shift, turn);
+  floored.predict(dt, shift, turn, Eigen::Vector3d::Constant(0.5 * walk), 0.0);
+  EXPECT_EQ(plain.translation().states, floored.translation().states);
+  EXPECT_EQ(plain.rotation().states, floored.rotation().states);
+
+  PoseParticleFilter wide = small_filter(5000);
+  const Eigen::Matrix3d before = wide.translation_moments().covariance;
+  const RotationMoments rotation_before = wide.rotation_moments();
+  const Eigen::Vector3d floor(0.04 * 0.04, walk, 0.0);
+  wide.predict(dt, shift, turn, floor, 0.2 * 0.2);
+  const Eigen::Matrix3d grown = wide.translation_moments().covariance - before;
+  // Sample variances of 5000 draws: 2% standard error, 4 of them allowed (the initial cloud's
+  // 10 mm adds to x's 40 mm in variance but is taken off with `before`).
+  EXPECT_NEAR(grown(0, 0), floor.x(), 0.08 * floor.x());
+  EXPECT_NEAR(grown(1, 1), walk, 0.08 * walk + 0.1 * before(1, 1));
+  EXPECT_NEAR(grown(2, 2), walk, 0.08 * walk + 0.1 * before(2, 2));
+  const double turned = wide.rotation_moments().tangent_covariance.trace() -
+                        rotation_before.tangent_covariance.trace();
+  EXPECT_NEAR(turned, 3.0 * 0.2 * 0.2, 0.1 * 3.0 * 0.2 * 0.2);
+}
+
 // A detector precise across the image (3 mm) and coarse in depth (10 mm), a cloud of 10 mm per axis
 // and a measurement 6 mm off on every axis: the reweighted cloud's mean is the exact Gaussian
 // posterior's, gains of 100 / 109 across and 1/2 in depth (5.5 and 3 mm), computed from the

@@ -488,5 +488,28 @@ TEST(MotionModelBank, RejectsMisuse) {
   EXPECT_THROW(MotionModelBank{options}, std::invalid_argument);
 }
 
+// The growth the OPF spreads its visible particles by is the predictive mixture's: at the bank's
+// own interval (its members' steps reused), at another, and at 0; far from the origin (a car's
+// coordinates), where squares of positions would cancel a variance's digits.
+TEST(MotionModelBank, VarianceGrowthIsThePredictiveMixturesGrowth) {
+  const AxisMotionModel model{MotionModel::kConstantVelocity, 0.3, 1.0, 0.0};
+  std::array<kalman::Vector<2>, 3> start = at_rest();
+  start[0] = kalman::Vector<2>(400.0, 8.0);
+  start[1] = kalman::Vector<2>(-250.0, -1.0);
+  const Drawn d = draw(on_every_axis(model), start, 0.01, 60, 9);
+  for (const double horizon : {1.0 / kRate, 0.5, 0.0}) {
+    const Eigen::Vector3d expected =
+        d.bank.predict(horizon).variance() - d.bank.predict(0.0).variance();
+    const Eigen::Vector3d growth = d.bank.variance_growth(horizon);
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_NEAR(growth[axis], expected[axis], 1e-9 * d.bank.predict(horizon).variance()[axis])
+          << "horizon " << horizon << " axis " << axis;
+    if (horizon > 0.0) {
+      EXPECT_GT(growth.minCoeff(), 0.0) << "horizon " << horizon;
+    }
+  }
+  EXPECT_EQ(d.bank.variance_growth(0.0), Eigen::Vector3d::Zero());
+}
+
 }  // namespace
 }  // namespace opf

@@ -165,5 +165,15 @@ TEST(RotationModelBank, ABadOptionThrowsNamingIt) {
   EXPECT_THROW(bank.predict(0.1), std::logic_error);
 }
 
+// The bank's growth per tangent axis is its members' growths in trace, weighted, over three.
+TEST(RotationModelBank, VarianceGrowthIsTheMembersWeightedPerAxis) {
+  const RotationModelBank bank = measured(1.5, 4);
+  double expected = 0.0;
+  for (std::size_t k = 0; k < bank.members().size(); ++k)
+    expected += bank.weights()[k] * bank.members()[k].orientation_variance_growth(0.2);
+  EXPECT_NEAR(bank.variance_growth(0.2), expected / 3.0, 1e-15);
+  EXPECT_GT(bank.variance_growth(0.2), bank.variance_growth(1.0 / 30.0));
+}
+
 }  // namespace
 }  // namespace opf

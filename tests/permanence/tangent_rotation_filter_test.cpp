@@ -214,5 +214,26 @@ TEST(TangentRotationFilter, TheBlockUpdateIsTheGeneralKalmanUpdate) {
   }
 }
 
+// The closed form of the orientation's variance growth is the trace a prediction gives, for every
+// model, at the interval last stepped (its step reused) and at another.
+TEST(TangentRotationFilter, OrientationVarianceGrowthIsThePredictionsTrace) {
+  for (const auto& [model, time_constant] :
+       {std::pair{RotationModel::kConstantOrientation, 0.0},
+        std::pair{RotationModel::kConstantAngularVelocity, 0.0},
+        std::pair{RotationModel::kDampedAngularVelocity, 0.5}}) {
+    TangentRotationFilter filter(model, 1.0, time_constant);
+    filter.initialise(kStart, 0.05, 1.0, 2.0 * kAxis);
+    filter.predict(0.1);
+    filter.update(kStart * so3::exp(0.2 * kAxis), 0.01 * 0.01);
+    for (const double horizon : {0.1, 0.7}) {
+      const double expected = filter.predicted(horizon).covariance.trace() -
+                              filter.covariance().topLeftCorner<3, 3>().trace();
+      EXPECT_NEAR(filter.orientation_variance_growth(horizon), expected, 1e-12 * expected)
+          << rotation_model_name(model) << " at " << horizon << " s";
+      EXPECT_GT(expected, 0.0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace opf
