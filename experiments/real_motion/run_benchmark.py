@@ -82,7 +82,7 @@ def parse_arguments():
     if args.subset and args.gaps is not None:
         parser.error("--subset runs the 0.6 s gaps only: leave out --gaps")
     try:
-        args.gaps = convert.parse_gaps(args.gaps or "0.3,0.6,1")
+        args.gaps = convert.parse_gaps(args.gaps) if args.gaps else convert.GAP_LENGTHS
     except convert.ConvertError as error:
         parser.error(str(error))
     if args.seeds is None:

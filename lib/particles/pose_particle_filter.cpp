@@ -128,14 +128,6 @@ void PoseParticleFilter::predict_per_particle(const Eigen::VectorXd& translation
 }
 
 void PoseParticleFilter::predict(double dt, const Eigen::Vector3d& translation,
-                                 const Eigen::Quaterniond& rotation) {
-  if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");
-  predict_random_walk(translation_, options_.process_noise_translation * std::sqrt(dt), translation,
-                      noise_);
-  predict_random_walk(rotation_, options_.process_noise_rotation * std::sqrt(dt), rotation, noise_);
-}
-
-void PoseParticleFilter::predict(double dt, const Eigen::Vector3d& translation,
                                  const Eigen::Quaterniond& rotation,
                                  const Eigen::Vector3d& variance, double rotation_variance) {
   if (!(dt >= 0.0)) throw std::invalid_argument("PoseParticleFilter::predict: negative dt");

@@ -89,11 +89,10 @@ class PoseParticleFilter {
   void predict_per_particle(const Eigen::VectorXd& translation_sigmas,
                             const Eigen::VectorXd& rotation_sigmas);
 
-  /// shift(translation, rotation), then predict(dt), in one pass over the particles.
-  void predict(double dt, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation);
-  /// The same with the translation's spread per world axis at least sqrt(variance(d)) (m) and
-  /// the rotation's per tangent axis at least sqrt(rotation_variance) (rad): a motion model whose
-  /// step is less certain than the random walk spreads the particles as it does.
+  /// shift(translation, rotation), then predict(dt), in one pass over the particles, with the
+  /// translation's spread per world axis at least sqrt(variance(d)) (m) and the rotation's per
+  /// tangent axis at least sqrt(rotation_variance) (rad): a motion model whose step is less
+  /// certain than the random walk spreads the particles as it does.
   void predict(double dt, const Eigen::Vector3d& translation, const Eigen::Quaterniond& rotation,
                const Eigen::Vector3d& variance, double rotation_variance);
 

@@ -173,17 +173,25 @@ TEST(PoseParticleFilter, TheShareTestIsTheSameWithStoredEqualWeights) {
   }
 }
 
-// A step with a floor on its spread: where the floor is under the random walk's the step is the
-// random walk's, particle for particle; above it, each axis spreads by its own floor.
+// A step with a floor on its spread: with any floor under the random walk's the step is the random
+// walk's, particle for particle (no floor at all, or half the walk); above it, each axis spreads
+// by its own floor.
 TEST(PoseParticleFilter, AStepSpreadsByItsFloorWhereThatIsWider) {
   const Eigen::Vector3d shift(0.01, 0.0, -0.02);
   const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.05, Eigen::Vector3d::UnitZ()));
   const double dt = 0.1, walk = 0.05 * 0.05 * dt;  // the default 0.05 m/sqrt(s), squared
-  PoseParticleFilter plain = small_filter(5000), floored = small_filter(5000);
-  plain.predict(dt, shift, turn);
-  floored.predict(dt, shift, turn, Eigen::Vector3d::Constant(0.5 * walk), 0.0);
-  EXPECT_EQ(plain.translation().states, floored.translation().states);
-  EXPECT_EQ(plain.rotation().states, floored.rotation().states);
+  const double turn_walk = 0.1 * 0.1 * dt;         // the default 0.1 rad/sqrt(s), squared
+  PoseParticleFilter walked = small_filter(5000), under = small_filter(5000),
+                     over = small_filter(5000);
+  walked.predict(dt, shift, turn, Eigen::Vector3d::Zero(), 0.0);
+  under.predict(dt, shift, turn, Eigen::Vector3d::Constant(0.5 * walk), 0.5 * turn_walk);
+  over.predict(dt, shift, turn, Eigen::Vector3d(0.5 * walk, 1.5 * walk, 0.5 * walk),
+               1.5 * turn_walk);
+  EXPECT_EQ(walked.translation().states, under.translation().states);
+  EXPECT_EQ(walked.rotation().states, under.rotation().states);
+  EXPECT_EQ(walked.translation().states.row(0), over.translation().states.row(0));
+  EXPECT_NE(walked.translation().states.row(1), over.translation().states.row(1));
+  EXPECT_NE(walked.rotation().states, over.rotation().states);
 
   PoseParticleFilter wide = small_filter(5000);
   const Eigen::Matrix3d before = wide.translation_moments().covariance;
