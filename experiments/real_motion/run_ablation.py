@@ -56,7 +56,6 @@ def parse_arguments():
         parser.error("--seeds and --jobs must be at least 1")
     if not os.access(args.opf, os.X_OK):
         parser.error(f"no opf program at {args.opf} (build it, or pass --opf)")
-    args.gaps = bench.convert.GAP_LENGTHS  # the benchmark's own
     return args
 
 

@@ -538,20 +538,21 @@ def figures(out, bins):
     return written
 
 
-def prepare(args):
-    """The output directory, its runs/ folder and the logs (the clips too, unless --no-video)."""
+def prepare(args, gaps=convert.GAP_LENGTHS):
+    """The output directory, its runs/ folder and the logs with gaps of the given lengths (s; the
+    clips too, unless --no-video)."""
     out = os.path.abspath(args.out)
     runs_dir = os.path.join(out, "runs")
     os.makedirs(runs_dir, exist_ok=True)
-    logs = recorded_logs(out, args.subset, args.gaps)
+    logs = recorded_logs(out, args.subset, gaps)
     if not args.no_video:
-        logs += video_logs(out, args.opf, args.subset, args.gaps)
+        logs += video_logs(out, args.opf, args.subset, gaps)
     return out, runs_dir, logs
 
 
 def main():
     args = parse_arguments()
-    out, runs_dir, logs = prepare(args)
+    out, runs_dir, logs = prepare(args, args.gaps)
     presets = PRESETS[:1] if args.subset else PRESETS
     if not any(e in PAPER_ESTIMATORS for e in args.estimators.split(",")):
         presets = PRESETS[:1]

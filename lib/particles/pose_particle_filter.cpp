@@ -237,8 +237,7 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   // threshold); NaN, and so not under the share, when no weight is usable.
   const LogWeights& weights = translation_.weights;
   const double share = kernels::effective_fraction(weights.log().data(), weights.size());
-  if (beyond_reset_gate(best) || !(best >= kLikelihoodUnderflowExponent) ||
-      !(share < min_effective_share)) {
+  if (!takes_gaussian_update(best, share, min_effective_share)) {
     reweight_rotation(orientation);
     const PortionsReset reset =
         reset_unreached(position, orientation, best, rotation_best_exponent_);
@@ -258,8 +257,8 @@ bool PoseParticleFilter::gaussian_where_degenerate(const Eigen::Vector3d& positi
   const Eigen::ArrayXd log_weights = exponents.array() + translation_.weights.log().array();
   const Eigen::ArrayXd weights = (log_weights - log_weights.maxCoeff()).exp();
   const double effective = weights.sum() * weights.sum() / weights.square().sum();
-  if (beyond_reset_gate(best) || !(best >= kLikelihoodUnderflowExponent) ||
-      !(effective < min_effective_share * static_cast<double>(translation_.size())))
+  const double share = effective / static_cast<double>(translation_.size());
+  if (!takes_gaussian_update(best, share, min_effective_share))
     return update_with_measurement(position, orientation);
   return take_gaussian_posterior(position, orientation, best);
 }
@@ -288,6 +287,13 @@ bool PoseParticleFilter::take_gaussian_posterior(const Eigen::Vector3d& position
   translation_reset_ = false;
   translation_gaussian_ = true;
   return reset.any();
+}
+
+bool PoseParticleFilter::takes_gaussian_update(double best_exponent, double share,
+                                               double min_effective_share) const {
+  // Within the reset gate, not an underflow, and under the share (NaN is not under it).
+  return !beyond_reset_gate(best_exponent) && best_exponent >= kLikelihoodUnderflowExponent &&
+         share < min_effective_share;
 }
 
 bool PoseParticleFilter::beyond_reset_gate(double best_exponent) const {

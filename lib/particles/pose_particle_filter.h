@@ -185,6 +185,10 @@ class PoseParticleFilter {
   /// Whether a portion's best exponent (-d^2/2, in sigmas) puts the measurement beyond
   /// options().reset_gate of every particle (never with the gate at 0).
   bool beyond_reset_gate(double best_exponent) const;
+  /// Whether a measurement whose likelihood leaves `share` (0-1) of the translation particles
+  /// effective takes the Gaussian posterior: within the reset gate, not underflowing everywhere,
+  /// and under min_effective_share.
+  bool takes_gaussian_update(double best_exponent, double share, double min_effective_share) const;
   /// update_with_measurement's share test on weights that are not all equal: the likelihood's
   /// exponents and the prior's weights together, before anything is changed.
   bool gaussian_where_degenerate(const Eigen::Vector3d& position,

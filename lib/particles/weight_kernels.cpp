@@ -41,6 +41,27 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
   return lanes_max(top);
 }
 
+// exp(log_w - max log_w) in single precision, written to `linear` when kWrite, and the ESS
+// fraction of those weights: one body for resampling and for the share test, so both read the
+// same fraction.
+template <bool kWrite>
+OPF_ALWAYS_INLINE NormalisedWeights single_precision_weights(const double* __restrict log_w,
+                                                             float* __restrict linear,
+                                                             std::size_t n) {
+  if (n == 0) return {};
+  bool nan = false;
+  const double top = max_value(log_w, n, nan);
+  if (nan || !std::isfinite(top)) return {false, 0.0};
+  const std::array<double, 2> sums = sum_in_lanes<float, 2>(
+      n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) OPF_INLINE_LAMBDA {
+        const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
+        if constexpr (kWrite) linear[i] = w;
+        a[0][l] += w;
+        a[1][l] += w * w;
+      });
+  return {true, sums[0] * sums[0] / (static_cast<double>(n) * sums[1])};
+}
+
 }  // namespace
 
 OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
@@ -70,31 +91,12 @@ OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
 
 OPF_KERNEL NormalisedWeights resampling_weights(const double* __restrict log_w,
                                                 float* __restrict linear, std::size_t n) {
-  if (n == 0) return {};
-  bool nan = false;
-  const double top = max_value(log_w, n, nan);
-  if (nan || !std::isfinite(top)) return {false, 0.0};
-  const std::array<double, 2> sums = sum_in_lanes<float, 2>(
-      n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) OPF_INLINE_LAMBDA {
-        const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
-        linear[i] = w;
-        a[0][l] += w;
-        a[1][l] += w * w;
-      });
-  return {true, sums[0] * sums[0] / (static_cast<double>(n) * sums[1])};
+  return single_precision_weights<true>(log_w, linear, n);
 }
 
 OPF_KERNEL double effective_fraction(const double* __restrict log_w, std::size_t n) {
-  bool nan = false;
-  const double top = n ? max_value(log_w, n, nan) : 0.0;
-  if (n == 0 || nan || !std::isfinite(top)) return std::numeric_limits<double>::quiet_NaN();
-  const std::array<double, 2> sums = sum_in_lanes<float, 2>(
-      n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) OPF_INLINE_LAMBDA {
-        const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
-        a[0][l] += w;
-        a[1][l] += w * w;
-      });
-  return sums[0] * sums[0] / (static_cast<double>(n) * sums[1]);
+  const NormalisedWeights w = single_precision_weights<false>(log_w, nullptr, n);
+  return n > 0 && w.usable ? w.ess_fraction : std::numeric_limits<double>::quiet_NaN();
 }
 
 OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __restrict linear,

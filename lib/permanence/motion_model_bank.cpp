@@ -208,14 +208,19 @@ MemberPrediction MotionModelBank::member_prediction(int axis, std::size_t index,
   if (!initialised_) throw std::logic_error("MotionModelBank: predict() before any update()");
   if (!(horizon >= 0.0) || !std::isfinite(horizon))
     throw std::invalid_argument("MotionModelBank: the horizon must be a finite number >= 0 (s)");
-  const AxisMotionModel& model = models_[axis][index];
+  return predicted_member(axis, index, horizon);
+}
+
+MemberPrediction MotionModelBank::predicted_member(int axis, std::size_t index,
+                                                   double horizon) const {
   const Filter& f = filters_[axis][index];
-  const AxisMotionStep step = model.step(horizon);
-  const kalman::Vector<2> mean = step.transition * f.mean + step.offset;
+  const AxisMotionStep step =
+      std::abs(horizon - f.step_dt) <= kSameInterval ? f.step : models_[axis][index].step(horizon);
+  const double mean = (step.transition.row(0) * f.mean)(0, 0) + step.offset[0];
   const double variance =
       (step.transition.row(0) * f.covariance * step.transition.row(0).transpose())(0, 0) +
       step.process_noise(0, 0);
-  return {model_name(model.model), weights_[axis].weights()[index], mean[0], variance};
+  return {model_name(models_[axis][index].model), weights_[axis].weights()[index], mean, variance};
 }
 
 BankPrediction MotionModelBank::predict(double horizon) const {
@@ -240,17 +245,13 @@ Eigen::Vector3d MotionModelBank::variance_growth(double horizon) const {
     double mean_now = 0.0, square_now = 0.0, mean_ahead = 0.0, square_ahead = 0.0;
     for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
       const Filter& f = filters_[axis][j];
-      const AxisMotionStep step =
-          std::abs(horizon - f.step_dt) <= kSameInterval ? f.step : models_[axis][j].step(horizon);
+      const MemberPrediction member = predicted_member(axis, j, horizon);
       const double now = f.mean[0] - reference;
-      const double ahead = (step.transition.row(0) * f.mean)(0, 0) + step.offset[0] - reference;
-      const double variance_ahead =
-          (step.transition.row(0) * f.covariance * step.transition.row(0).transpose())(0, 0) +
-          step.process_noise(0, 0);
+      const double ahead = member.mean - reference;
       mean_now += w[j] * now;
       square_now += w[j] * (f.covariance(0, 0) + now * now);
       mean_ahead += w[j] * ahead;
-      square_ahead += w[j] * (variance_ahead + ahead * ahead);
+      square_ahead += w[j] * (member.variance + ahead * ahead);
     }
     growth[axis] = (square_ahead - mean_ahead * mean_ahead) - (square_now - mean_now * mean_now);
   }

@@ -110,7 +110,8 @@ class MotionModelBank {
   /// `horizon` s after it (m^2): predict(horizon).variance() less predict(0).variance(), without
   /// building the mixtures.
   Eigen::Vector3d variance_growth(double horizon) const;
-  /// One member's prediction (its weight included), member indices as members(axis).
+  /// One member's prediction (its weight included), member indices as members(axis); by the
+  /// member's last step when the horizon is that interval.
   MemberPrediction member_prediction(int axis, std::size_t index, double horizon) const;
 
   /// The members on an axis, in the order of the weights.
@@ -153,6 +154,8 @@ class MotionModelBank {
   /// Member f's update with the axis's measurement z, its stated extra noise and the detector's
   /// usual noise (variance r); returns the Student-t correction's log-likelihood and distance.
   kalman::Correction<3, 1> update_member(Filter& f, double z, double extra_noise, double r) const;
+  /// member_prediction without its checks.
+  MemberPrediction predicted_member(int axis, std::size_t index, double horizon) const;
 
   MotionModelBankOptions options_;
   std::array<std::vector<AxisMotionModel>, 3> models_;
