@@ -191,6 +191,14 @@ void FrameAssembler::add(LogRow row) {
                " is not after the frame at t = " + csv::format_double(*last_frame_t_) +
                " already produced; a stream must be in time order (a whole file read at once may "
                "be unsorted)");
+    // 1 ns less the rounding of a nanosecond clock's times read as seconds.
+    if (last_frame_t_ && row.t - *last_frame_t_ < (1.0 - 1e-6) / kMaxFrameRate)
+      fail(row.line, t_column_,
+           "t = " + csv::format_double(row.t) + " is " + seconds_text(row.t - *last_frame_t_) +
+               " after the frame at t = " + csv::format_double(*last_frame_t_) +
+               ": frames under 1 ns apart (over " + csv::format_double(kMaxFrameRate) +
+               " Hz) are no camera's; pass --frame-tolerance if these rows are one frame, or "
+               "--time-unit if t is not in seconds");
     open_ = true;
     start_ = row.t;
     offset_sum_ = 0.0;

@@ -153,6 +153,22 @@ TEST(FrameAssembly, PositionsInMillimetresAreRefusedUnlessSaid) {
   EXPECT_EQ(parse(still).frames.size(), 20u);
 }
 
+TEST(FrameAssembly, FramesUnderANanosecondApartAreRefused) {
+  // A log at 30 Hz with its times divided by 1e12 (picoseconds read as seconds, say): the speed
+  // check is told the unit is right, so the frames 33 ps apart are what is left to refuse.
+  const LogReadOptions metres =
+      with([](LogReadOptions& o) { o.length_unit = LengthUnit::kMetres; });
+  const InputError e = parse_error(jittered_log(10, 1e-12), metres);
+  EXPECT_EQ(e.file(), "log.csv");
+  EXPECT_GT(e.line(), 1u);
+  EXPECT_EQ(e.field(), "t");
+  EXPECT_TRUE(contains(e.message(), "under 1 ns apart")) << e.what();
+  // Frames 1 ns apart are the finest clock taken.
+  std::string fine = kHeader;
+  for (int k = 0; k < 20; ++k) fine += row(1e-9 * k, "ball", 0.0);
+  EXPECT_EQ(parse(fine, metres).frames.size(), 20u);
+}
+
 TEST(FrameAssembly, FramesMissingInsideAGapAreFilledAtTheLogsRate) {
   std::string text = kHeader;
   for (int k = 0; k < 200; ++k)
