@@ -2,6 +2,7 @@
 
 #include "opf/core/estimator.h"
 #include "opf/core/pose_conversion.h"
+#include "opf/core/so3.h"
 #include "opf/particles/gaussian_likelihood.h"
 #include "opf/particles/random_walk_model.h"
 #include "opf/particles/resampling.h"
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace opf {
@@ -215,7 +217,14 @@ void PoseParticleFilter::reweight_rotation_by(const Eigen::VectorXd& log_likelih
 
 bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position,
                                                  const Eigen::Quaterniond& orientation) {
-  reweight(position, orientation);
+  return reweight_both(position, orientation, 0.0);
+}
+
+bool PoseParticleFilter::reweight_both(const Eigen::Vector3d& position,
+                                       const Eigen::Quaterniond& orientation,
+                                       double min_effective_share) {
+  reweight_translation(position);
+  update_rotation(orientation, min_effective_share);
   const PortionsReset reset =
       reset_unreached(position, orientation, translation_best_exponent_, rotation_best_exponent_);
   translation_reset_ = reset.translation;
@@ -238,7 +247,7 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   const LogWeights& weights = translation_.weights;
   const double share = kernels::effective_fraction(weights.log().data(), weights.size());
   if (!takes_gaussian_update(best, share, min_effective_share)) {
-    reweight_rotation(orientation);
+    update_rotation(orientation, min_effective_share);
     const PortionsReset reset =
         reset_unreached(position, orientation, best, rotation_best_exponent_);
     translation_reset_ = reset.translation;
@@ -246,7 +255,7 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
     return reset.any();
   }
   translation_.weights.reset();  // the prior's moments: its weights were equal
-  return take_gaussian_posterior(position, orientation, best);
+  return take_gaussian_posterior(position, orientation, best, min_effective_share);
 }
 
 bool PoseParticleFilter::gaussian_where_degenerate(const Eigen::Vector3d& position,
@@ -259,13 +268,13 @@ bool PoseParticleFilter::gaussian_where_degenerate(const Eigen::Vector3d& positi
   const double effective = weights.sum() * weights.sum() / weights.square().sum();
   const double share = effective / static_cast<double>(translation_.size());
   if (!takes_gaussian_update(best, share, min_effective_share))
-    return update_with_measurement(position, orientation);
-  return take_gaussian_posterior(position, orientation, best);
+    return reweight_both(position, orientation, min_effective_share);
+  return take_gaussian_posterior(position, orientation, best, min_effective_share);
 }
 
 bool PoseParticleFilter::take_gaussian_posterior(const Eigen::Vector3d& position,
                                                  const Eigen::Quaterniond& orientation,
-                                                 double best_exponent) {
+                                                 double best_exponent, double min_effective_share) {
   const TranslationMoments prior = translation_moments();
   const Eigen::Matrix3d innovation =
       prior.covariance + translation_likelihood_noise_.cwiseAbs2().asDiagonal().toDenseMatrix();
@@ -275,18 +284,58 @@ bool PoseParticleFilter::take_gaussian_posterior(const Eigen::Vector3d& position
   covariance = 0.5 * (covariance + covariance.transpose()).eval();
   const Eigen::LLT<Eigen::Matrix3d> root(covariance);
   if (root.info() != Eigen::Success || !mean.allFinite())  // a degenerate cloud: reweight it
-    return update_with_measurement(position, orientation);
+    return reweight_both(position, orientation, min_effective_share);
   scatter_around(translation_, Eigen::Vector3d::Zero(), 1.0, noise_);
   translation_.states = (root.matrixL() * translation_.states).colwise() + mean;
   translation_.columns.setZero();
   translation_reweighted_ = translation_underflow_ = false;
   translation_best_exponent_ = best_exponent;
 
-  reweight_rotation(orientation);
+  update_rotation(orientation, min_effective_share);
   const PortionsReset reset = reset_unreached(position, orientation, 0.0, rotation_best_exponent_);
   translation_reset_ = false;
   translation_gaussian_ = true;
   return reset.any();
+}
+
+void PoseParticleFilter::update_rotation(const Eigen::Quaterniond& orientation,
+                                         double min_effective_share) {
+  rotation_gaussian_ = false;
+  if (!(min_effective_share > 0.0)) {
+    reweight_rotation(orientation);
+    return;
+  }
+  // The share of the posterior weights, prior and likelihood together, as for the translation;
+  // the prior's own weights are kept to take its moments.
+  const bool uniform = rotation_.weights.uniform();
+  const Eigen::VectorXd prior =
+      uniform ? Eigen::VectorXd() : std::as_const(rotation_.weights).log();
+  reweight_rotation(orientation);
+  const LogWeights& weights = rotation_.weights;
+  const double share = kernels::effective_fraction(weights.log().data(), weights.size());
+  if (!takes_gaussian_update(rotation_best_exponent_, share, min_effective_share)) return;
+  if (uniform)
+    rotation_.weights.reset();
+  else
+    rotation_.weights.log() = prior;
+  const RotationMoments moments = rotation_moments();
+  const Eigen::Matrix3d covariance = moments.tangent_covariance;
+  const Eigen::Matrix3d innovation = covariance + rotation_likelihood_noise_ *
+                                                      rotation_likelihood_noise_ *
+                                                      Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d gain = innovation.ldlt().solve(covariance).transpose();
+  const Eigen::Vector3d step = gain * so3::difference(moments.mean, orientation);
+  // The posterior's spread, the same on every tangent axis (as the random walk's).
+  const double spread =
+      std::sqrt(((Eigen::Matrix3d::Identity() - gain) * covariance).trace() / 3.0);
+  if (!step.allFinite() || !(spread >= 0.0) || !std::isfinite(spread)) {
+    reweight_rotation(orientation);  // a degenerate cloud: reweight it
+    return;
+  }
+  scatter_around(rotation_, moments.mean * so3::exp(step), spread, noise_);
+  rotation_.columns.setZero();
+  rotation_reweighted_ = rotation_underflow_ = false;
+  rotation_gaussian_ = true;
 }
 
 bool PoseParticleFilter::takes_gaussian_update(double best_exponent, double share,

@@ -142,6 +142,10 @@ class PoseParticleFilter {
                                const Eigen::Quaterniond& orientation, double min_effective_share);
   /// Whether the last update_with_measurement took the translation's Gaussian posterior.
   bool translation_took_gaussian_posterior() const { return translation_gaussian_; }
+  /// Whether the last update_with_measurement with a share took the rotation's: the same test on
+  /// the rotation portion, whose Gaussian posterior is a Kalman update in the tangent space at
+  /// the particles' mean, drawn anew with the same spread on every axis.
+  bool rotation_took_gaussian_posterior() const { return rotation_gaussian_; }
   /// Sensor resetting alone, given the best exponent of each portion (-d^2/2 for the particle
   /// nearest the measurement, in sigmas): a portion whose best is below -reset_gate^2/2 is
   /// scattered around the measurement with uniform weights and its columns at 0.
@@ -196,7 +200,15 @@ class PoseParticleFilter {
   /// The translation portion redrawn from the Gaussian posterior of its moments and the
   /// measurement; the rotation reweighted.
   bool take_gaussian_posterior(const Eigen::Vector3d& position,
-                               const Eigen::Quaterniond& orientation, double best_exponent);
+                               const Eigen::Quaterniond& orientation, double best_exponent,
+                               double min_effective_share);
+  /// Both portions reweighted (the rotation by update_rotation), then sensor resetting.
+  bool reweight_both(const Eigen::Vector3d& position, const Eigen::Quaterniond& orientation,
+                     double min_effective_share);
+  /// The rotation reweighted, or, where that leaves under min_effective_share of its particles
+  /// effective (within the gate, no underflow; never with a share of 0), redrawn from the
+  /// Gaussian posterior of its prior moments and the measurement.
+  void update_rotation(const Eigen::Quaterniond& orientation, double min_effective_share);
 
   PoseParticleFilterOptions options_;
   /// m per axis: options_' value on every axis unless set_translation_likelihood_noise
@@ -209,6 +221,7 @@ class PoseParticleFilter {
   bool translation_reweighted_ = false;
   bool rotation_reweighted_ = false;
   bool translation_gaussian_ = false;
+  bool rotation_gaussian_ = false;
   double translation_best_exponent_ = 0.0;  ///< of the last reweight, for sensor resetting
   double rotation_best_exponent_ = 0.0;
   bool translation_reset_ = false;      ///< by the last update_with_measurement
