@@ -116,8 +116,16 @@ double plotted_y(const LineChart& chart, double y) {
   return chart.log_y ? std::log10(y) : y;
 }
 
+/// [low, high] widened by kMapMargin of its width on either side.
+AxisRange map_axis(double low, double high, int ticks) {
+  if (!std::isfinite(low)) low = 0.0, high = 1.0;
+  const double margin = kMapMargin * (high > low ? high - low : 1.0);
+  return {low - margin, high + margin, nice_ticks(low - margin, high + margin, ticks)};
+}
+
 AxisRange y_range(const LineChart& chart) {
   auto [low, high] = data_extent(chart);
+  if (chart.map) return map_axis(low, high, 5);
   std::vector<double> references;
   for (const ChartReference& r : chart.references)
     if (const double v = plotted_y(chart, r.y); std::isfinite(v)) references.push_back(v);
@@ -146,6 +154,7 @@ AxisRange x_range(const LineChart& chart) {
       low = std::min(low, s.x[i]);
       high = std::max(high, s.x[i]);
     }
+  if (chart.map) return map_axis(low, high, 6);
   if (!std::isfinite(low)) low = 0.0, high = 1.0;
   if (!(high > low)) high = low + 1.0;
   return {low, high, nice_ticks(low, high, 6)};

@@ -37,10 +37,15 @@ double plotted_y(const LineChart& chart, double y);
 
 /// The y axis: every finite value (those above the clip counted at the clip) and every reference
 /// line with a margin of 5% of the range beyond it, so that a threshold never lies on the border.
-/// A log axis spans whole decades; a linear one starts at zero (or below) and ends on a tick.
+/// A log axis spans whole decades; a linear one starts at zero (or below) and ends on a tick; a
+/// map's spans its values with its margin.
 AxisRange y_range(const LineChart& chart);
 
-/// The x axis: from the smallest to the largest finite x, ticks at nice steps.
+/// A map's axes (LineChart::map) reach this share of their range beyond the data.
+inline constexpr double kMapMargin = 0.05;
+
+/// The x axis: from the smallest to the largest finite x (a map's with its margin), ticks at nice
+/// steps.
 AxisRange x_range(const LineChart& chart);
 
 /// A tick's text: enough decimals to tell ticks `step` apart; powers of ten on a log axis.

@@ -149,6 +149,7 @@ std::optional<LineChart> hypotheses_chart(const ExperimentResults& results,
   top.x_label = "x [m]";
   top.y_label = "y [m]";
   top.height = 560;
+  top.map = true;
   top.series.push_back(std::move(truth));
   std::size_t carriers = 0;
   for (const auto& [name, track] : tracks)

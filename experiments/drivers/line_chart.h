@@ -68,6 +68,9 @@ struct LineChart {
   /// In the order of the legend; drawn wider first, in this order among equal widths.
   std::vector<ChartSeries> series;
   bool log_y = false;  ///< for quantities that grow exponentially (trace of Q~)
+  /// A map (a top view): both axes reach kMapMargin of their range beyond the data on either
+  /// side, zero or not, so that no path ends on the frame.
+  bool map = false;
   /// The layout's size: the SVG's in px, the PNG's times `png_scale`.
   int width = 900;
   int height = 420;

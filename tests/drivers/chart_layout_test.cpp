@@ -67,6 +67,24 @@ TEST(ChartLayout, ACurveLevellingOffAtItsMaximumRunsBelowTheBorder) {
   EXPECT_DOUBLE_EQ(y.low, 0.0);
 }
 
+TEST(ChartLayout, AMapsPathsEndInsideTheFrame) {
+  // A top view: x from 0.34 to 0.66, y from -0.22 to 0.26. As a time chart's, the x axis ended on
+  // the path's ends and the y axis on its lowest point; a map's reach 5% of each range beyond.
+  LineChart chart;
+  chart.series = {series({0.34, 0.5, 0.66}, {-0.22, 0.0, 0.26})};
+  const AxisRange unpadded_x = x_range(chart), unpadded_y = y_range(chart);
+  EXPECT_DOUBLE_EQ(unpadded_x.low, 0.34);
+  EXPECT_DOUBLE_EQ(unpadded_y.low, -0.22);
+  chart.map = true;
+  const AxisRange x = x_range(chart), y = y_range(chart);
+  EXPECT_NEAR(x.low, 0.34 - 0.05 * 0.32, 1e-12);
+  EXPECT_NEAR(x.high, 0.66 + 0.05 * 0.32, 1e-12);
+  EXPECT_NEAR(y.low, -0.22 - 0.05 * 0.48, 1e-12);
+  EXPECT_NEAR(y.high, 0.26 + 0.05 * 0.48, 1e-12);
+  EXPECT_FALSE(y.ticks.empty());
+  for (const double tick : y.ticks) EXPECT_TRUE(tick >= y.low && tick <= y.high) << tick;
+}
+
 TEST(ChartLayout, MarkersComeEveryKthPointFromTheSeriesPhase) {
   ChartSeries s = series(steps(120), std::vector<double>(120, 1.0));
   EXPECT_TRUE(marker_points(s).empty());  // no marker, no points
