@@ -111,8 +111,9 @@ struct OpfOptions {
   /// of a slow log whose step the banks could not predict to within the detector's noise), the
   /// translation takes the Gaussian posterior of the cloud's moments and the measurement instead
   /// (PoseParticleFilter::update_with_measurement): reweighted, the cloud would collapse onto the
-  /// few particles nearest the measurement and report their tiny spread centimetres off. 0:
-  /// always reweight (the paper's).
+  /// few particles nearest the measurement and report their tiny spread centimetres off. The
+  /// rotation likewise, by its own share, in the tangent space at the particles' mean. 0: always
+  /// reweight (the paper's).
   double gaussian_update_share = 0.01;
   DynamicsOptions dynamics;
   MotionThresholds motion;
