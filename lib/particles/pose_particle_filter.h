@@ -189,7 +189,7 @@ class PoseParticleFilter {
   /// Whether a portion's best exponent (-d^2/2, in sigmas) puts the measurement beyond
   /// options().reset_gate of every particle (never with the gate at 0).
   bool beyond_reset_gate(double best_exponent) const;
-  /// Whether a measurement whose likelihood leaves `share` (0-1) of the translation particles
+  /// Whether a measurement whose likelihood leaves `share` (0-1) of a portion's particles
   /// effective takes the Gaussian posterior: within the reset gate, not underflowing everywhere,
   /// and under min_effective_share.
   bool takes_gaussian_update(double best_exponent, double share, double min_effective_share) const;
@@ -198,7 +198,7 @@ class PoseParticleFilter {
   bool gaussian_where_degenerate(const Eigen::Vector3d& position,
                                  const Eigen::Quaterniond& orientation, double min_effective_share);
   /// The translation portion redrawn from the Gaussian posterior of its moments and the
-  /// measurement; the rotation reweighted.
+  /// measurement; the rotation by update_rotation.
   bool take_gaussian_posterior(const Eigen::Vector3d& position,
                                const Eigen::Quaterniond& orientation, double best_exponent,
                                double min_effective_share);

@@ -145,9 +145,9 @@ TEST(PoseParticleFilter, AMeasurementInTheCloudsFarTailTakesTheGaussianPosterior
 }
 
 // The rotation's counterpart: a cloud of 0.1 rad per tangent axis and a measurement 0.3 rad off
-// about x with 0.03 rad noise (2 sigmas of it inside the reset gate's 5). The exact posterior's
-// mean is 0.917 of the way (gain 0.01 / 0.0109), 0.275 rad, its spread sqrt(0.01 * 0.0009 /
-// 0.0109) = 0.0287 rad per axis.
+// about x with 0.03 rad noise (its nearest particles well within the reset gate). The exact
+// posterior's mean is 0.917 of the way (gain 0.01 / 0.0109), 0.275 rad, its spread sqrt(0.01 *
+// 0.0009 / 0.0109) = 0.0287 rad per axis.
 TEST(PoseParticleFilter, AnOrientationInTheCloudsFarTailTakesTheGaussianPosterior) {
   const Eigen::Vector3d origin(0.1, 0.2, 0.3);
   const Eigen::Quaterniond z = so3::exp(Eigen::Vector3d(0.3, 0.0, 0.0));
