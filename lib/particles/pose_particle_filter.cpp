@@ -13,7 +13,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace opf {
@@ -305,19 +304,18 @@ void PoseParticleFilter::update_rotation(const Eigen::Quaterniond& orientation,
     reweight_rotation(orientation);
     return;
   }
-  // The share of the posterior weights, prior and likelihood together, as for the translation;
-  // the prior's own weights are kept to take its moments.
+  // The share of the posterior weights, prior and likelihood together, as for the translation.
   const bool uniform = rotation_.weights.uniform();
-  const Eigen::VectorXd prior =
-      uniform ? Eigen::VectorXd() : std::as_const(rotation_.weights).log();
   reweight_rotation(orientation);
   const LogWeights& weights = rotation_.weights;
   const double share = kernels::effective_fraction(weights.log().data(), weights.size());
   if (!takes_gaussian_update(rotation_best_exponent_, share, min_effective_share)) return;
+  // The prior's weights back for its moments (the likelihood taken off again: rare enough that
+  // every other frame need not keep a copy).
   if (uniform)
     rotation_.weights.reset();
   else
-    rotation_.weights.log() = prior;
+    rotation_.weights.log() -= rotation_exponents(orientation);
   const RotationMoments moments = rotation_moments();
   const Eigen::Matrix3d covariance = moments.tangent_covariance;
   const Eigen::Matrix3d innovation = covariance + rotation_likelihood_noise_ *
