@@ -41,25 +41,33 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
   return lanes_max(top);
 }
 
-// exp(log_w - max log_w) in single precision, written to `linear` when kWrite, and the ESS
-// fraction of those weights: one body for resampling and for the share test, so both read the
-// same fraction.
-template <bool kWrite>
-OPF_ALWAYS_INLINE NormalisedWeights single_precision_weights(const double* __restrict log_w,
-                                                             float* __restrict linear,
-                                                             std::size_t n) {
-  if (n == 0) return {};
+// w_i = exp(log_w[i] - max log_w) in T's precision, written to `linear` when kWrite, with their
+// sum and sum of squares: one body for normalisation (double), resampling and the share test
+// (float, so both read the same fraction). Not usable when a weight is NaN or every one -inf.
+struct ShiftedExponentials {
+  bool usable = false;
+  double top = 0.0, sum = 0.0, sum_squares = 0.0;
+
+  /// The ESS fraction (sum w)^2 / (n sum w^2).
+  double ess_fraction(std::size_t n) const {
+    return sum * sum / (static_cast<double>(n) * sum_squares);
+  }
+};
+
+template <class T, bool kWrite>
+OPF_ALWAYS_INLINE ShiftedExponentials shifted_exponentials(const double* __restrict log_w,
+                                                           T* __restrict linear, std::size_t n) {
   bool nan = false;
   const double top = max_value(log_w, n, nan);
-  if (nan || !std::isfinite(top)) return {false, 0.0};
-  const std::array<double, 2> sums = sum_in_lanes<float, 2>(
-      n, [=](std::size_t i, std::size_t l, float(&a)[2][16]) OPF_INLINE_LAMBDA {
-        const float w = vmath::exp_nonpositive(static_cast<float>(log_w[i] - top));
+  if (nan || !std::isfinite(top)) return {};
+  const std::array<double, 2> sums =
+      sum_in_lanes<T, 2>(n, [=](std::size_t i, std::size_t l, auto& a) OPF_INLINE_LAMBDA {
+        const T w = vmath::exp_nonpositive(static_cast<T>(log_w[i] - top));
         if constexpr (kWrite) linear[i] = w;
         a[0][l] += w;
         a[1][l] += w * w;
       });
-  return {true, sums[0] * sums[0] / (static_cast<double>(n) * sums[1])};
+  return {true, top, sums[0], sums[1]};
 }
 
 }  // namespace
@@ -67,36 +75,30 @@ OPF_ALWAYS_INLINE NormalisedWeights single_precision_weights(const double* __res
 OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
                                                    double* __restrict linear, std::size_t n) {
   if (n == 0) return {};
-  bool nan = false;
-  const double top = max_value(log_w, n, nan);
-  if (nan || !std::isfinite(top)) return {false, 0.0};
-  const std::array<double, 2> sums = sum_in_lanes<double, 2>(
-      n, [=](std::size_t i, std::size_t l, double(&a)[2][8]) OPF_INLINE_LAMBDA {
-        const double w = vmath::exp_nonpositive(log_w[i] - top);
-        linear[i] = w;
-        a[0][l] += w;
-        a[1][l] += w * w;
-      });
-  const double sum = sums[0], sum_squares = sums[1];
+  const ShiftedExponentials e = shifted_exponentials<double, true>(log_w, linear, n);
+  if (!e.usable) return {false, 0.0};
   // Shift by the max first, then by the log-sum of the (small) shifted values: full precision.
-  const double shift = top + std::log(sum);
-  const double inverse_sum = 1.0 / sum;
+  const double shift = e.top + std::log(e.sum);
+  const double inverse_sum = 1.0 / e.sum;
 #pragma omp simd
   for (std::size_t i = 0; i < n; ++i) {
     log_w[i] -= shift;
     linear[i] *= inverse_sum;
   }
-  return {true, sum * sum / (static_cast<double>(n) * sum_squares)};
+  return {true, e.ess_fraction(n)};
 }
 
 OPF_KERNEL NormalisedWeights resampling_weights(const double* __restrict log_w,
                                                 float* __restrict linear, std::size_t n) {
-  return single_precision_weights<true>(log_w, linear, n);
+  if (n == 0) return {};
+  const ShiftedExponentials e = shifted_exponentials<float, true>(log_w, linear, n);
+  return e.usable ? NormalisedWeights{true, e.ess_fraction(n)} : NormalisedWeights{false, 0.0};
 }
 
 OPF_KERNEL double effective_fraction(const double* __restrict log_w, std::size_t n) {
-  const NormalisedWeights w = single_precision_weights<false>(log_w, nullptr, n);
-  return n > 0 && w.usable ? w.ess_fraction : std::numeric_limits<double>::quiet_NaN();
+  const ShiftedExponentials e =
+      n > 0 ? shifted_exponentials<float, false>(log_w, nullptr, n) : ShiftedExponentials{};
+  return e.usable ? e.ess_fraction(n) : std::numeric_limits<double>::quiet_NaN();
 }
 
 OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __restrict linear,
