@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace opf::kalman {
@@ -37,30 +38,30 @@ void predict(Vector<N>& mean, Matrix<N>& covariance, const Matrix<N>& transition
 }
 
 /// What an update did: the state correction K r it applied (an error-state filter injects it into
-/// its own mean), the innovation r, its squared Mahalanobis distance d^2 = r^T S^-1 r under the
-/// S of the noise it was given (what a gate tests) and its log-likelihood.
+/// its own mean), the innovation r, its squared Mahalanobis distance d^2 = r^T S^-1 r and det S
+/// under the S of the noise it was given (what a gate tests), and its log-likelihood.
 template <int N, int M>
 struct Correction {
   Vector<N> correction;
   Vector<M> innovation;
   double squared_distance = 0.0;
+  double determinant = 0.0;
   double log_likelihood = 0.0;
 };
 
 namespace detail {
 
-/// Solves with a symmetric positive-definite S and gives log det S: a division when S is 1 x 1
-/// (a bank's per-axis update), an LDLT factorisation above.
+/// Solves with a symmetric positive-definite S and gives det S and log det S (each on demand): a
+/// division when S is 1 x 1 (a bank's per-axis update), an LDLT factorisation above.
 template <int M>
 class SymmetricSolver {
  public:
   explicit SymmetricSolver(const Matrix<M>& s) {
     if constexpr (M == 1) {
-      inverse_ = 1.0 / s(0, 0);
-      log_det_ = std::log(s(0, 0));
+      value_ = s(0, 0);
+      inverse_ = 1.0 / value_;
     } else {
       ldlt_.compute(s);
-      log_det_ = ldlt_.vectorD().array().log().sum();  // det S = prod D of S = L D L^T
     }
   }
   template <int Cols>
@@ -70,12 +71,23 @@ class SymmetricSolver {
     else
       return ldlt_.solve(b);
   }
-  double log_det() const { return log_det_; }
+  double determinant() const {
+    if constexpr (M == 1)
+      return value_;
+    else
+      return ldlt_.vectorD().prod();  // det S = prod D of S = L D L^T
+  }
+  double log_det() const {
+    if constexpr (M == 1)
+      return std::log(value_);
+    else
+      return ldlt_.vectorD().array().log().sum();
+  }
 
  private:
   Eigen::LDLT<Matrix<M>> ldlt_;
+  double value_ = 0.0;
   double inverse_ = 0.0;
-  double log_det_ = 0.0;
 };
 
 /// P <- (I - K H) P (I - K H)^T + K R K^T, symmetrised, with K = P H^T S^-1 solved as
@@ -113,6 +125,7 @@ Correction<N, M> update_covariance(Matrix<N>& covariance, const Matrix<M, N>& ob
   Correction<N, M> out;
   out.innovation = innovation;
   out.squared_distance = innovation.dot(s.solve(innovation));
+  out.determinant = s.determinant();
   out.log_likelihood = gaussian_log_density(out.squared_distance, s.log_det(), M);
   out.correction = detail::joseph_update(covariance, observation, noise, hp, s, innovation);
   return out;
@@ -152,8 +165,10 @@ inline double student_t_noise_scale(const StudentTNoise& t, double squared_dista
 /// (dof + M) / (dof + d^2), d^2 = r^T S^-1 r (one variational-Bayes step of Agamennoni, Nieto &
 /// Nebot, "Approximate inference in state-space models with heavy-tailed noise", IEEE Trans.
 /// Signal Processing 60(10), 2012), so the update is update_covariance's with R scaled by its
-/// inverse: a measurement far from the prediction moves the state less. The log-likelihood is
-/// the Student-t density's, log t_dof(r; 0, S), and d^2 is under the unscaled S.
+/// inverse: a measurement far from the prediction moves the state less. d^2 and det S are under
+/// the unscaled S. The log-likelihood, log t_dof(r; 0, S) = student_t_log_density(t, d^2,
+/// log det S, M), is left to the caller (NaN here): a bank reads all its members' at once
+/// (particles/student_t_densities.h).
 template <int N, int M>
 Correction<N, M> update_covariance_student_t(Matrix<N>& covariance, const Matrix<M, N>& observation,
                                              const Matrix<M>& noise, const Vector<M>& innovation,
@@ -164,7 +179,8 @@ Correction<N, M> update_covariance_student_t(Matrix<N>& covariance, const Matrix
   Correction<N, M> out;
   out.innovation = innovation;
   out.squared_distance = innovation.dot(s.solve(innovation));
-  out.log_likelihood = student_t_log_density(t, out.squared_distance, s.log_det(), M);
+  out.determinant = s.determinant();
+  out.log_likelihood = std::numeric_limits<double>::quiet_NaN();
   const Matrix<M> scaled = noise * student_t_noise_scale(t, out.squared_distance, M);
   const detail::SymmetricSolver<M> s_scaled(hpht + scaled);
   out.correction = detail::joseph_update(covariance, observation, scaled, hp, s_scaled, innovation);

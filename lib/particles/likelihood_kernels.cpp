@@ -122,4 +122,18 @@ OPF_KERNEL double rotation_exponents(const float* __restrict q, std::size_t n,
       });
 }
 
+OPF_KERNEL void student_t_log_densities(const double* __restrict determinants,
+                                        const double* __restrict squared_distances, std::size_t n,
+                                        double dof, double dimensions, double log_normaliser,
+                                        double* __restrict out) {
+  // log(1 + u) rather than log1p(u): its absolute error, an ulp of 1 + u, is far below what a
+  // log-density is read to.
+  const double tail = 0.5 * (dof + dimensions);
+  const double inverse_dof = 1.0 / dof;
+#pragma omp simd
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] = log_normaliser - 0.5 * vmath::log_positive(determinants[i]) -
+             tail * vmath::log_positive(1.0 + squared_distances[i] * inverse_dof);
+}
+
 }  // namespace opf::kernels

@@ -1,5 +1,6 @@
 #pragma once
-// The particle kernels of the measurement update (gaussian_likelihood.h): Gaussian exponents.
+// The particle kernels of the measurement update (gaussian_likelihood.h): Gaussian exponents; and
+// the Student-t log-densities a motion-model bank weighs its members by (student_t_densities.h).
 // Private to lib/particles (not installed): a portion of n particles of dimension D is D
 // contiguous rows of n values (x..., y..., z... in double for translation; x..., y..., z..., w...
 // in float for rotation quaternions), and each kernel is one pass that vectorises, compiled for
@@ -23,5 +24,11 @@ double translation_exponents(const double* x, std::size_t n, const std::array<do
 /// largest such exponent.
 double rotation_exponents(const float* q, std::size_t n, const std::array<double, 4>& z,
                           double scale, double* out, bool accumulate);
+
+/// out[i] = log_normaliser - 0.5 log determinants[i] - 0.5 (dof + dimensions)
+/// log(1 + squared_distances[i] / dof). Determinants positive and normal.
+void student_t_log_densities(const double* determinants, const double* squared_distances,
+                             std::size_t n, double dof, double dimensions, double log_normaliser,
+                             double* out);
 
 }  // namespace opf::kernels

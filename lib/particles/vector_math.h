@@ -1,9 +1,9 @@
 #pragma once
 // Branch-free elementary functions for the particle kernels. Each is a scalar inline function
 // written with selects instead of branches, so that a loop calling it vectorises (libm's exp,
-// atan2 and sincos do not). Polynomials and reductions are Cephes' (S. L. Moshier), which keep
-// about one ulp over the stated domains; tests/particles/vector_math_test.cpp checks them
-// against libm.
+// atan2 and sincos do not). Polynomials and reductions are Cephes' (S. L. Moshier), and fdlibm's
+// for the double log, which keep about one ulp over the stated domains;
+// tests/particles/vector_math_test.cpp checks them against libm.
 
 #include <bit>
 #include <cstdint>
@@ -57,6 +57,36 @@ OPF_ALWAYS_INLINE double exp_nonpositive(double x) {
   const double scale = std::bit_cast<double>(static_cast<std::uint64_t>(n + 1023) << 52);
   const double result = p * scale;
   return underflow ? 0.0 : (x != x ? x : result);
+}
+
+/// Natural log of a positive normal double; +inf and NaN give themselves. fdlibm's e_log.c
+/// (Sun Microsystems, under 1 ulp): x = (1 + f) 2^k with 1 + f in [sqrt(1/2), sqrt(2)), and
+/// ln(1 + f) = f - f^2 / 2 + s (f^2 / 2 + R(s^2)), s = f / (2 + f), R its minimax polynomial.
+OPF_ALWAYS_INLINE double log_positive(double x) {
+  constexpr std::uint64_t kMantissa = 0x000FFFFFFFFFFFFFull;
+  constexpr std::uint64_t kSqrt2Mantissa = 0x6A09E667F3BCDull;  // sqrt(2) = 1.6A09E667F3BCC9...
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(x);
+  const std::uint64_t mantissa = bits & kMantissa;
+  const bool high = mantissa >= kSqrt2Mantissa;  // 1 + f = 1.mantissa / 2, one binade up
+  const double m = std::bit_cast<double>(mantissa | (high ? 0x3FE0000000000000ull     // [0.5, 1)
+                                                          : 0x3FF0000000000000ull));  // [1, 2)
+  const double k =
+      static_cast<double>(static_cast<std::int64_t>(bits >> 52) - 1023 + (high ? 1 : 0));
+  const double f = m - 1.0;
+  const double half_square = 0.5 * f * f;
+  const double s = f / (2.0 + f);
+  const double z = s * s;
+  const double w = z * z;
+  const double odd = w * (3.999999999940941908e-01 +
+                          w * (2.222219843214978396e-01 + w * 1.531383769920937332e-01));
+  const double even = z * (6.666666666666735130e-01 +
+                           w * (2.857142874366239149e-01 +
+                                w * (1.818357216161805012e-01 + w * 1.479819860511658591e-01)));
+  const double r = odd + even;
+  const double result =
+      k * 6.93147180369123816490e-01 -
+      ((half_square - (s * (half_square + r) + k * 1.90821492927058770002e-10)) - f);
+  return x > 1.7976931348623157e308 || x != x ? x : result;
 }
 
 /// Natural log of a positive normal float (Cephes logf).

@@ -19,7 +19,8 @@ std::vector<double> equal_model_priors(std::span<const int> model_of_member) {
   return priors;
 }
 
-ModelWeights::ModelWeights(std::vector<double> priors) : weights_(priors.size(), 0.0) {
+ModelWeights::ModelWeights(std::vector<double> priors)
+    : log_priors_(static_cast<Eigen::Index>(priors.size())), log_weights_(priors.size()) {
   double sum = 0.0;
   for (const double p : priors) {
     if (!(p > 0.0) || !std::isfinite(p))
@@ -27,50 +28,42 @@ ModelWeights::ModelWeights(std::vector<double> priors) : weights_(priors.size(),
     sum += p;
   }
   if (priors.empty()) throw std::invalid_argument("ModelWeights: no members");
-  for (const double p : priors) log_priors_.push_back(std::log(p / sum));
+  for (std::size_t j = 0; j < priors.size(); ++j)
+    log_priors_[static_cast<Eigen::Index>(j)] = std::log(priors[j] / sum);
   reset();
 }
 
 void ModelWeights::reset() {
-  log_weights_ = log_priors_;
+  log_weights_.log() = log_priors_;
   normalise();
 }
 
 void ModelWeights::update(double dt, double memory, std::span<const double> log_likelihoods) {
-  if (log_likelihoods.size() != log_weights_.size())
+  if (log_likelihoods.size() != size())
     throw std::invalid_argument("ModelWeights: one log-likelihood per member");
   const double lambda = std::exp(-dt / memory);
-  for (std::size_t j = 0; j < log_weights_.size(); ++j)
-    log_weights_[j] =
-        lambda * log_weights_[j] + (1.0 - lambda) * log_priors_[j] + log_likelihoods[j];
+  Eigen::VectorXd& log_w = log_weights_.log();
+  const Eigen::Map<const Eigen::VectorXd> likelihoods(log_likelihoods.data(), log_w.size());
+  log_w = lambda * log_w + (1.0 - lambda) * log_priors_ + likelihoods;
   normalise();
 }
 
 void ModelWeights::normalise() {
-  // exp relative to the largest, so a very negative log-likelihood (an outlier) cannot underflow
-  // every member at once; the logs are shifted rather than recomputed, except where floored.
-  const double top = *std::max_element(log_weights_.begin(), log_weights_.end());
-  double sum = 0.0;
-  for (std::size_t j = 0; j < weights_.size(); ++j)
-    sum += weights_[j] = std::exp(log_weights_[j] - top);
-  const double log_sum = top + std::log(sum);
+  // Shifted by the largest before the exponentials, so a very negative log-likelihood (an
+  // outlier) cannot underflow every member at once; with none usable (NaN), back to uniform.
+  log_weights_.normalise(weights_);
+  Eigen::VectorXd& log_w = log_weights_.log();
   const double log_floor = std::log(kModelWeightFloor);
   double floored = 0.0;
-  for (std::size_t j = 0; j < weights_.size(); ++j) {
-    weights_[j] /= sum;
+  for (Eigen::Index j = 0; j < weights_.size(); ++j) {
     if (weights_[j] < kModelWeightFloor) {
       weights_[j] = kModelWeightFloor;
-      log_weights_[j] = log_floor;
-    } else {
-      log_weights_[j] -= log_sum;
+      log_w[j] = log_floor;
     }
     floored += weights_[j];
   }
-  const double log_floored = std::log(floored);
-  for (std::size_t j = 0; j < weights_.size(); ++j) {
-    weights_[j] /= floored;
-    log_weights_[j] -= log_floored;
-  }
+  weights_ /= floored;
+  log_w.array() -= std::log(floored);
 }
 
 }  // namespace opf

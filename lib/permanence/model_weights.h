@@ -7,6 +7,10 @@
 //
 // normalised and floored (renormalised), so that no member dies for good.
 
+#include "opf/particles/log_weights.h"
+
+#include <Eigen/Core>
+
 #include <span>
 #include <vector>
 
@@ -29,15 +33,17 @@ class ModelWeights {
   /// One step of dt (s) with the members' log-likelihoods, memory T_memory (s).
   void update(double dt, double memory, std::span<const double> log_likelihoods);
 
-  std::span<const double> weights() const { return weights_; }
-  std::size_t size() const { return weights_.size(); }
+  std::span<const double> weights() const {
+    return {weights_.data(), static_cast<std::size_t>(weights_.size())};
+  }
+  std::size_t size() const { return static_cast<std::size_t>(weights_.size()); }
 
  private:
   void normalise();
 
-  std::vector<double> log_priors_;
-  std::vector<double> log_weights_;
-  std::vector<double> weights_;
+  Eigen::VectorXd log_priors_;
+  LogWeights log_weights_;  ///< normalised in one vectorised pass, as the particles' weights
+  Eigen::VectorXd weights_;
 };
 
 }  // namespace opf

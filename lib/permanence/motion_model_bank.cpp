@@ -1,20 +1,19 @@
 #include "opf/permanence/motion_model_bank.h"
 
 #include "opf/core/estimator.h"
+#include "opf/particles/student_t_densities.h"
 #include "opf/permanence/ballistic_motion.h"
 #include "opf/permanence/weighted_choice.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace opf {
 namespace {
-
-// The position is measured directly: H = [1 0].
-const kalman::Matrix<1, 2> kObservation(1.0, 0.0);
 
 // Intervals closer than a nanosecond are one frame rate: a member's step is reused across them.
 constexpr double kSameInterval = 1e-9;  // s
@@ -113,8 +112,11 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
         f.bias_covariance.setZero();
       }
   for (int axis = 0; axis < 3; ++axis) {
-    log_likelihoods_.resize(filters_[axis].size());
-    for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
+    const std::size_t members = filters_[axis].size();
+    log_likelihoods_.resize(members);
+    determinants_.resize(members);
+    squared_distances_.resize(members);
+    for (std::size_t j = 0; j < members; ++j) {
       Filter& f = filters_[axis][j];
       if (std::abs(dt - f.step_dt) > kSameInterval) {
         f.step = models_[axis][j].step(dt);
@@ -124,11 +126,13 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
       f.mean += f.step.offset;
       if (continues_stretch) f.bias_covariance = f.step.transition * f.bias_covariance;
       const auto correction = update_member(f, position[axis], extra_noise, r);
-      log_likelihoods_[j] = correction.log_likelihood;
+      determinants_[j] = correction.determinant;
+      squared_distances_[j] = correction.squared_distance;
       f.surprises = correction.squared_distance > kAxisGateChiSquare ? f.surprises + 1 : 0;
       if (f.surprises >= kSurprisesToRestart)
         start(f, models_[axis][j].model, position[axis], last_position_[axis], dt, detection_r);
     }
+    student_t_log_densities(noise_model_, 1, determinants_, squared_distances_, log_likelihoods_);
     weights_[axis].update(dt, options_.memory, log_likelihoods_);
   }
   in_partial_views_ = extra_noise > 0.0;
@@ -137,15 +141,8 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
 
 kalman::Correction<3, 1> MotionModelBank::update_member(Filter& f, double z, double extra_noise,
                                                         double r) const {
+  if (extra_noise == 0.0) return update_position(f, z, r);  // s forgotten: (p, v) alone
   const kalman::Matrix<1> noise = kalman::Matrix<1>::Constant(r);
-  if (extra_noise == 0.0) {  // s forgotten: the (p, v) update alone
-    const auto c = kalman::update_covariance_student_t(f.covariance, kObservation, noise,
-                                                       kalman::Vector<1>(z - kObservation * f.mean),
-                                                       noise_model_);
-    f.mean += c.correction;
-    return {kalman::Vector<3>(c.correction[0], c.correction[1], 0.0), c.innovation,
-            c.squared_distance, c.log_likelihood};
-  }
   // The state (p, v, s) measured through H = [1 0 extra_noise], with the usual noise alone white.
   kalman::Vector<3> x;
   x << f.mean, f.bias;
@@ -161,6 +158,30 @@ kalman::Correction<3, 1> MotionModelBank::update_member(Filter& f, double z, dou
   f.bias_covariance = p.topRightCorner<2, 1>();
   f.bias_variance = p(2, 2);
   return correction;
+}
+
+kalman::Correction<3, 1> MotionModelBank::update_position(Filter& f, double z, double r) const {
+  // kalman::update_covariance_student_t with H = [1 0], in scalars (a bank's members spend most
+  // of their update in the general form's small matrices): S = P_pp + r, the noise scaled to r'
+  // by the innovation's distance, k = P H^T / (P_pp + r'), and the Joseph form
+  // P <- (I - k H) P (I - k H)^T + k r' k^T.
+  kalman::Matrix<2>& p = f.covariance;
+  const double innovation = z - f.mean[0];
+  kalman::Correction<3, 1> out;
+  out.innovation[0] = innovation;
+  out.determinant = p(0, 0) + r;
+  out.squared_distance = innovation * innovation / out.determinant;
+  out.log_likelihood = std::numeric_limits<double>::quiet_NaN();  // read with the others'
+  const double scaled = r * kalman::student_t_noise_scale(noise_model_, out.squared_distance, 1);
+  const double k0 = p(0, 0) / (p(0, 0) + scaled), k1 = p(0, 1) / (p(0, 0) + scaled);
+  const double keep = 1.0 - k0;  // (I - k H) = [keep 0; -k1 1]
+  const double pp = keep * keep * p(0, 0) + k0 * k0 * scaled;
+  const double pv = keep * (p(0, 1) - k1 * p(0, 0)) + k0 * k1 * scaled;
+  const double vv = p(1, 1) - 2.0 * k1 * p(0, 1) + k1 * k1 * (p(0, 0) + scaled);
+  p << pp, pv, pv, vv;
+  out.correction << k0 * innovation, k1 * innovation, 0.0;
+  f.mean += out.correction.head<2>();
+  return out;
 }
 
 PartialViewBias MotionModelBank::partial_view_bias() const {

@@ -152,8 +152,10 @@ class MotionModelBank {
   void start(Filter& filter, MotionModel model, double position, double previous, double dt,
              double r) const;
   /// Member f's update with the axis's measurement z, its stated extra noise and the detector's
-  /// usual noise (variance r); returns the Student-t correction's log-likelihood and distance.
+  /// usual noise (variance r); returns the Student-t correction (its log-likelihood left out).
   kalman::Correction<3, 1> update_member(Filter& f, double z, double extra_noise, double r) const;
+  /// update_member's (p, v) update when the detection states no extra noise.
+  kalman::Correction<3, 1> update_position(Filter& f, double z, double r) const;
   /// member_prediction without its checks.
   MemberPrediction predicted_member(int axis, std::size_t index, double horizon) const;
 
@@ -161,7 +163,8 @@ class MotionModelBank {
   std::array<std::vector<AxisMotionModel>, 3> models_;
   std::array<std::vector<Filter>, 3> filters_;
   std::vector<ModelWeights> weights_;  ///< one per axis
-  std::vector<double> log_likelihoods_;
+  /// Scratch per member on an axis: S, d^2, then their log-densities.
+  std::vector<double> determinants_, squared_distances_, log_likelihoods_;
   /// The detector's noise on one axis (kBankNoiseDof).
   kalman::StudentTNoise noise_model_ = kalman::student_t_noise<1>(kBankNoiseDof);
   Eigen::Vector3d last_position_ = Eigen::Vector3d::Zero();

@@ -1,6 +1,7 @@
 #include "opf/permanence/rotation_model_bank.h"
 
 #include "opf/core/so3.h"
+#include "opf/particles/student_t_densities.h"
 #include "opf/permanence/weighted_choice.h"
 
 #include <cmath>
@@ -46,6 +47,8 @@ RotationModelBank::RotationModelBank(const RotationModelBankOptions& options)
       filters_(members_of(options)),
       surprises_(filters_.size(), 0),
       weights_(priors_of(filters_)),
+      determinants_(filters_.size(), 0.0),
+      squared_distances_(filters_.size(), 0.0),
       log_likelihoods_(filters_.size(), 0.0) {}
 
 void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) {
@@ -71,7 +74,8 @@ void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) 
     TangentRotationFilter& f = filters_[j];
     f.predict(dt);
     const auto correction = f.update(orientation, sigma * sigma, noise_model_);
-    log_likelihoods_[j] = correction.log_likelihood;
+    determinants_[j] = correction.determinant;
+    squared_distances_[j] = correction.squared_distance;
     surprises_[j] = correction.squared_distance > kRotationGateChiSquare ? surprises_[j] + 1 : 0;
     if (surprises_[j] >= kSurprisesToRestart) {
       // Restarted from the last two orientations: the body rate is their difference's slope.
@@ -85,6 +89,7 @@ void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) 
     }
   }
   last_orientation_ = orientation;
+  student_t_log_densities(noise_model_, 3, determinants_, squared_distances_, log_likelihoods_);
   weights_.update(dt, options_.memory, log_likelihoods_);
 }
 

@@ -74,7 +74,8 @@ class RotationModelBank {
   std::vector<int> surprises_;  ///< per member: consecutive measurements outside its gate
   Eigen::Quaterniond last_orientation_ = Eigen::Quaterniond::Identity();
   ModelWeights weights_;
-  std::vector<double> log_likelihoods_;
+  /// Scratch per member: det S, d^2, then their log-densities.
+  std::vector<double> determinants_, squared_distances_, log_likelihoods_;
   /// The detector's noise in the tangent space (kBankNoiseDof).
   kalman::StudentTNoise noise_model_ = kalman::student_t_noise<3>(kBankNoiseDof);
   double t_ = 0.0;

@@ -8,6 +8,7 @@
 #include <Eigen/LU>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace opf {
@@ -66,6 +67,11 @@ void TangentRotationFilter::predict(double dt) {
     step_dt_ = dt;
   }
   const AxisMotionStep& axis = step_;
+  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
+  if (!has_rate()) {  // w pinned at 0: no turn, the value block random-walks
+    covariance_.topLeftCorner<3, 3>() += axis.process_noise(0, 0) * identity;
+    return;
+  }
   const double turn = axis.transition(0, 1), decay = axis.transition(1, 1);
   const Eigen::Quaterniond step_turn = so3::exp(angular_velocity_ * turn);
   const Eigen::Matrix3d spin = step_turn.conjugate().toRotationMatrix();
@@ -77,7 +83,6 @@ void TangentRotationFilter::predict(double dt) {
   const Eigen::Matrix3d spun_rate = spin * b + turn * c;  // top right of F P
   Eigen::Matrix3d value = (spin * a + turn * b.transpose()) * spin.transpose() + turn * spun_rate;
   value = 0.5 * (value + value.transpose()).eval();
-  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   covariance_.topLeftCorner<3, 3>() = value + axis.process_noise(0, 0) * identity;
   covariance_.topRightCorner<3, 3>() = decay * spun_rate + axis.process_noise(0, 1) * identity;
   covariance_.bottomLeftCorner<3, 3>() = covariance_.topRightCorner<3, 3>().transpose();
@@ -99,23 +104,34 @@ kalman::Correction<6, 3> TangentRotationFilter::update(
   kalman::Correction<6, 3> out;
   out.innovation = residual;
   out.squared_distance = residual.dot(s_inverse * residual);
-  const double log_det = std::log(s.determinant());
+  out.determinant = s.determinant();
   Eigen::Matrix3d gain_inverse = s_inverse;  // S^-1 of the noise the update takes
   if (heavy_tails) {
     // Student-t noise (linear_kalman.h, update_covariance_student_t): R scaled by the posterior
-    // mean of 1 / w, the density Student-t's.
-    out.log_likelihood =
-        kalman::student_t_log_density(*heavy_tails, out.squared_distance, log_det, 3);
+    // mean of 1 / w; the density, Student-t's, left to the caller as there.
+    out.log_likelihood = std::numeric_limits<double>::quiet_NaN();
     const double scale = kalman::student_t_noise_scale(*heavy_tails, out.squared_distance, 3);
     gain_inverse = (a + variance * scale * identity).inverse();
   } else {
-    out.log_likelihood = kalman::gaussian_log_density(out.squared_distance, log_det, 3);
+    out.log_likelihood =
+        kalman::gaussian_log_density(out.squared_distance, std::log(out.determinant), 3);
   }
-  const Eigen::Matrix<double, 6, 3> x = covariance_.leftCols<3>();
-  const Eigen::Matrix<double, 3, 6> gain_transposed = gain_inverse * x.transpose();
-  out.correction = gain_transposed.transpose() * residual;
-  covariance_ -= x * gain_transposed;
-  covariance_ = 0.5 * (covariance_ + covariance_.transpose()).eval();
+  // K = [A; B^T] G, G that S^-1 (symmetric): the correction K r, and P <- P - K [A B] by blocks,
+  // the symmetric ones symmetrised (a 6 x 6 product costs twice as much, and without a rate B and
+  // C stay 0).
+  const Eigen::Vector3d weighed = gain_inverse * residual;
+  const Eigen::Matrix3d b = covariance_.topRightCorner<3, 3>();
+  out.correction << a * weighed, b.transpose() * weighed;
+  Eigen::Matrix3d value = a - a * (gain_inverse * a);
+  covariance_.topLeftCorner<3, 3>() = 0.5 * (value + value.transpose());
+  if (has_rate()) {
+    const Eigen::Matrix3d weighed_rate = gain_inverse * b;  // G B
+    const Eigen::Matrix3d rate =
+        covariance_.bottomRightCorner<3, 3>() - b.transpose() * weighed_rate;
+    covariance_.topRightCorner<3, 3>() = b - a * weighed_rate;
+    covariance_.bottomLeftCorner<3, 3>() = covariance_.topRightCorner<3, 3>().transpose();
+    covariance_.bottomRightCorner<3, 3>() = 0.5 * (rate + rate.transpose());
+  }
   // The reset Jacobian I - [dtheta/2]x is left out, as in the Kalman baselines: a relative
   // O(|dtheta|) change of P.
   orientation_ = (orientation_ * so3::exp(out.correction.head<3>())).normalized();

@@ -51,8 +51,9 @@ class TangentRotationFilter {
   /// Updates with a measured orientation of tangent variance `variance` (rad^2 per axis), its
   /// noise Gaussian or, given `heavy_tails`, Student-t of that scale
   /// (kalman::update_covariance_student_t); returns the update's correction, with the
-  /// innovation's squared distance and log-likelihood under that noise. The quaternion's sign is
-  /// irrelevant.
+  /// innovation's squared distance and det S, and its log-likelihood under Gaussian noise (under
+  /// Student-t noise left to the caller, as kalman::update_covariance_student_t leaves it). The
+  /// quaternion's sign is irrelevant.
   kalman::Correction<6, 3> update(
       const Eigen::Quaterniond& measured, double variance,
       const std::optional<kalman::StudentTNoise>& heavy_tails = std::nullopt);

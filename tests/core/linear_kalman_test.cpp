@@ -100,8 +100,13 @@ TEST(LinearKalman, StudentTUpdateScalesTheNoiseByTheInnovationsDistance) {
   EXPECT_EQ(p, expected_p);
   // d^2 under the unscaled S = 2.1 + 0.9: what a gate tests.
   EXPECT_NEAR(c.squared_distance, 1.5 * 1.5 / 3.0, 1e-15);
-  // The Cauchy density of 1.5 with scale sqrt(3): 1 / (pi sqrt(3) (1 + 0.75)).
-  EXPECT_NEAR(c.log_likelihood, -std::log(std::numbers::pi * std::sqrt(3.0) * 1.75), 1e-14);
+  // The Cauchy density of 1.5 with scale sqrt(3): 1 / (pi sqrt(3) (1 + 0.75)), from d^2 and
+  // det S, which the update leaves to its caller.
+  EXPECT_EQ(c.determinant, 3.0);
+  EXPECT_TRUE(std::isnan(c.log_likelihood));
+  EXPECT_NEAR(student_t_log_density(student_t_noise<1>(1.0), c.squared_distance,
+                                    std::log(c.determinant), 1),
+              -std::log(std::numbers::pi * std::sqrt(3.0) * 1.75), 1e-14);
 
   // An innovation 10 sigma out: its noise is taken (10^2 + 1) / 2 times wider, so the state moves
   // by a sixteenth of the Gaussian update's correction.
@@ -127,8 +132,12 @@ TEST(LinearKalman, StudentTTendsToTheGaussianAsItsDegreesOfFreedomGrow) {
   const auto gaussian = update_covariance<3, 3>(p_gauss, h, r, innovation);
   // At 10^6 degrees of freedom R is scaled by 1 + (d^2 - 3) / (10^6 + 3), and the densities
   // differ by O(d^4 / 10^6): a few parts in a million.
-  const auto t = update_covariance_student_t<3, 3>(p_t, h, r, innovation, student_t_noise<3>(1e6));
-  EXPECT_NEAR(t.log_likelihood, gaussian.log_likelihood, 1e-5);
+  const StudentTNoise noise = student_t_noise<3>(1e6);
+  const auto t = update_covariance_student_t<3, 3>(p_t, h, r, innovation, noise);
+  EXPECT_NEAR(t.determinant, (p + r).determinant(), 1e-12);
+  EXPECT_NEAR(gaussian.determinant, t.determinant, 1e-15);
+  EXPECT_NEAR(student_t_log_density(noise, t.squared_distance, std::log(t.determinant), 3),
+              gaussian.log_likelihood, 1e-5);
   const double d2 = innovation.dot((p + r).inverse() * innovation);
   EXPECT_NEAR(gaussian.squared_distance, d2, 1e-12);
   EXPECT_NEAR(t.squared_distance, d2, 1e-12);

@@ -25,6 +25,23 @@ TEST(So3, ExpMatchesEigenAngleAxis) {
   EXPECT_LT(so3::angle_between(so3::exp(axis * 1.1), expected), 1e-12);
 }
 
+// exp and log take series below a small angle: there they are the closed forms (libm's sin, cos
+// and atan2) to a few ulp, from a nanoradian to just either side of the switch.
+TEST(So3, SeriesForSmallAnglesAreTheClosedForms) {
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
+  for (const double angle : {1e-9, 1e-4, 0.01, 0.0999, 0.1, 0.1001, 0.3}) {
+    const Eigen::Quaterniond q = so3::exp(axis * angle);
+    EXPECT_NEAR(q.w(), std::cos(0.5 * angle), 4e-16) << angle;
+    EXPECT_LT((q.vec() - std::sin(0.5 * angle) * axis).norm(), 4e-16 * angle) << angle;
+    const Eigen::Quaterniond exact(std::cos(0.5 * angle), std::sin(0.5 * angle) * axis.x(),
+                                   std::sin(0.5 * angle) * axis.y(),
+                                   std::sin(0.5 * angle) * axis.z());
+    const double s = exact.vec().norm();
+    const Eigen::Vector3d expected = exact.vec() * (2.0 * std::atan2(s, exact.w()) / s);
+    EXPECT_LT((so3::log(exact) - expected).norm(), 4e-16 * angle) << angle;
+  }
+}
+
 TEST(So3, LogIgnoresQuaternionSign) {
   const Eigen::Quaterniond q = so3::exp(Eigen::Vector3d(0.4, -0.1, 0.2));
   const Eigen::Quaterniond minus_q(-q.coeffs());

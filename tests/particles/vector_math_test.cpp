@@ -31,6 +31,26 @@ TEST(VectorMath, ExpNonPositiveMatchesLibmToTwoUlp) {
   EXPECT_TRUE(std::isnan(vmath::exp_nonpositive(std::nan(""))));
 }
 
+// Over the whole range of normal doubles, and near 1, where ln x is small and only a relative
+// bound says it is accurate.
+TEST(VectorMath, LogPositiveMatchesLibmToTwoUlp) {
+  Random random(2);
+  double worst = 0.0;
+  for (int i = 0; i < kDraws; ++i) {
+    const double x =
+        i % 2 ? std::exp(1400.0 * random.uniform() - 700.0) : 1.0 + 0.6 * (random.uniform() - 0.5);
+    if (x == 1.0) continue;
+    worst = std::max(worst, std::abs(vmath::log_positive(x) / std::log(x) - 1.0));
+  }
+  EXPECT_LT(worst, 2 * kUlp);
+  EXPECT_EQ(vmath::log_positive(1.0), 0.0);
+  EXPECT_EQ(vmath::log_positive(std::numeric_limits<double>::min()),
+            std::log(std::numeric_limits<double>::min()));
+  EXPECT_EQ(vmath::log_positive(std::numeric_limits<double>::infinity()),
+            std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(std::isnan(vmath::log_positive(std::nan(""))));
+}
+
 TEST(VectorMath, SinCosMatchLibm) {
   Random random(3);
   float worst_float = 0.0f;
