@@ -14,6 +14,7 @@ bool LogWeights::normalise() {
 
 kernels::NormalisedWeights LogWeights::normalise(Eigen::VectorXd& linear) {
   materialise();
+  ++generation_;
   linear.resize(log_w_.size());
   const kernels::NormalisedWeights result =
       kernels::normalise_log_weights(log_w_.data(), linear.data(), size());
@@ -43,12 +44,14 @@ double LogWeights::effective_sample_fraction() const {
 
 double* LogWeights::for_likelihood(bool& accumulate) {
   accumulate = !uniform_;
+  ++generation_;
   if (uniform_) log_w_.resize(Eigen::Index(size_));  // about to be overwritten
   uniform_ = false;
   return log_w_.data();
 }
 
 void LogWeights::reset() {
+  ++generation_;
   log_w_ = Eigen::VectorXd();
   uniform_ = true;
 }

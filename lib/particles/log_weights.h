@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <cstdint>
 
 namespace opf {
 
@@ -25,8 +26,12 @@ class LogWeights {
   Eigen::VectorXd& log() {
     materialise();
     uniform_ = false;
+    ++generation_;
     return log_w_;
   }
+  /// Counts the write accesses (log(), for_likelihood(), normalise, reset): what was read from
+  /// the weights at one generation still holds while it is the same.
+  std::uint64_t generation() const { return generation_; }
 
   /// Multiplies every weight by its likelihood: adds log-likelihoods.
   void add(const Eigen::VectorXd& log_likelihood) { log() += log_likelihood; }
@@ -65,6 +70,7 @@ class LogWeights {
   std::size_t size_ = 0;
   mutable Eigen::VectorXd log_w_;  ///< empty while uniform and not yet asked for
   bool uniform_ = true;
+  std::uint64_t generation_ = 0;
 };
 
 }  // namespace opf

@@ -11,6 +11,7 @@
 #include <Eigen/Cholesky>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -23,7 +24,8 @@ namespace {
 template <int Dim>
 bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted,
                                   const ResamplingOptions& options, Random& random, double& ess,
-                                  bool& resampled, Eigen::VectorXd& column_means) {
+                                  bool& resampled, Eigen::VectorXd& column_means,
+                                  KeptRelativeWeights& kept) {
   resampled = false;
   ess = 1.0;
   if (portion.weights.uniform()) {
@@ -36,9 +38,15 @@ bool normalise_and_maybe_resample(ParticlePortion<Dim>& portion, bool reweighted
       options.scheme == mrpt::bayes::CParticleFilter::prSystematic) {
     // Resampling follows at once (the paper's default): relative weights in single precision
     // are all it needs, and normalising the log-weights first would be undone by the reset.
-    std::vector<float> relative(n);
-    const kernels::NormalisedWeights w =
-        kernels::resampling_weights(portion.weights.log().data(), relative.data(), n);
+    std::vector<float> relative;
+    kernels::NormalisedWeights w;
+    if (kept.hold_for(portion.weights)) {  // the share test's, this step
+      relative.swap(kept.values);
+      w = kept.found;
+    } else {
+      relative.resize(n);
+      w = kernels::resampling_weights(portion.weights.log().data(), relative.data(), n);
+    }
     resampled = true;
     if (!w.usable) {
       portion.weights.reset();  // uniform weights resample to the same particles
@@ -243,8 +251,7 @@ bool PoseParticleFilter::update_with_measurement(const Eigen::Vector3d& position
   const double best = translation_best_exponent_;
   // The share in single precision, as resampling reads it (1e-7 relative: far finer than any
   // threshold); NaN, and so not under the share, when no weight is usable.
-  const LogWeights& weights = translation_.weights;
-  const double share = kernels::effective_fraction(weights.log().data(), weights.size());
+  const double share = effective_share(translation_.weights, translation_kept_);
   if (!takes_gaussian_update(best, share, min_effective_share)) {
     update_rotation(orientation, min_effective_share);
     const PortionsReset reset =
@@ -307,8 +314,7 @@ void PoseParticleFilter::update_rotation(const Eigen::Quaterniond& orientation,
   // The share of the posterior weights, prior and likelihood together, as for the translation.
   const bool uniform = rotation_.weights.uniform();
   reweight_rotation(orientation);
-  const LogWeights& weights = rotation_.weights;
-  const double share = kernels::effective_fraction(weights.log().data(), weights.size());
+  const double share = effective_share(rotation_.weights, rotation_kept_);
   if (!takes_gaussian_update(rotation_best_exponent_, share, min_effective_share)) return;
   // The prior's weights back for its moments (the likelihood taken off again: rare enough that
   // every other frame need not keep a copy).
@@ -334,6 +340,15 @@ void PoseParticleFilter::update_rotation(const Eigen::Quaterniond& orientation,
   rotation_.columns.setZero();
   rotation_reweighted_ = rotation_underflow_ = false;
   rotation_gaussian_ = true;
+}
+
+double PoseParticleFilter::effective_share(const LogWeights& weights, KeptRelativeWeights& kept) {
+  const std::size_t n = weights.size();
+  kept.values.resize(n);
+  kept.found = kernels::resampling_weights(weights.log().data(), kept.values.data(), n);
+  kept.generation = weights.generation();
+  kept.valid = true;
+  return kept.found.usable ? kept.found.ess_fraction : std::numeric_limits<double>::quiet_NaN();
 }
 
 bool PoseParticleFilter::takes_gaussian_update(double best_exponent, double share,
@@ -372,10 +387,12 @@ ResampleReport PoseParticleFilter::normalise_and_resample() {
   ResampleReport report;
   const bool translation_ok = normalise_and_maybe_resample(
       translation_, translation_reweighted_, options_.resampling, random_, report.ess_translation,
-      report.resampled_translation, report.translation_column_means);
+      report.resampled_translation, report.translation_column_means, translation_kept_);
   const bool rotation_ok = normalise_and_maybe_resample(
       rotation_, rotation_reweighted_, options_.resampling, random_, report.ess_rotation,
-      report.resampled_rotation, report.rotation_column_means);
+      report.resampled_rotation, report.rotation_column_means, rotation_kept_);
+  translation_kept_.release();
+  rotation_kept_.release();
   report.weights_recovered = !translation_ok || !rotation_ok;
   report.likelihood_underflow = translation_underflow_ || rotation_underflow_;
   translation_underflow_ = rotation_underflow_ = false;

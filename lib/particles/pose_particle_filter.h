@@ -17,6 +17,7 @@
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <vector>
 
 namespace opf {
 
@@ -55,6 +56,27 @@ struct PortionsReset {
 /// exp(x) is below the smallest normal double for x under log(DBL_MIN) = -708.4: a Gaussian
 /// exponent this low means the measurement lies about 37.6 (inflated) sigmas from the particle.
 inline constexpr double kLikelihoodUnderflowExponent = -708.3964185322641;
+
+/// A portion's single-precision relative weights as the share test read them
+/// (kernels::resampling_weights), kept for the systematic resampling that follows in the same
+/// step: the exponentials taken once instead of twice. They hold while the log-weights are at
+/// the generation they were read from (LogWeights::generation).
+struct KeptRelativeWeights {
+  std::vector<float> values;
+  kernels::NormalisedWeights found;
+  std::uint64_t generation = 0;
+  bool valid = false;
+
+  /// Whether they are still those of `weights`.
+  bool hold_for(const LogWeights& weights) const {
+    return valid && generation == weights.generation();
+  }
+  /// Gives the storage back (nothing is kept between steps).
+  void release() {
+    std::vector<float>().swap(values);
+    valid = false;
+  }
+};
 
 class PoseParticleFilter {
  public:
@@ -209,6 +231,9 @@ class PoseParticleFilter {
   /// effective (within the gate, no underflow; never with a share of 0), redrawn from the
   /// Gaussian posterior of its prior moments and the measurement.
   void update_rotation(const Eigen::Quaterniond& orientation, double min_effective_share);
+  /// The share of effective particles the weights leave, NaN when none is usable; their relative
+  /// weights kept in `kept`.
+  static double effective_share(const LogWeights& weights, KeptRelativeWeights& kept);
 
   PoseParticleFilterOptions options_;
   /// m per axis: options_' value on every axis unless set_translation_likelihood_noise
@@ -227,6 +252,7 @@ class PoseParticleFilter {
   bool translation_reset_ = false;      ///< by the last update_with_measurement
   bool translation_underflow_ = false;  ///< since the last normalise_and_resample
   bool rotation_underflow_ = false;
+  KeptRelativeWeights translation_kept_, rotation_kept_;  ///< from the share tests, this step
 };
 
 /// Throws std::invalid_argument naming the first option that is out of range.

@@ -41,9 +41,9 @@ OPF_ALWAYS_INLINE double max_value(const double* __restrict a, std::size_t n, bo
   return lanes_max(top);
 }
 
-// w_i = exp(log_w[i] - max log_w) in T's precision, written to `linear` when kWrite, with their
-// sum and sum of squares: one body for normalisation (double), resampling and the share test
-// (float, so both read the same fraction). Not usable when a weight is NaN or every one -inf.
+// w_i = exp(log_w[i] - max log_w) in T's precision, written to `linear`, with their sum and sum
+// of squares: one body for normalisation (double) and for resampling and the share test (float).
+// Not usable when a weight is NaN or every one -inf.
 struct ShiftedExponentials {
   bool usable = false;
   double top = 0.0, sum = 0.0, sum_squares = 0.0;
@@ -54,7 +54,7 @@ struct ShiftedExponentials {
   }
 };
 
-template <class T, bool kWrite>
+template <class T>
 OPF_ALWAYS_INLINE ShiftedExponentials shifted_exponentials(const double* __restrict log_w,
                                                            T* __restrict linear, std::size_t n) {
   bool nan = false;
@@ -63,7 +63,7 @@ OPF_ALWAYS_INLINE ShiftedExponentials shifted_exponentials(const double* __restr
   const std::array<double, 2> sums =
       sum_in_lanes<T, 2>(n, [=](std::size_t i, std::size_t l, auto& a) OPF_INLINE_LAMBDA {
         const T w = vmath::exp_nonpositive(static_cast<T>(log_w[i] - top));
-        if constexpr (kWrite) linear[i] = w;
+        linear[i] = w;
         a[0][l] += w;
         a[1][l] += w * w;
       });
@@ -75,7 +75,7 @@ OPF_ALWAYS_INLINE ShiftedExponentials shifted_exponentials(const double* __restr
 OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
                                                    double* __restrict linear, std::size_t n) {
   if (n == 0) return {};
-  const ShiftedExponentials e = shifted_exponentials<double, true>(log_w, linear, n);
+  const ShiftedExponentials e = shifted_exponentials<double>(log_w, linear, n);
   if (!e.usable) return {false, 0.0};
   // Shift by the max first, then by the log-sum of the (small) shifted values: full precision.
   const double shift = e.top + std::log(e.sum);
@@ -91,14 +91,8 @@ OPF_KERNEL NormalisedWeights normalise_log_weights(double* __restrict log_w,
 OPF_KERNEL NormalisedWeights resampling_weights(const double* __restrict log_w,
                                                 float* __restrict linear, std::size_t n) {
   if (n == 0) return {};
-  const ShiftedExponentials e = shifted_exponentials<float, true>(log_w, linear, n);
+  const ShiftedExponentials e = shifted_exponentials<float>(log_w, linear, n);
   return e.usable ? NormalisedWeights{true, e.ess_fraction(n)} : NormalisedWeights{false, 0.0};
-}
-
-OPF_KERNEL double effective_fraction(const double* __restrict log_w, std::size_t n) {
-  const ShiftedExponentials e =
-      n > 0 ? shifted_exponentials<float, false>(log_w, nullptr, n) : ShiftedExponentials{};
-  return e.usable ? e.ess_fraction(n) : std::numeric_limits<double>::quiet_NaN();
 }
 
 OPF_KERNEL double relative_weights(const double* __restrict log_w, double* __restrict linear,

@@ -23,11 +23,6 @@ NormalisedWeights normalise_log_weights(double* log_w, double* linear, std::size
 /// it is (resampling makes it uniform). usable = false when every weight was -inf or any NaN.
 NormalisedWeights resampling_weights(const double* log_w, float* linear, std::size_t n);
 
-/// The ESS fraction (sum w)^2 / (n sum w^2) of w = exp(log_w - max log_w), in single precision
-/// as resampling_weights reads it, without writing the weights; NaN when every weight is -inf or
-/// any NaN.
-double effective_fraction(const double* log_w, std::size_t n);
-
 /// linear[i] = exp(log_w[i] - max log_w) (unnormalised, largest 1); returns their sum.
 double relative_weights(const double* log_w, double* linear, std::size_t n);
 

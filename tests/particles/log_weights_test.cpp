@@ -31,6 +31,34 @@ TEST(LogWeights, AllWeightsVanishedRecoversToUniform) {
   for (double v : w.linear()) EXPECT_DOUBLE_EQ(v, 0.25);
 }
 
+// Every write access moves the generation on; reading does not (what was read at a generation
+// holds while it stays).
+TEST(LogWeights, WritesMoveTheGenerationOnReadsDoNot) {
+  LogWeights w(3);
+  const LogWeights& read = w;
+  std::uint64_t last = w.generation();
+  const auto moved = [&] {
+    const bool on = w.generation() > last;
+    last = w.generation();
+    return on;
+  };
+  EXPECT_EQ(read.log().size(), 3);
+  (void)read.effective_sample_fraction();
+  (void)read.linear();
+  EXPECT_FALSE(moved());
+  w.log()[0] = -1.0;
+  EXPECT_TRUE(moved());
+  w.add(Eigen::Vector3d(0.0, -1.0, -2.0));
+  EXPECT_TRUE(moved());
+  EXPECT_TRUE(w.normalise());
+  EXPECT_TRUE(moved());
+  bool accumulate = false;
+  w.for_likelihood(accumulate);
+  EXPECT_TRUE(moved());
+  w.reset();
+  EXPECT_TRUE(moved());
+}
+
 TEST(LogWeights, EffectiveSampleFraction) {
   LogWeights w(4);
   w.reset();

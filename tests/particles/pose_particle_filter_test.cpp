@@ -231,6 +231,33 @@ TEST(PoseParticleFilter, TheShareTestIsTheSameWithStoredEqualWeights) {
   }
 }
 
+// The share test's relative weights are kept for the resampling that follows in the same step:
+// it resamples as weights read afresh would, bit for bit; and a reweight in between (the weights
+// moved on) is resampled by the new weights, not by the kept ones.
+TEST(PoseParticleFilter, TheShareTestsWeightsResampleAsFreshOnesUnlessReweightedSince) {
+  const Eigen::Quaterniond turned = so3::exp(Eigen::Vector3d(0.02, -0.01, 0.03));
+  const Eigen::Vector3d z(0.11, 0.19, 0.3);  // well inside the cloud: no Gaussian update
+  const Eigen::VectorXd tilt = Eigen::VectorXd::LinSpaced(2000, -3.0, 0.0);
+  for (const bool reweighted_since : {false, true}) {
+    PoseParticleFilter tested = small_filter(2000), fresh = small_filter(2000);
+    tested.update_with_measurement(z, turned, 0.01);  // the share test, weights kept
+    fresh.update_with_measurement(z, turned);         // no share test
+    ASSERT_FALSE(tested.translation_took_gaussian_posterior());
+    ASSERT_FALSE(tested.rotation_took_gaussian_posterior());
+    if (reweighted_since) {
+      tested.reweight_translation_by(tilt);
+      tested.reweight_rotation_by(tilt);
+      fresh.reweight_translation_by(tilt);
+      fresh.reweight_rotation_by(tilt);
+    }
+    const ResampleReport a = tested.normalise_and_resample(), b = fresh.normalise_and_resample();
+    EXPECT_EQ(a.ess_translation, b.ess_translation) << reweighted_since;
+    EXPECT_EQ(a.ess_rotation, b.ess_rotation) << reweighted_since;
+    EXPECT_EQ(tested.translation().states, fresh.translation().states) << reweighted_since;
+    EXPECT_EQ(tested.rotation().states, fresh.rotation().states) << reweighted_since;
+  }
+}
+
 // A step with a floor on its spread: with any floor under the random walk's the step is the random
 // walk's, particle for particle (no floor at all, or half the walk); above it, each axis spreads
 // by its own floor.
