@@ -122,7 +122,7 @@ kalman::Correction<6, 3> TangentRotationFilter::update(
   const Eigen::Vector3d weighed = gain_inverse * residual;
   const Eigen::Matrix3d b = covariance_.topRightCorner<3, 3>();
   out.correction << a * weighed, b.transpose() * weighed;
-  Eigen::Matrix3d value = a - a * (gain_inverse * a);
+  const Eigen::Matrix3d value = a - a * (gain_inverse * a);
   covariance_.topLeftCorner<3, 3>() = 0.5 * (value + value.transpose());
   if (has_rate()) {
     const Eigen::Matrix3d weighed_rate = gain_inverse * b;  // G B
