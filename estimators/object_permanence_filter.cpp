@@ -214,13 +214,17 @@ Estimate ObjectPermanenceFilter::step(double t, const mrpt::poses::CPose3D* meas
 Estimate ObjectPermanenceFilter::update(double t, double dt,
                                         const mrpt::poses::CPose3D& measurement, double extra_noise,
                                         const EnsembleView& ensemble) {
-  // The object was seen in the previous frame too: the banks' velocity carries the particles.
-  const bool drifts = options_.velocity_drift && !hidden_ && !history_.empty();
+  // The banks' motion carries the particles to the measurement: seen in the previous frame too,
+  // by the banks' velocity; after a gap, on along the mixture they followed through it.
+  const bool drifts = options_.velocity_drift && !history_.empty();
   for (std::size_t i = 0; i < hypotheses_.size(); ++i) {
-    if (i == 0 && drifts)
-      predict_with_bank_velocity(hypotheses_[0], dt);
+    Hypothesis& each = hypotheses_[i];
+    if (drifts && hidden_ && each.motion && each.motion->predicts_the_measurement())
+      each.motion->step(t - dt, t, ensemble, each.filter);
+    else if (drifts && !hidden_ && i == 0)
+      predict_with_bank_velocity(each, dt);
     else
-      hypotheses_[i].filter.predict(dt);
+      each.filter.predict(dt);
   }
   const Eigen::Vector3d position = translation_of(measurement);
   const Eigen::Quaterniond orientation = orientation_of(measurement);

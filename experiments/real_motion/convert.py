@@ -5,7 +5,7 @@ The raw files keep their datasets' own formats (TUM, EuRoC/ASL, KITTI, MOTChalle
 they can be checked against the originals; this converter applies one fixed protocol (README.md)
 so that every machine produces the same logs, byte for byte, from the same inputs and seed.
 
-    python3 experiments/real_motion/convert.py --out DIR [--seed N] [--gaps 0.3,0.6,1]
+    python3 experiments/real_motion/convert.py --out DIR [--seed N] [--gaps 0.3,0.6,1 | --missed P]
 """
 
 import argparse
@@ -29,6 +29,23 @@ MAX_GAP = 30.0  # s: a longer gap leaves a recording excerpt (about a minute) no
 def gap_period(length):
     """Seconds between gap starts: 2.5, or the gap plus 1.5 s seen where that is longer."""
     return max(GAP_PERIOD, length + GAP_VISIBLE)
+
+
+def parse_missed(text):
+    """'0.3' -> 0.3: the probability that the detector misses a frame, above 0 and below 1."""
+    try:
+        probability = float(text)
+    except ValueError:
+        probability = float("nan")
+    if not 0.0 < probability < 1.0:
+        raise ConvertError(f"--missed {text!r}: expected a probability above 0 and below 1, "
+                           "as 0.3")
+    return probability
+
+
+def missed_label(probability):
+    """The gap column's word for logs with missed frames: 'missed0.3'."""
+    return f"missed{probability:g}"
 
 
 def parse_gaps(text):
@@ -241,6 +258,14 @@ def gap_mask(t, length):
     return hidden
 
 
+def missed_mask(count, probability, rng):
+    """Frames a detector misses: each after the first independently with the given probability
+    (the first is seen: a track starts at a detection)."""
+    missed = rng.random(count) < probability
+    missed[0] = False
+    return missed
+
+
 def quaternion_multiply(a, b):
     """Hamilton products of rows of (x, y, z, w) quaternions."""
     ax, ay, az, aw = a.T
@@ -282,8 +307,9 @@ def write_log(path, obj, t, p, q):
             f.write(",".join(["%.9g" % ti, obj] + ["%.9g" % v for v in (*pi, *qi)]) + "\n")
 
 
-def convert_trajectory(name, kind, t, p, q, rates, out, seed, gaps=GAP_LENGTHS):
-    """One sequence: a truth file per rate and a noisy log per rate and gap length."""
+def convert_trajectory(name, kind, t, p, q, rates, out, seed, gaps=GAP_LENGTHS, missed=None):
+    """One sequence: a truth file per rate and a noisy log per rate and gap length, or, with
+    `missed`, one per rate whose frames are each missed with that probability."""
     entries = []
     q = continuous(q)
     for rate in rates:
@@ -295,13 +321,19 @@ def convert_trajectory(name, kind, t, p, q, rates, out, seed, gaps=GAP_LENGTHS):
             raise ConvertError(f"sequence {name}: field rates: unknown rate {rate!r}")
         truth = f"{name}_{rate}_truth.csv"
         write_log(out / truth, name, tr, pr, qr)
-        for length in gaps:
-            visible = ~gap_mask(tr, length)
-            rng = np.random.default_rng(seed_for(name, rate, length, seed))
+        hidings = ([(f"{g:g}", g) for g in gaps] if missed is None else
+                   [(missed_label(missed), None)])
+        for label, length in hidings:
+            if length is None:
+                rng = np.random.default_rng(seed_for(name, rate, label, seed))
+                visible = ~missed_mask(len(tr), missed, rng)
+            else:
+                rng = np.random.default_rng(seed_for(name, rate, length, seed))
+                visible = ~gap_mask(tr, length)
             pn, qn = add_noise(pr[visible], qr[visible], rng)
-            log = f"{name}_{rate}_{length:g}.csv"
+            log = f"{name}_{rate}_{label}.csv"
             write_log(out / log, name, tr[visible], pn, qn)
-            entries.append((name, kind, rate, f"{length:g}", log, truth, len(tr),
+            entries.append((name, kind, rate, label, log, truth, len(tr),
                             int((~visible).sum()), tr[-1]))
     return entries
 
@@ -358,8 +390,9 @@ def load_manifest(path):
     return rows
 
 
-def convert_all(out, seed=0, manifest=HERE / "sequences.csv", gaps=GAP_LENGTHS):
-    """Converts every manifest row into `out` and writes out/index.csv; returns the index rows."""
+def convert_all(out, seed=0, manifest=HERE / "sequences.csv", gaps=GAP_LENGTHS, missed=None):
+    """Converts every manifest row into `out` and writes out/index.csv; returns the index rows.
+    The pedestrians keep their annotated occlusions whatever the gaps or `missed`."""
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     base = Path(manifest).resolve().parent
@@ -383,7 +416,7 @@ def convert_all(out, seed=0, manifest=HERE / "sequences.csv", gaps=GAP_LENGTHS):
             t, p, q = read_kitti(path, base / aux if aux else None, label, aux)
         else:
             raise ConvertError(f"{manifest}: sequence {name}: field format: unknown {fmt!r}")
-        entries += convert_trajectory(name, kind, t, p, q, rates, out, seed, gaps)
+        entries += convert_trajectory(name, kind, t, p, q, rates, out, seed, gaps, missed)
     with open(out / "index.csv", "w", encoding="utf-8", newline="\n") as f:
         f.write("name,kind,rate,gap,log,truth,frames,hidden_frames,duration\n")
         for e in entries:
@@ -396,12 +429,19 @@ def main(argv=None):
     parser.add_argument("--out", required=True, help="directory for the logs, truths and index.csv")
     parser.add_argument("--seed", type=int, default=0, help="base seed of the noise (default 0)")
     parser.add_argument("--manifest", default=HERE / "sequences.csv", type=Path)
-    parser.add_argument("--gaps", default="0.3,0.6,1",
+    parser.add_argument("--gaps", default=None,
                         help="gap lengths in seconds, a log per length (default 0.3,0.6,1); gaps "
                              "over 1 s are 1.5 s apart")
+    parser.add_argument("--missed", default=None,
+                        help="instead of gaps, each frame after the first missed with this "
+                             "probability (a detector's dropouts), a log per recording and rate")
     args = parser.parse_args(argv)
+    if args.gaps is not None and args.missed is not None:
+        parser.error("--gaps and --missed are two ways to hide frames: give one")
     try:
-        entries = convert_all(args.out, args.seed, args.manifest, parse_gaps(args.gaps))
+        missed = None if args.missed is None else parse_missed(args.missed)
+        gaps = GAP_LENGTHS if args.gaps is None else parse_gaps(args.gaps)
+        entries = convert_all(args.out, args.seed, args.manifest, gaps, missed)
     except (ConvertError, OSError) as error:
         print(f"convert.py: {error}", file=sys.stderr)
         return 1

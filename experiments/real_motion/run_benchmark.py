@@ -19,7 +19,7 @@ Same inputs and seeds give the same bytes. Metrics: docs/metrics.md; the protoco
 experiments/real_motion/README.md.
 
 Usage: run_benchmark.py OUT_DIR [--subset] [--seeds N] [--estimators A,B] [--jobs N]
-                        [--config FILE.yaml] [--gaps 0.3,0.6,1]
+                        [--config FILE.yaml] [--gaps 0.3,0.6,1 | --missed P]
 """
 
 import argparse
@@ -33,6 +33,8 @@ import shutil
 import subprocess
 import sys
 from collections import defaultdict
+
+import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.abspath(os.path.join(HERE, "..", ".."))
@@ -78,11 +80,19 @@ def parse_arguments():
     parser.add_argument("--gaps", default=None,
                         help="gap lengths in seconds, a log per recording, rate and length "
                              "(default 0.3,0.6,1); gaps over 1 s are 1.5 s apart")
+    parser.add_argument("--missed", default=None,
+                        help="instead of gaps, each frame after the first missed with this "
+                             "probability (a detector's dropouts), a log per recording and rate; "
+                             "the pedestrians keep their annotated occlusions")
     args = parser.parse_args()
-    if args.subset and args.gaps is not None:
-        parser.error("--subset runs the 0.6 s gaps only: leave out --gaps")
+    if args.subset and (args.gaps is not None or args.missed is not None):
+        parser.error("--subset runs the 0.6 s gaps only: leave out --gaps and --missed")
+    if args.gaps is not None and args.missed is not None:
+        parser.error("--gaps and --missed are two ways to hide frames: give one")
     try:
         args.gaps = convert.parse_gaps(args.gaps) if args.gaps else convert.GAP_LENGTHS
+        if args.missed is not None:
+            args.missed = convert.parse_missed(args.missed)
     except convert.ConvertError as error:
         parser.error(str(error))
     if args.seeds is None:
@@ -105,12 +115,13 @@ def run(command, **kwargs):
     return done.stdout
 
 
-def recorded_logs(out, subset, gaps):
-    """The recordings converted by convert.py with gaps of the given lengths: rows of its
-    index.csv."""
+def recorded_logs(out, subset, gaps, missed=None):
+    """The recordings converted by convert.py with gaps of the given lengths (or frames missed
+    with probability `missed`): rows of its index.csv."""
     logs_dir = os.path.join(out, "logs")
-    run([sys.executable, os.path.join(HERE, "convert.py"), "--out", logs_dir, "--gaps",
-         ",".join(f"{g:g}" for g in gaps)])
+    hiding = (["--gaps", ",".join(f"{g:g}" for g in gaps)] if missed is None else
+              ["--missed", f"{missed:g}"])
+    run([sys.executable, os.path.join(HERE, "convert.py"), "--out", logs_dir, *hiding])
     with open(os.path.join(logs_dir, "index.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     for row in rows:
@@ -144,8 +155,23 @@ def find_clip(name):
     return None
 
 
-def video_logs(out, opf, subset, gaps):
-    """OpenCV's three sample clips through `opf detect`, with gaps of the recordings' protocol."""
+def drop_detections(truth, log, probability, seed):
+    """Copies a clip's detections, each row after the first emptied with the given probability
+    (seeded): the frame stays, the object unobserved there, as `opf dropout` leaves it."""
+    rng = np.random.default_rng(seed)
+    with open(truth, newline="") as f:
+        rows = list(csv.reader(f))
+    missed = convert.missed_mask(len(rows) - 1, probability, rng)
+    with open(log, "w", newline="") as f:
+        writer = csv.writer(f, lineterminator="\n")
+        writer.writerow(rows[0])
+        for row, gone in zip(rows[1:], missed):
+            writer.writerow(row[:2] + [""] * 7 + row[9:] if gone else row)
+
+
+def video_logs(out, opf, subset, gaps, missed=None):
+    """OpenCV's three sample clips through `opf detect`, with gaps of the recordings' protocol
+    (or frames missed with probability `missed`)."""
     rows = []
     clips = CLIPS[:1] if subset else CLIPS
     for clip, file, extra in clips:
@@ -168,6 +194,13 @@ def video_logs(out, opf, subset, gaps):
              *extra])
         with open(truth, newline="") as f:
             first_t = float(next(csv.DictReader(f))["t"])
+        if missed is not None:
+            gap = convert.missed_label(missed)
+            log = os.path.join(video_dir, f"{clip}_{gap}.csv")
+            drop_detections(truth, log, missed, convert.seed_for(clip, gap))
+            rows.append({"name": clip, "kind": "video", "rate": "native", "gap": gap,
+                         "log": log, "truth": truth})
+            continue
         for length in ((0.6,) if subset else gaps):
             gap = f"{length:g}"
             log = os.path.join(video_dir, f"{clip}_{gap}.csv")
@@ -433,6 +466,15 @@ def gaps_text(s):
     return "" if math.isnan(low) else f"; {low:.2f}-{high:.2f} over its {count} gaps"
 
 
+def hiding_text(gap):
+    """The gap column as the table prints it: '0.6 s', 'annotated', '30% missed'."""
+    if gap == "occluded":
+        return "annotated"
+    if gap.startswith("missed"):
+        return f"{100 * float(gap[len('missed'):]):g}% missed"
+    return f"{gap} s"
+
+
 def interval_text(low, high):
     """An interval as the tables print it: 0.791-0.893, or a dash where there is none."""
     return "–" if math.isnan(low) else f"{low:.3f}-{high:.3f}"
@@ -479,7 +521,7 @@ def markdown(summary, rows, args):
         cells = [f"{runs[e]['hidden_translation']:.4f} ({runs[e]['nees_translation']:.2g})"
                  if e in runs else "–" for e in entries]
         sequence, kind, rate, gap = log
-        gap = "annotated" if gap == "occluded" else f"{gap} s"
+        gap = hiding_text(gap)
         lines.append(f"| {sequence} | {kind} | {rate} | {gap} | " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
 
@@ -538,21 +580,21 @@ def figures(out, bins):
     return written
 
 
-def prepare(args, gaps=convert.GAP_LENGTHS):
-    """The output directory, its runs/ folder and the logs with gaps of the given lengths (s; the
-    clips too, unless --no-video)."""
+def prepare(args, gaps=convert.GAP_LENGTHS, missed=None):
+    """The output directory, its runs/ folder and the logs with gaps of the given lengths (s) or
+    frames missed with probability `missed` (the clips too, unless --no-video)."""
     out = os.path.abspath(args.out)
     runs_dir = os.path.join(out, "runs")
     os.makedirs(runs_dir, exist_ok=True)
-    logs = recorded_logs(out, args.subset, gaps)
+    logs = recorded_logs(out, args.subset, gaps, missed)
     if not args.no_video:
-        logs += video_logs(out, args.opf, args.subset, gaps)
+        logs += video_logs(out, args.opf, args.subset, gaps, missed)
     return out, runs_dir, logs
 
 
 def main():
     args = parse_arguments()
-    out, runs_dir, logs = prepare(args, args.gaps)
+    out, runs_dir, logs = prepare(args, args.gaps, args.missed)
     presets = PRESETS[:1] if args.subset else PRESETS
     if not any(e in PAPER_ESTIMATORS for e in args.estimators.split(",")):
         presets = PRESETS[:1]

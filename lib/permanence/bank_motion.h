@@ -23,6 +23,7 @@ class BankMotion final : public HiddenMotion {
                   PoseParticleFilter& filter) override;
   EstimateMode mode() const override { return EstimateMode::kDynamics; }
   std::string label() const override;
+  bool predicts_the_measurement() const override { return true; }
 
  private:
   // The banks as the last measurement left them: nothing updates them while the object is hidden.

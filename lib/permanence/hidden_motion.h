@@ -41,6 +41,11 @@ class HiddenMotion {
   /// Where the object's carrier (label()) is from the object, as the carry put it this step (the
   /// carrier's position less the virtual measurement's). None when nothing carries it.
   virtual std::optional<Eigen::Vector3d> carrier_offset() const { return std::nullopt; }
+  /// Whether the source's motion is the prior of the measurement that ends the gap: a prediction
+  /// (the banks' mixture) carries the particles to the measurement's time as it did to each hidden
+  /// frame's; a virtual measurement is evidence, which the measurement replaces (the filter's own
+  /// random walk then steps to it, as in the paper).
+  virtual bool predicts_the_measurement() const { return false; }
 };
 
 /// A source that feeds the filter a virtual measurement each hidden frame (paper Eq. 12-14): the

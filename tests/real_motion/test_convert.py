@@ -83,6 +83,29 @@ def test_longer_gaps_leave_one_and_a_half_seconds_seen_between_them():
             convert.parse_gaps(bad)
 
 
+def test_missed_frames_are_seeded_independent_draws_after_the_first(tmp_path):
+    t = np.arange(0, 3001) / 30.0
+    p = np.column_stack([t, np.zeros_like(t), np.ones_like(t)])
+    q = np.tile([0.0, 0.0, 0.0, 1.0], (len(t), 1))
+    entries = convert.convert_trajectory("seq", "handheld", t, p, q, ["native"], tmp_path, 7,
+                                         missed=0.3)
+    assert [e[3] for e in entries] == ["missed0.3"] and entries[0][4] == "seq_native_missed0.3.csv"
+    lt, _, _ = read_log(tmp_path / "seq_native_missed0.3.csv")
+    seen = np.round(lt * 30).astype(int)
+    assert seen[0] == 0 and entries[0][7] == len(t) - len(seen)
+    assert 0.27 < entries[0][7] / (len(t) - 1) < 0.33  # binomial sd 0.008
+    # Runs of missed frames as independent draws make them: two in a row about 0.3 of the time.
+    missed = np.setdiff1d(np.arange(len(t)), seen)
+    assert 0.25 < np.isin(missed + 1, missed).mean() < 0.35
+    first = (tmp_path / "seq_native_missed0.3.csv").read_bytes()
+    convert.convert_trajectory("seq", "handheld", t, p, q, ["native"], tmp_path, 7, missed=0.3)
+    assert (tmp_path / "seq_native_missed0.3.csv").read_bytes() == first
+    assert convert.parse_missed("0.3") == 0.3
+    for bad in ("0", "1", "-0.1", "x", "nan"):
+        with pytest.raises(convert.ConvertError, match="--missed"):
+            convert.parse_missed(bad)
+
+
 def test_noise_on_visible_rows_only_truth_clean_and_seeded(tmp_path):
     t = np.arange(0, 181) / 30.0
     p = np.column_stack([t, np.zeros_like(t), np.ones_like(t)])
