@@ -94,5 +94,33 @@ void BM_RotationBankUpdate(benchmark::State& state) {
 }
 BENCHMARK(BM_RotationBankUpdate)->ArgName("damped")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
+// Both banks of one object per frame, as above, with a camera's clock: each frame's interval
+// 1/30 s +- up to 1 ms (uniform, seeded), so no two steps share a dt.
+void BM_BanksUpdateJitteredClock(benchmark::State& state) {
+  const auto positions = throw_positions(256);
+  Random noise(11);
+  std::vector<double> times(positions.size());
+  for (std::size_t k = 1; k < times.size(); ++k)
+    times[k] = times[k - 1] + kDt + 0.002 * (noise.uniform() - 0.5);
+  std::vector<Eigen::Quaterniond> orientations;
+  for (const double t : times) orientations.push_back(so3::exp(t * Eigen::Vector3d(0.6, 0.0, 0.8)));
+  const double period = times.back() + kDt;  // the clock runs on across the laps
+  MotionModelBank translation;
+  RotationModelBank rotation;
+  std::size_t k = 0;
+  double lap = 0.0;
+  for (auto _ : state) {
+    const double t = lap + times[k];
+    translation.update(t, positions[k]);
+    rotation.update(t, orientations[k]);
+    if (++k == positions.size()) {
+      k = 0;
+      lap += period;
+    }
+    benchmark::ClobberMemory();
+  }
+}
+BENCHMARK(BM_BanksUpdateJitteredClock)->Unit(benchmark::kMicrosecond);
+
 }  // namespace
 }  // namespace opf

@@ -8,7 +8,7 @@
 #include "opf/core/estimator.h"
 #include "opf/core/linear_kalman.h"
 #include "opf/estimators/imm_options.h"
-#include "opf/permanence/tangent_rotation_filter.h"
+#include "opf/motion/tangent_rotation_filter.h"
 
 #include <array>
 

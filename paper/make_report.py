@@ -610,6 +610,8 @@ BENCHMARKS = [  # (label, benchmark or a tuple of them summed, unit, target)
     ("rotation bank's update per object", "BM_RotationBankUpdate/damped:1", "us", None),
     ("both banks' update per object", ("BM_BankUpdate", "BM_RotationBankUpdate/damped:1"), "us",
      "bank_update_us"),
+    ("both banks, a camera's clock (1/30 s $\\pm$ 1 ms)", "BM_BanksUpdateJitteredClock", "us",
+     "bank_update_us"),
     ("64 objects, 1 thread", "BM_EnsembleFrame/objects:64/threads:1/real_time", "ms", None),
     ("64 objects, 2 threads", "BM_EnsembleFrame/objects:64/threads:2/real_time", "ms",
      "frame_64_objects_2_threads_ms"),

@@ -82,16 +82,8 @@ void MixtureParticleMotion::predict(const MotionModelBank& translation,
                                     const RotationModelBank& rotation, double horizon,
                                     Predictions& out) {
   out.horizon = horizon;
-  for (int axis = 0; axis < 3; ++axis) {
-    std::vector<MemberPrediction>& members =
-        out.translation.axes[static_cast<std::size_t>(axis)].members;
-    members.resize(translation.members(axis).size());
-    for (std::size_t j = 0; j < members.size(); ++j)
-      members[j] = translation.member_prediction(axis, j, horizon);
-  }
-  out.rotation.resize(rotation.members().size());
-  for (std::size_t j = 0; j < out.rotation.size(); ++j)
-    out.rotation[j] = rotation.member_prediction(j, horizon);
+  translation.predict(horizon, out.translation);
+  rotation.predict(horizon, out.rotation);
 }
 
 double MixtureParticleMotion::mixture_trace(const Predictions& p) {

@@ -1,8 +1,8 @@
 #include "opf/permanence/motion_model_bank.h"
 
 #include "opf/core/estimator.h"
+#include "opf/motion/ballistic_motion.h"
 #include "opf/particles/student_t_densities.h"
-#include "opf/permanence/ballistic_motion.h"
 #include "opf/permanence/weighted_choice.h"
 
 #include <algorithm>
@@ -72,6 +72,15 @@ MotionModelBank::MotionModelBank(const MotionModelBankOptions& options) : option
 
     weights_.emplace_back(equal_model_priors(model_of_member));
     filters_[axis].resize(models.size());
+    for (const AxisMotionModel& m : models) {
+      const auto same = [&m](const AxisMotionModel& o) {
+        return o.model == m.model && o.intensity == m.intensity &&
+               o.time_constant == m.time_constant && o.acceleration == m.acceleration;
+      };
+      const auto found = std::find_if(shapes_.begin(), shapes_.end(), same);
+      shape_of_[axis].push_back(static_cast<std::size_t>(found - shapes_.begin()));
+      if (found == shapes_.end()) shapes_.push_back(m);
+    }
   }
 }
 
@@ -111,6 +120,13 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
         f.bias_variance = stretch_prior.variance;
         f.bias_covariance.setZero();
       }
+  if (std::abs(dt - steps_dt_) > kSameInterval) {
+    steps_over(shapes_, dt, steps_);
+    steps_dt_ = dt;
+    for (int axis = 0; axis < 3; ++axis)
+      for (std::size_t j = 0; j < filters_[axis].size(); ++j)
+        filters_[axis][j].step = steps_[shape_of_[axis][j]];
+  }
   for (int axis = 0; axis < 3; ++axis) {
     const std::size_t members = filters_[axis].size();
     log_likelihoods_.resize(members);
@@ -118,10 +134,6 @@ void MotionModelBank::update(double t, const Eigen::Vector3d& position, double e
     squared_distances_.resize(members);
     for (std::size_t j = 0; j < members; ++j) {
       Filter& f = filters_[axis][j];
-      if (std::abs(dt - f.step_dt) > kSameInterval) {
-        f.step = models_[axis][j].step(dt);
-        f.step_dt = dt;
-      }
       kalman::predict(f.mean, f.covariance, f.step.transition, f.step.process_noise);
       f.mean += f.step.offset;
       if (continues_stretch) f.bias_covariance = f.step.transition * f.bias_covariance;
@@ -229,14 +241,21 @@ MemberPrediction MotionModelBank::member_prediction(int axis, std::size_t index,
   if (!initialised_) throw std::logic_error("MotionModelBank: predict() before any update()");
   if (!(horizon >= 0.0) || !std::isfinite(horizon))
     throw std::invalid_argument("MotionModelBank: the horizon must be a finite number >= 0 (s)");
-  return predicted_member(axis, index, horizon);
+  if (std::abs(horizon - steps_dt_) <= kSameInterval)
+    return predicted_member(axis, index, steps_[shape_of_[axis][index]]);
+  return predicted_member(axis, index, models_[axis][index].step(horizon));
+}
+
+const std::vector<AxisMotionStep>& MotionModelBank::steps_at(
+    double dt, std::vector<AxisMotionStep>& scratch) const {
+  if (std::abs(dt - steps_dt_) <= kSameInterval) return steps_;
+  steps_over(shapes_, dt, scratch);
+  return scratch;
 }
 
 MemberPrediction MotionModelBank::predicted_member(int axis, std::size_t index,
-                                                   double horizon) const {
+                                                   const AxisMotionStep& step) const {
   const Filter& f = filters_[axis][index];
-  const AxisMotionStep step =
-      std::abs(horizon - f.step_dt) <= kSameInterval ? f.step : models_[axis][index].step(horizon);
   const double mean = (step.transition.row(0) * f.mean)(0, 0) + step.offset[0];
   const double variance =
       (step.transition.row(0) * f.covariance * step.transition.row(0).transpose())(0, 0) +
@@ -246,17 +265,28 @@ MemberPrediction MotionModelBank::predicted_member(int axis, std::size_t index,
 
 BankPrediction MotionModelBank::predict(double horizon) const {
   BankPrediction out;
+  predict(horizon, out);
+  return out;
+}
+
+void MotionModelBank::predict(double horizon, BankPrediction& out) const {
+  if (!initialised_) throw std::logic_error("MotionModelBank: predict() before any update()");
+  if (!(horizon >= 0.0) || !std::isfinite(horizon))
+    throw std::invalid_argument("MotionModelBank: the horizon must be a finite number >= 0 (s)");
+  std::vector<AxisMotionStep> scratch;
+  const std::vector<AxisMotionStep>& steps = steps_at(horizon, scratch);
   for (int axis = 0; axis < 3; ++axis) {
     std::vector<MemberPrediction>& members = out.axes[static_cast<std::size_t>(axis)].members;
-    members.reserve(models_[axis].size());
-    for (std::size_t j = 0; j < models_[axis].size(); ++j)
-      members.push_back(member_prediction(axis, j, horizon));
+    members.resize(models_[axis].size());
+    for (std::size_t j = 0; j < members.size(); ++j)
+      members[j] = predicted_member(axis, j, steps[shape_of_[axis][j]]);
   }
-  return out;
 }
 
 Eigen::Vector3d MotionModelBank::variance_growth(double horizon) const {
   if (!initialised_) throw std::logic_error("MotionModelBank: predict() before any update()");
+  std::vector<AxisMotionStep> scratch;
+  const std::vector<AxisMotionStep>& steps = steps_at(horizon, scratch);
   Eigen::Vector3d growth;
   for (int axis = 0; axis < 3; ++axis) {
     // Moments about the first member's position: far from the origin, squares of positions
@@ -266,7 +296,7 @@ Eigen::Vector3d MotionModelBank::variance_growth(double horizon) const {
     double mean_now = 0.0, square_now = 0.0, mean_ahead = 0.0, square_ahead = 0.0;
     for (std::size_t j = 0; j < filters_[axis].size(); ++j) {
       const Filter& f = filters_[axis][j];
-      const MemberPrediction member = predicted_member(axis, j, horizon);
+      const MemberPrediction member = predicted_member(axis, j, steps[shape_of_[axis][j]]);
       const double now = f.mean[0] - reference;
       const double ahead = member.mean - reference;
       mean_now += w[j] * now;

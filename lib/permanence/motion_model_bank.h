@@ -38,7 +38,7 @@
 // forgets it at a clean view or a gap (end_partial_views), so that a partly covered object's
 // centroid lagging frame after frame is read as the bias it is, not as a change of velocity.
 
-#include "opf/permanence/axis_motion_model.h"
+#include "opf/motion/axis_motion_model.h"
 #include "opf/permanence/model_weights.h"
 #include "opf/permanence/motion_model_bank_options.h"
 #include "opf/permanence/predictive_mixture.h"
@@ -106,6 +106,8 @@ class MotionModelBank {
   /// every member's weight, mean and variance (of the position itself; its measurement adds
   /// options.observation_noise^2).
   BankPrediction predict(double horizon) const;
+  /// The same into `out`, its vectors reused.
+  void predict(double horizon, BankPrediction& out) const;
   /// How much the predictive mixture's variance per world axis grows from the last update to
   /// `horizon` s after it (m^2): predict(horizon).variance() less predict(0).variance(), without
   /// building the mixtures.
@@ -142,8 +144,8 @@ class MotionModelBank {
       bias_covariance.setZero();
     }
     int surprises = 0;  ///< consecutive measurements outside the member's gate
-    /// The model's step over step_dt, reused while frames keep one rate.
-    double step_dt = -1.0;
+    /// The model's step over the last update's interval (a copy of its shape's: the update
+    /// reads it beside the member's state).
     AxisMotionStep step;
   };
   /// Starts a member from its first position (dt = 0: velocity 0 with initial_velocity_std), or
@@ -156,11 +158,21 @@ class MotionModelBank {
   kalman::Correction<3, 1> update_member(Filter& f, double z, double extra_noise, double r) const;
   /// update_member's (p, v) update when the detection states no extra noise.
   kalman::Correction<3, 1> update_position(Filter& f, double z, double r) const;
-  /// member_prediction without its checks.
-  MemberPrediction predicted_member(int axis, std::size_t index, double horizon) const;
+  /// member_prediction without its checks, by `step`, the member's over the horizon.
+  MemberPrediction predicted_member(int axis, std::size_t index, const AxisMotionStep& step) const;
+  /// Every member's step over dt, by shape (the cached ones at the last update's interval).
+  const std::vector<AxisMotionStep>& steps_at(double dt,
+                                              std::vector<AxisMotionStep>& scratch) const;
 
   MotionModelBankOptions options_;
   std::array<std::vector<AxisMotionModel>, 3> models_;
+  /// The distinct models over the three axes (the axes across gravity hold the same members),
+  /// each member's index among them, and their steps over the last update's interval, computed
+  /// together (steps_over) and reused while frames keep one rate.
+  std::vector<AxisMotionModel> shapes_;
+  std::array<std::vector<std::size_t>, 3> shape_of_;
+  double steps_dt_ = -1.0;
+  std::vector<AxisMotionStep> steps_;
   std::array<std::vector<Filter>, 3> filters_;
   std::vector<ModelWeights> weights_;  ///< one per axis
   /// Scratch per member on an axis: S, d^2, then their log-densities.

@@ -40,11 +40,18 @@ std::vector<double> priors_of(const std::vector<TangentRotationFilter>& members)
   return equal_model_priors(model_of_member);
 }
 
+std::vector<AxisMotionModel> axis_models_of(const std::vector<TangentRotationFilter>& members) {
+  std::vector<AxisMotionModel> out;
+  for (const TangentRotationFilter& f : members) out.push_back(f.axis_model());
+  return out;
+}
+
 }  // namespace
 
 RotationModelBank::RotationModelBank(const RotationModelBankOptions& options)
     : options_(options),
       filters_(members_of(options)),
+      axis_models_(axis_models_of(filters_)),
       surprises_(filters_.size(), 0),
       weights_(priors_of(filters_)),
       determinants_(filters_.size(), 0.0),
@@ -70,9 +77,13 @@ void RotationModelBank::update(double t, const Eigen::Quaterniond& orientation) 
     throw std::invalid_argument("RotationModelBank: update() at t = " + std::to_string(t) +
                                 " s, before the last one at " + std::to_string(t_) + " s");
   t_ = t;
+  if (dt != steps_dt_) {
+    steps_over(axis_models_, dt, steps_);
+    steps_dt_ = dt;
+  }
   for (std::size_t j = 0; j < filters_.size(); ++j) {
     TangentRotationFilter& f = filters_[j];
-    f.predict(dt);
+    f.predict(dt, steps_[j]);
     const auto correction = f.update(orientation, sigma * sigma, noise_model_);
     determinants_[j] = correction.determinant;
     squared_distances_[j] = correction.squared_distance;
@@ -107,9 +118,23 @@ RotationMemberPrediction RotationModelBank::member_prediction(std::size_t index,
 
 std::vector<RotationMemberPrediction> RotationModelBank::predict(double horizon) const {
   std::vector<RotationMemberPrediction> out;
-  out.reserve(filters_.size());
-  for (std::size_t j = 0; j < filters_.size(); ++j) out.push_back(member_prediction(j, horizon));
+  predict(horizon, out);
   return out;
+}
+
+void RotationModelBank::predict(double horizon, std::vector<RotationMemberPrediction>& out) const {
+  if (!initialised_) throw std::logic_error("RotationModelBank: predict() before any update()");
+  if (!(horizon >= 0.0) || !std::isfinite(horizon))
+    throw std::invalid_argument("RotationModelBank: the horizon must be a finite number >= 0 (s)");
+  std::vector<AxisMotionStep> scratch;
+  if (horizon != steps_dt_) steps_over(axis_models_, horizon, scratch);
+  const std::vector<AxisMotionStep>& steps = horizon == steps_dt_ ? steps_ : scratch;
+  out.resize(filters_.size());
+  for (std::size_t j = 0; j < filters_.size(); ++j) {
+    const TangentRotationFilter::Prediction p = filters_[j].predicted(horizon, steps[j]);
+    out[j] = {rotation_model_name(filters_[j].model()), weights_.weights()[j], p.orientation,
+              p.covariance};
+  }
 }
 
 double RotationModelBank::variance_growth(double horizon) const {

@@ -12,10 +12,10 @@
 // dies away within a gap (0.3 s), a tossed object's spin glides (3 s), as the translation bank's
 // damped model. Each model has the prior 1 / (number of models), shared equally by its members.
 
+#include "opf/motion/tangent_rotation_filter.h"
 #include "opf/permanence/model_weights.h"
 #include "opf/permanence/motion_model_bank_options.h"
 #include "opf/permanence/rotation_model_bank_options.h"
-#include "opf/permanence/tangent_rotation_filter.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -55,6 +55,8 @@ class RotationModelBank {
   Eigen::Vector3d angular_velocity() const;
   /// Every member's prediction `horizon` s (>= 0) after the last update.
   std::vector<RotationMemberPrediction> predict(double horizon) const;
+  /// The same into `out`, resized.
+  void predict(double horizon, std::vector<RotationMemberPrediction>& out) const;
   /// How much the members' orientation variance grows over `horizon` s, per tangent axis
   /// (rad^2): sum_k w_k [tr C_k(horizon) - tr C_k(0)] / 3.
   double variance_growth(double horizon) const;
@@ -71,6 +73,11 @@ class RotationModelBank {
  private:
   RotationModelBankOptions options_;
   std::vector<TangentRotationFilter> filters_;
+  /// Each member's per-axis model, and their steps over the last update's interval, computed
+  /// together (steps_over) and reused while frames keep one rate.
+  std::vector<AxisMotionModel> axis_models_;
+  double steps_dt_ = -1.0;
+  std::vector<AxisMotionStep> steps_;
   std::vector<int> surprises_;  ///< per member: consecutive measurements outside its gate
   Eigen::Quaterniond last_orientation_ = Eigen::Quaterniond::Identity();
   ModelWeights weights_;

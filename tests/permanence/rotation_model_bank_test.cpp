@@ -114,6 +114,27 @@ TEST(RotationModelBank, PredictListsEveryMember) {
   EXPECT_EQ(bank.members()[chosen].model(), RotationModel::kConstantAngularVelocity);
 }
 
+// On a camera's clock (every interval 1/30 s +- 1 ms) each member steps by its own model: the
+// bank computes its members' steps together, and each member's prediction over the last interval
+// (that step) is its own model's, to within what 2 ns more of horizon moves it.
+TEST(RotationModelBank, OnAJitteredClockEveryMemberStepsByItsOwnModel) {
+  Random random(6);
+  RotationModelBank bank;
+  double t = 0.0, dt = 0.0;
+  for (int k = 0; k < 60; ++k) {
+    const double next = t + 1.0 / 30.0 + 0.002 * (random.uniform() - 0.5);
+    dt = next - t;  // the interval the bank takes
+    t = next;
+    bank.update(t, so3::exp(2.0 * t * kAxis));
+  }
+  const auto shared = bank.predict(dt);
+  for (std::size_t j = 0; j < shared.size(); ++j) {
+    const RotationMemberPrediction own = bank.member_prediction(j, dt + 2e-9);
+    EXPECT_LT(so3::angle_between(shared[j].orientation, own.orientation), 1e-8) << j;
+    EXPECT_TRUE(shared[j].covariance.isApprox(own.covariance, 1e-6)) << j;
+  }
+}
+
 // A 10 s gap and a flipped (pi rad) outlier leave every weight and prediction finite.
 TEST(RotationModelBank, GapsAndOutliersLeaveEverythingFinite) {
   RotationModelBank bank = measured(1.0, 3);

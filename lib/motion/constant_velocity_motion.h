@@ -5,7 +5,7 @@
 //
 //   F = [1 dt; 0 1],   Q = q^2 [dt^3/3  dt^2/2; dt^2/2  dt],   b = 0.
 
-#include "opf/permanence/axis_motion_model.h"
+#include "opf/motion/axis_motion_model.h"
 
 namespace opf {
 

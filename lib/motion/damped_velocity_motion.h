@@ -14,12 +14,25 @@
 // Q -> 0, the position random-walking with velocity density q T). The position variance is
 // summed as its series in x for small x, where the closed form cancels.
 
-#include "opf/permanence/axis_motion_model.h"
+#include "opf/motion/axis_motion_model.h"
 
 namespace opf {
 
-/// F(dt), Q(dt) (b = 0) of damped velocity with time constant T (s) and acceleration density q
-/// (m/s^2/sqrt(Hz)).
+/// What the step over dt takes from T alone (its exponentials), shared by the members of a bank
+/// that differ in q only.
+struct DampedVelocityDecay {
+  double time_constant = 1.0;     ///< T (s)
+  double one_minus_e = 0.0;       ///< 1 - e, e = exp(-x), x = dt / T
+  double one_minus_e2 = 0.0;      ///< 1 - e^2
+  double e = 1.0;                 ///< e
+  double position_bracket = 0.0;  ///< x - 2 (1 - e) + (1 - e^2) / 2
+};
+DampedVelocityDecay damped_velocity_decay(double time_constant, double dt);
+
+/// F(dt), Q(dt) (b = 0) of damped velocity with acceleration density q (m/s^2/sqrt(Hz)), from
+/// its decay over dt.
+AxisMotionStep damped_velocity_motion(double q, const DampedVelocityDecay& decay);
+/// The same with time constant T (s).
 AxisMotionStep damped_velocity_motion(double q, double time_constant, double dt);
 
 }  // namespace opf

@@ -20,8 +20,8 @@
 // that model's (value, rate) F and Q, the value block turned by the step's own rotation.
 
 #include "opf/core/linear_kalman.h"
-#include "opf/permanence/axis_motion_model.h"
-#include "opf/permanence/rotation_model.h"
+#include "opf/motion/axis_motion_model.h"
+#include "opf/motion/rotation_model.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -48,6 +48,9 @@ class TangentRotationFilter {
                   const Eigen::Vector3d& rate = Eigen::Vector3d::Zero());
   /// Steps the state over dt >= 0 (s).
   void predict(double dt);
+  /// The same by `step`, axis_model()'s step over dt (steps_over: a bank computes its members'
+  /// steps together).
+  void predict(double dt, const AxisMotionStep& step);
   /// Updates with a measured orientation of tangent variance `variance` (rad^2 per axis), its
   /// noise Gaussian or, given `heavy_tails`, Student-t of that scale
   /// (kalman::update_covariance_student_t); returns the update's correction, with the
@@ -64,11 +67,16 @@ class TangentRotationFilter {
     Eigen::Matrix3d covariance;
   };
   Prediction predicted(double horizon) const;
+  /// The same by `step`, axis_model()'s step over the horizon.
+  Prediction predicted(double horizon, const AxisMotionStep& step) const;
   /// How much the orientation's tangent covariance grows in trace over `horizon` s (rad^2):
   /// predicted(horizon).covariance.trace() less the present one's, in closed form.
   double orientation_variance_growth(double horizon) const;
 
   RotationModel model() const { return model_; }
+  /// The model each tangent axis steps by: constant position, constant velocity or damped
+  /// velocity, at this filter's q and T.
+  AxisMotionModel axis_model() const;
   double intensity() const { return intensity_; }
   double time_constant() const { return time_constant_; }
   const Eigen::Quaterniond& orientation() const { return orientation_; }
@@ -77,9 +85,6 @@ class TangentRotationFilter {
   const kalman::Matrix<6>& covariance() const { return covariance_; }
 
  private:
-  /// One tangent axis's (value, rate) step over dt: the model's F and Q.
-  AxisMotionStep axis_step(double dt) const;
-
   bool has_rate() const { return model_ != RotationModel::kConstantOrientation; }
 
   RotationModel model_;

@@ -1,6 +1,6 @@
-#include "opf/permanence/ballistic_motion.h"
+#include "opf/motion/ballistic_motion.h"
 
-#include "opf/permanence/constant_velocity_motion.h"
+#include "opf/motion/constant_velocity_motion.h"
 
 namespace opf {
 

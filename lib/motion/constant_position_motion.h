@@ -5,7 +5,7 @@
 //
 //   F = [1 0; 0 0],   Q = [q^2 dt  0; 0  0],   b = 0.
 
-#include "opf/permanence/axis_motion_model.h"
+#include "opf/motion/axis_motion_model.h"
 
 namespace opf {
 

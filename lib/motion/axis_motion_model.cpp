@@ -1,9 +1,11 @@
-#include "opf/permanence/axis_motion_model.h"
+#include "opf/motion/axis_motion_model.h"
 
-#include "opf/permanence/ballistic_motion.h"
-#include "opf/permanence/constant_position_motion.h"
-#include "opf/permanence/constant_velocity_motion.h"
-#include "opf/permanence/damped_velocity_motion.h"
+#include "opf/motion/ballistic_motion.h"
+#include "opf/motion/constant_position_motion.h"
+#include "opf/motion/constant_velocity_motion.h"
+#include "opf/motion/damped_velocity_motion.h"
+
+#include <array>
 
 namespace opf {
 
@@ -40,6 +42,25 @@ AxisMotionStep AxisMotionModel::step(double dt) const {
       return ballistic_motion(intensity, acceleration, dt);
   }
   return {};
+}
+
+void steps_over(std::span<const AxisMotionModel> models, double dt,
+                std::vector<AxisMotionStep>& out) {
+  out.resize(models.size());
+  std::array<DampedVelocityDecay, 8> decays;  // one per time constant met, the first 8 kept
+  std::size_t met = 0;
+  for (std::size_t j = 0; j < models.size(); ++j) {
+    const AxisMotionModel& m = models[j];
+    std::size_t k = 0;
+    if (m.model == MotionModel::kDampedVelocity)
+      while (k < met && decays[k].time_constant != m.time_constant) ++k;
+    if (m.model != MotionModel::kDampedVelocity || k == decays.size()) {  // or past the kept
+      out[j] = m.step(dt);
+      continue;
+    }
+    if (k == met) decays[met++] = damped_velocity_decay(m.time_constant, dt);
+    out[j] = damped_velocity_motion(m.intensity, decays[k]);
+  }
 }
 
 }  // namespace opf

@@ -1,8 +1,8 @@
-#include "opf/permanence/tangent_rotation_filter.h"
+#include "opf/motion/tangent_rotation_filter.h"
 
 #include "opf/core/random.h"
 #include "opf/core/so3.h"
-#include "opf/permanence/damped_velocity_motion.h"
+#include "opf/motion/damped_velocity_motion.h"
 
 #include <gtest/gtest.h>
 
@@ -155,6 +155,26 @@ TEST(TangentRotationFilter, ARepeatedIntervalReusesItsStepAndANewOneDoesNot) {
   const Eigen::Quaterniond expected = kStart * so3::exp(rate * time_constant * (1.0 - decay));
   EXPECT_LT((stepped.angular_velocity() - decay * rate).norm(), 1e-14);
   EXPECT_LT(so3::angle_between(stepped.orientation(), expected), 1e-13);
+}
+
+// A step given by the caller (a bank computes its members' steps together) is axis_model()'s, so
+// the filter steps and predicts as by its own, to the bit.
+TEST(TangentRotationFilter, AStepGivenIsItsAxisModelsOwn) {
+  for (const RotationModel model :
+       {RotationModel::kConstantOrientation, RotationModel::kConstantAngularVelocity,
+        RotationModel::kDampedAngularVelocity}) {
+    TangentRotationFilter own(model, 1.0, 0.3), given(model, 1.0, 0.3);
+    for (TangentRotationFilter* f : {&own, &given}) f->initialise(kStart, 0.05, 1.0, kAxis);
+    for (const double dt : {0.1, 0.1, 0.0337}) {
+      own.predict(dt);
+      given.predict(dt, given.axis_model().step(dt));
+    }
+    EXPECT_EQ(own.covariance(), given.covariance());
+    EXPECT_EQ(own.orientation().coeffs(), given.orientation().coeffs());
+    const auto a = own.predicted(0.4), b = given.predicted(0.4, given.axis_model().step(0.4));
+    EXPECT_EQ(a.covariance, b.covariance);
+    EXPECT_EQ(a.orientation.coeffs(), b.orientation.coeffs());
+  }
 }
 
 // At rate zero every tangent axis steps by damped velocity's F and Q (damped_velocity_motion.h):

@@ -1,6 +1,6 @@
-#include "opf/permanence/damped_velocity_motion.h"
+#include "opf/motion/damped_velocity_motion.h"
 
-#include "opf/permanence/constant_velocity_motion.h"
+#include "opf/motion/constant_velocity_motion.h"
 
 #include <gtest/gtest.h>
 

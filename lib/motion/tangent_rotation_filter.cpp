@@ -1,9 +1,6 @@
-#include "opf/permanence/tangent_rotation_filter.h"
+#include "opf/motion/tangent_rotation_filter.h"
 
 #include "opf/core/so3.h"
-#include "opf/permanence/constant_position_motion.h"
-#include "opf/permanence/constant_velocity_motion.h"
-#include "opf/permanence/damped_velocity_motion.h"
 
 #include <Eigen/LU>
 
@@ -45,27 +42,29 @@ void TangentRotationFilter::initialise(const Eigen::Quaterniond& orientation,
   if (has_rate()) covariance_.bottomRightCorner<3, 3>().diagonal().setConstant(rate_std * rate_std);
 }
 
-AxisMotionStep TangentRotationFilter::axis_step(double dt) const {
+AxisMotionModel TangentRotationFilter::axis_model() const {
   switch (model_) {
     case RotationModel::kConstantOrientation:
-      return constant_position_motion(intensity_, dt);
+      return {MotionModel::kConstantPosition, intensity_, 1.0, 0.0};
     case RotationModel::kConstantAngularVelocity:
-      return constant_velocity_motion(intensity_, dt);
+      return {MotionModel::kConstantVelocity, intensity_, 1.0, 0.0};
     case RotationModel::kDampedAngularVelocity:
-      return damped_velocity_motion(intensity_, time_constant_, dt);
+      return {MotionModel::kDampedVelocity, intensity_, time_constant_, 0.0};
   }
   return {};
 }
 
 void TangentRotationFilter::predict(double dt) {
+  predict(dt, dt == step_dt_ ? step_ : axis_model().step(dt));
+}
+
+void TangentRotationFilter::predict(double dt, const AxisMotionStep& step) {
   // Per tangent axis (value, rate) steps by the axis model's F = [1 turn; 0 decay] and Q; the
   // rate's turn over the step carries the error through the step's own rotation, so over
   // (dtheta, dw) F = [spin  turn I; 0  decay I], spin = exp(-w turn). With P = [A B; B^T C],
   // F P F^T is formed by blocks (a 6 x 6 product costs three times as much).
-  if (dt != step_dt_) {
-    step_ = axis_step(dt);
-    step_dt_ = dt;
-  }
+  step_ = step;
+  step_dt_ = dt;
   const AxisMotionStep& axis = step_;
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   if (!has_rate()) {  // w pinned at 0: no turn, the value block random-walks
@@ -142,7 +141,7 @@ kalman::Correction<6, 3> TangentRotationFilter::update(
 double TangentRotationFilter::orientation_variance_growth(double horizon) const {
   // predict()'s value block is spin A spin^T + turn (B^T spin^T + spin B) + turn^2 C + Q: the
   // turn leaves A's trace as it is.
-  const AxisMotionStep axis = horizon == step_dt_ ? step_ : axis_step(horizon);
+  const AxisMotionStep axis = horizon == step_dt_ ? step_ : axis_model().step(horizon);
   const double turn = axis.transition(0, 1);
   const Eigen::Matrix3d spin = so3::exp(angular_velocity_ * turn).conjugate().toRotationMatrix();
   return 2.0 * turn * (spin * covariance_.topRightCorner<3, 3>()).trace() +
@@ -151,8 +150,13 @@ double TangentRotationFilter::orientation_variance_growth(double horizon) const 
 }
 
 TangentRotationFilter::Prediction TangentRotationFilter::predicted(double horizon) const {
+  return predicted(horizon, horizon == step_dt_ ? step_ : axis_model().step(horizon));
+}
+
+TangentRotationFilter::Prediction TangentRotationFilter::predicted(
+    double horizon, const AxisMotionStep& step) const {
   TangentRotationFilter ahead = *this;
-  ahead.predict(horizon);
+  ahead.predict(horizon, step);
   return {ahead.orientation_, ahead.covariance_.topLeftCorner<3, 3>()};
 }
 

@@ -1,14 +1,15 @@
-#include "opf/permanence/axis_motion_model.h"
+#include "opf/motion/axis_motion_model.h"
 
-#include "opf/permanence/ballistic_motion.h"
-#include "opf/permanence/constant_position_motion.h"
-#include "opf/permanence/constant_velocity_motion.h"
-#include "opf/permanence/damped_velocity_motion.h"
+#include "opf/motion/ballistic_motion.h"
+#include "opf/motion/constant_position_motion.h"
+#include "opf/motion/constant_velocity_motion.h"
+#include "opf/motion/damped_velocity_motion.h"
 
 #include <gtest/gtest.h>
 
 #include <set>
 #include <string>
+#include <vector>
 
 namespace opf {
 namespace {
@@ -30,6 +31,27 @@ TEST(AxisMotionModel, StepsAsItsModel) {
               damped_velocity_motion(0.2, 7.0, dt));
   expect_same(AxisMotionModel{MotionModel::kBallistic, 0.2, 7.0, 5.0}.step(dt),
               ballistic_motion(0.2, 5.0, dt));
+}
+
+// A list's steps are each model's own, to the bit: the damped members at one time constant share
+// their exponentials, also past the eight time constants kept (the rest step alone).
+TEST(AxisMotionModel, StepsOverAListAreEachModelsOwnStep) {
+  std::vector<AxisMotionModel> models = {{MotionModel::kConstantPosition, 0.01, 1.0, 0.0},
+                                         {MotionModel::kConstantVelocity, 0.3, 1.0, 0.0},
+                                         {MotionModel::kBallistic, 3.0, 1.0, -9.81}};
+  for (int k = 0; k < 10; ++k)
+    for (const double q : {0.03, 0.3, 3.0})
+      models.push_back({MotionModel::kDampedVelocity, q, 0.1 * (k + 1), 0.0});
+  models.push_back({MotionModel::kDampedVelocity, 7.0, 0.3, 0.0});  // a time constant met before
+  for (const double dt : {1.0 / 30.0, 0.0331, 1e-4, 2.5}) {
+    std::vector<AxisMotionStep> steps(3);  // resized
+    steps_over(models, dt, steps);
+    ASSERT_EQ(steps.size(), models.size());
+    for (std::size_t j = 0; j < models.size(); ++j) {
+      SCOPED_TRACE(j);
+      expect_same(steps[j], models[j].step(dt));
+    }
+  }
 }
 
 TEST(AxisMotionModel, NamesEveryModelApart) {

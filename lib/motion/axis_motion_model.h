@@ -1,7 +1,7 @@
 #pragma once
-// The common representation of the translation motion models that a motion-model bank holds
-// (motion_model_bank.h): one axis, the state x = (p, v) (position m, velocity m/s), and the
-// linear-Gaussian step over dt,
+// The common representation of the standard translation motion models, the ones the OPF's
+// motion-model bank holds (permanence/motion_model_bank.h): one axis, the state x = (p, v)
+// (position m, velocity m/s), and the linear-Gaussian step over dt,
 //
 //   x_k = F(dt) x_{k-1} + b(dt) + w,   w ~ N(0, Q(dt)),   z_k = H x_k + e,   H = [1 0],
 //   e ~ N(0, R).
@@ -13,7 +13,9 @@
 
 #include "opf/core/linear_kalman.h"
 
+#include <span>
 #include <string_view>
+#include <vector>
 
 namespace opf {
 
@@ -49,5 +51,11 @@ struct AxisMotionModel {
   /// F(dt), Q(dt), b(dt) of this model over dt >= 0 (s).
   AxisMotionStep step(double dt) const;
 };
+
+/// Each model's step over dt, in order (out is resized), as AxisMotionModel::step gives it, the
+/// damped models at one time constant sharing their exponentials: a bank's members differ in q
+/// and T, and with a camera's clock no two frames share a dt.
+void steps_over(std::span<const AxisMotionModel> models, double dt,
+                std::vector<AxisMotionStep>& out);
 
 }  // namespace opf

@@ -1,4 +1,4 @@
-#include "opf/permanence/constant_velocity_motion.h"
+#include "opf/motion/constant_velocity_motion.h"
 
 namespace opf {
 

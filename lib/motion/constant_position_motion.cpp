@@ -1,4 +1,4 @@
-#include "opf/permanence/constant_position_motion.h"
+#include "opf/motion/constant_position_motion.h"
 
 namespace opf {
 
