@@ -453,23 +453,30 @@ TEST(MotionModelBank, PredictListsEveryMembersPrediction) {
 // members' steps are computed once per model shared by the axes, and each member's prediction
 // over the last interval (those steps) is its model's own, to within what 2 ns more of horizon
 // moves it (under 1e-7 m at the fall's 19 m/s); another model's step would be off by far more
-// (gravity's g dt^2 / 2 is 5 mm, a tenfold q a hundredfold variance).
+// (gravity's g dt^2 / 2 is 5 mm, a tenfold q a hundredfold variance). With `up` along z the x and
+// y axes share every model; tilted, each axis has its own ballistic members (their g differ).
 TEST(MotionModelBank, OnAJitteredClockEveryMemberStepsByItsOwnModel) {
-  Random random(5);
-  MotionModelBank bank;
-  double t = 0.0, dt = 0.0;
-  for (int k = 0; k < 60; ++k) {
-    const double next = t + 1.0 / kRate + 0.002 * (random.uniform() - 0.5);
-    dt = next - t;  // the interval the bank takes
-    t = next;
-    bank.update(t, Eigen::Vector3d(1.0 + 2.0 * t, -0.5 * t, 0.3 + t - 4.9 * t * t));
-  }
-  for (int axis = 0; axis < 3; ++axis) {
-    for (std::size_t j = 0; j < bank.members(axis).size(); ++j) {
-      const MemberPrediction shared = bank.member_prediction(axis, j, dt);
-      const MemberPrediction own = bank.member_prediction(axis, j, dt + 2e-9);
-      EXPECT_NEAR(shared.mean, own.mean, 1e-7) << axis << " " << j;
-      EXPECT_NEAR(shared.variance, own.variance, 1e-6 * own.variance) << axis << " " << j;
+  for (const Eigen::Vector3d& up :
+       {Eigen::Vector3d(0.0, 0.0, 1.0), Eigen::Vector3d(0.0, 3.0, 4.0)}) {
+    SCOPED_TRACE(up.transpose());
+    Random random(5);
+    MotionModelBankOptions options;
+    options.up = up;
+    MotionModelBank bank(options);
+    double t = 0.0, dt = 0.0;
+    for (int k = 0; k < 60; ++k) {
+      const double next = t + 1.0 / kRate + 0.002 * (random.uniform() - 0.5);
+      dt = next - t;  // the interval the bank takes
+      t = next;
+      bank.update(t, Eigen::Vector3d(1.0 + 2.0 * t, -0.5 * t, 0.3 + t - 4.9 * t * t));
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      for (std::size_t j = 0; j < bank.members(axis).size(); ++j) {
+        const MemberPrediction shared = bank.member_prediction(axis, j, dt);
+        const MemberPrediction own = bank.member_prediction(axis, j, dt + 2e-9);
+        EXPECT_NEAR(shared.mean, own.mean, 1e-7) << axis << " " << j;
+        EXPECT_NEAR(shared.variance, own.variance, 1e-6 * own.variance) << axis << " " << j;
+      }
     }
   }
 }
