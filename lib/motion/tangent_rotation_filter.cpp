@@ -54,8 +54,12 @@ AxisMotionModel TangentRotationFilter::axis_model() const {
   return {};
 }
 
+AxisMotionStep TangentRotationFilter::step_for(double dt) const {
+  return dt == step_dt_ ? step_ : axis_model().step(dt);
+}
+
 void TangentRotationFilter::predict(double dt) {
-  predict(dt, dt == step_dt_ ? step_ : axis_model().step(dt));
+  predict(dt, step_for(dt));
 }
 
 void TangentRotationFilter::predict(double dt, const AxisMotionStep& step) {
@@ -141,7 +145,7 @@ kalman::Correction<6, 3> TangentRotationFilter::update(
 double TangentRotationFilter::orientation_variance_growth(double horizon) const {
   // predict()'s value block is spin A spin^T + turn (B^T spin^T + spin B) + turn^2 C + Q: the
   // turn leaves A's trace as it is.
-  const AxisMotionStep axis = horizon == step_dt_ ? step_ : axis_model().step(horizon);
+  const AxisMotionStep axis = step_for(horizon);
   const double turn = axis.transition(0, 1);
   const Eigen::Matrix3d spin = so3::exp(angular_velocity_ * turn).conjugate().toRotationMatrix();
   return 2.0 * turn * (spin * covariance_.topRightCorner<3, 3>()).trace() +
@@ -150,7 +154,7 @@ double TangentRotationFilter::orientation_variance_growth(double horizon) const 
 }
 
 TangentRotationFilter::Prediction TangentRotationFilter::predicted(double horizon) const {
-  return predicted(horizon, horizon == step_dt_ ? step_ : axis_model().step(horizon));
+  return predicted(horizon, step_for(horizon));
 }
 
 TangentRotationFilter::Prediction TangentRotationFilter::predicted(

@@ -86,6 +86,8 @@ class TangentRotationFilter {
 
  private:
   bool has_rate() const { return model_ != RotationModel::kConstantOrientation; }
+  /// axis_model()'s step over dt: the last predict's when dt is its interval.
+  AxisMotionStep step_for(double dt) const;
 
   RotationModel model_;
   double intensity_;
