@@ -4,6 +4,7 @@
 #include "opf/core/random.h"
 #include "opf/core/so3.h"
 #include "opf/permanence/bank_motion.h"
+#include "opf/permanence/hypothesis_probabilities.h"
 #include "opf/permanence/motion_classifier.h"
 #include "opf/permanence/occluder_carry.h"
 #include "opf/permanence/occluder_selection.h"
@@ -13,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -31,25 +31,6 @@ constexpr double kDetectorNoiseWindow = 2.0;
 
 // Each gap's member draws come from their own stream of the filter's seed.
 constexpr std::uint64_t kMixtureStreams = 1000;
-
-// Occluder hypotheses below 5% are dropped, and at most four kept (the cups game has three).
-constexpr double kOccluderHypothesisFloor = 0.05;
-constexpr std::size_t kMaxOccluderHypotheses = 4;
-// A hypothesis the evidence has brought below one in a thousand is dropped: three frames with its
-// place seen and empty.
-constexpr double kNegligibleProbability = 1e-3;
-
-// Carried or left, before any evidence: odds of 2:1 that a cover leaves the object where it was
-// last seen (the carried third shared by the plausible occluders): an object stays put unless the
-// evidence says otherwise (docs/occluder.md).
-constexpr double kLeftPrior = 2.0 / 3.0;
-
-// The detector's miss probability per frame for an object in clear view: a hypothesis whose place
-// is seen and empty keeps this share of its probability.
-constexpr double kDetectorMissProbability = 0.1;
-
-// Jeffreys' "substantial" evidence: the odds the main hypothesis must lose by to be replaced.
-constexpr double kSubstantialBayesFactor = 3.1622776601683795;  // 10^(1/2)
 
 // The banks' validation gate: the chi-square 99.9% quantile with 3 degrees of freedom, on the
 // position's squared Mahalanobis distance from the mixture's one-step prediction.
@@ -409,17 +390,10 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool 
 
 void ObjectPermanenceFilter::keep_hypothesis_explaining(const Eigen::Vector3d& position) {
   if (hypotheses_.size() < 2) return;
-  // The most probable hypothesis given the measurement: its probability times the evidence.
-  std::size_t best = 0;
-  double best_posterior = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < hypotheses_.size(); ++i) {
-    const double posterior = std::log(hypotheses_[i].probability) +
-                             hypotheses_[i].filter.translation_log_evidence(position);
-    if (posterior > best_posterior) {
-      best = i;
-      best_posterior = posterior;
-    }
-  }
+  std::vector<double> log_evidence;
+  for (const Hypothesis& h : hypotheses_)
+    log_evidence.push_back(h.filter.translation_log_evidence(position));
+  const std::size_t best = most_probable_given(probabilities(), log_evidence);
   if (best != 0) hypotheses_[0] = std::move(hypotheses_[best]);
   hypotheses_.erase(hypotheses_.begin() + 1, hypotheses_.end());
   hypotheses_[0].probability = 1.0;
@@ -463,7 +437,7 @@ void ObjectPermanenceFilter::weigh_by_what_is_not_seen(const EnsembleView& ensem
         }
     const double seen =
         seen_probability(place, place_covariance, around, hiding_radius_, options_.occluder);
-    if (std::isfinite(seen)) h.probability *= 1.0 - seen * (1.0 - kDetectorMissProbability);
+    if (std::isfinite(seen)) h.probability *= no_detection_likelihood(seen);
   }
   normalise_probabilities();
   most_probable_first();
@@ -475,22 +449,17 @@ void ObjectPermanenceFilter::normalise_probabilities() {
   for (Hypothesis& h : hypotheses_) h.probability /= total;
 }
 
+std::vector<double> ObjectPermanenceFilter::probabilities() const {
+  std::vector<double> p;
+  for (const Hypothesis& h : hypotheses_) p.push_back(h.probability);
+  return p;
+}
+
 void ObjectPermanenceFilter::most_probable_first() {
-  const auto more_probable = [](const Hypothesis& a, const Hypothesis& b) {
-    return a.probability > b.probability;
-  };
-  // The main estimate changes hands only on substantial evidence: a Bayes factor of at least
-  // 10^(1/2) (Jeffreys' scale), so that a near tie does not make it jump between places.
-  const auto best_other =
-      std::max_element(hypotheses_.begin() + 1, hypotheses_.end(), more_probable);
-  const bool keep = best_other == hypotheses_.end() ||
-                    best_other->probability < kSubstantialBayesFactor * hypotheses_[0].probability;
-  std::stable_sort(hypotheses_.begin() + (keep ? 1 : 0), hypotheses_.end(), more_probable);
-  // Negligible hypotheses are dropped (the main one is always kept).
-  std::size_t kept = 1;
-  while (kept < hypotheses_.size() && hypotheses_[kept].probability >= kNegligibleProbability)
-    ++kept;
-  hypotheses_.erase(hypotheses_.begin() + kept, hypotheses_.end());
+  std::vector<Hypothesis> ordered;
+  for (const std::size_t i : hypothesis_order(probabilities()))
+    ordered.push_back(std::move(hypotheses_[i]));
+  hypotheses_ = std::move(ordered);
   normalise_probabilities();
 }
 

@@ -85,10 +85,9 @@ class ObjectPermanenceFilter final : public Estimator {
   /// The negative information: each hypothesis whose place the camera would see, while no
   /// detection arrives, loses probability by the detector's miss probability.
   void weigh_by_what_is_not_seen(const EnsembleView& ensemble, double dt);
-  /// Orders the hypotheses most probable first (stably: ties keep their order; the main one keeps
-  /// its place unless another is substantially more probable), drops the negligible ones and
-  /// renormalises.
+  /// Orders the hypotheses and drops the negligible ones (hypothesis_order), then renormalises.
   void most_probable_first();
+  std::vector<double> probabilities() const;
   /// Scales the hypotheses' probabilities to sum to one.
   void normalise_probabilities();
   Estimate make_estimate(const Hypothesis& hypothesis, int index) const;

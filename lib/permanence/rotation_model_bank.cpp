@@ -127,8 +127,7 @@ void RotationModelBank::predict(double horizon, std::vector<RotationMemberPredic
   if (!(horizon >= 0.0) || !std::isfinite(horizon))
     throw std::invalid_argument("RotationModelBank: the horizon must be a finite number >= 0 (s)");
   std::vector<AxisMotionStep> scratch;
-  if (horizon != steps_dt_) steps_over(axis_models_, horizon, scratch);
-  const std::vector<AxisMotionStep>& steps = horizon == steps_dt_ ? steps_ : scratch;
+  const std::vector<AxisMotionStep>& steps = steps_at(horizon, scratch);
   out.resize(filters_.size());
   for (std::size_t j = 0; j < filters_.size(); ++j) {
     const TangentRotationFilter::Prediction p = filters_[j].predicted(horizon, steps[j]);
@@ -161,6 +160,13 @@ double RotationModelBank::model_weight(RotationModel model) const {
 
 std::size_t RotationModelBank::sample_member(double uniform01) const {
   return weighted_choice(weights_.weights(), uniform01);
+}
+
+const std::vector<AxisMotionStep>& RotationModelBank::steps_at(
+    double dt, std::vector<AxisMotionStep>& scratch) const {
+  if (dt == steps_dt_) return steps_;  // exactly: as each member's own filter compares
+  steps_over(axis_models_, dt, scratch);
+  return scratch;
 }
 
 }  // namespace opf

@@ -71,6 +71,10 @@ class RotationModelBank {
   const RotationModelBankOptions& options() const { return options_; }
 
  private:
+  /// Every member's step over dt (the cached ones at the last update's interval).
+  const std::vector<AxisMotionStep>& steps_at(double dt,
+                                              std::vector<AxisMotionStep>& scratch) const;
+
   RotationModelBankOptions options_;
   std::vector<TangentRotationFilter> filters_;
   /// Each member's per-axis model, and their steps over the last update's interval, computed
