@@ -87,6 +87,7 @@ class ObjectPermanenceFilter final : public Estimator {
   void weigh_by_what_is_not_seen(const EnsembleView& ensemble, double dt);
   /// Orders the hypotheses and drops the negligible ones (hypothesis_order), then renormalises.
   void most_probable_first();
+  /// The hypotheses' probabilities, in their order.
   std::vector<double> probabilities() const;
   /// Scales the hypotheses' probabilities to sum to one.
   void normalise_probabilities();
