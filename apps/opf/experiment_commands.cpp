@@ -120,7 +120,7 @@ void run_experiment(const std::string& path, const Arguments& args, const RunReq
     config.frames = static_cast<int>(*r.frames);
   }
   const EstimatorSettings settings =
-      with_experiment_camera(settings_from(args, config.paper_preset_config), config);
+      experiments::with_experiment_camera(settings_from(args, config.paper_preset_config), config);
   o.effective.emplace_back(config.name, settings);
   if (config.closed_loop && r.with_measurements)
     throw UsageError{"option '--measurements': " + path +
@@ -193,13 +193,6 @@ constexpr const char* kReproduceSummary =
     "per-frame CSVs and summary.json.";
 
 }  // namespace
-
-EstimatorSettings with_experiment_camera(EstimatorSettings settings,
-                                         const sim::ExperimentConfig& config) {
-  if (!settings.opf.occluder.camera_position)
-    settings.opf.occluder.camera_position = config.camera.position.homogeneous();
-  return settings;
-}
 
 CommandHelp run_help() {
   return {"run EXPERIMENT.yaml", kRunSummary, specs(false)};

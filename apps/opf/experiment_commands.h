@@ -4,14 +4,9 @@
 // table, and write per-frame CSVs and summary.json.
 
 #include "command_help.h"
-#include "opf/estimators/estimator_settings.h"
 
 #include <string>
 #include <vector>
-
-namespace opf::sim {
-struct ExperimentConfig;
-}
 
 namespace opf::cli {
 
@@ -19,10 +14,5 @@ CommandHelp run_help();
 CommandHelp reproduce_help();
 int run_command(const std::vector<std::string>& args);
 int reproduce_command(const std::vector<std::string>& args);
-
-/// `settings` as an experiment runs them: the occluder module's line of sight starts at the
-/// experiment's camera unless the settings place one themselves.
-EstimatorSettings with_experiment_camera(EstimatorSettings settings,
-                                         const sim::ExperimentConfig& config);
 
 }  // namespace opf::cli

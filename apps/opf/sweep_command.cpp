@@ -2,11 +2,11 @@
 
 #include "arguments.h"
 #include "command_help.h"
+#include "drivers/experiment_run.h"
 #include "drivers/sweep_executor.h"
 #include "drivers/sweep_plan.h"
 #include "drivers/sweep_table.h"
 #include "estimator_arguments.h"
-#include "experiment_commands.h"
 #include "opf/io/atomic_file.h"
 #include "opf/io/estimator_settings_yaml.h"
 #include "opf/sim/experiment_config.h"
@@ -58,7 +58,7 @@ std::vector<std::pair<std::string, EstimatorSettings>> starting_settings(
     const sim::ExperimentConfig config = sim::load_experiment(file);
     EstimatorSettings each = preset_settings(preset, config.paper_preset_config);
     if (spec.config) each = load_estimator_settings(*spec.config, each);
-    settings.emplace_back(config.name, with_experiment_camera(each, config));
+    settings.emplace_back(config.name, experiments::with_experiment_camera(each, config));
   }
   return settings;
 }

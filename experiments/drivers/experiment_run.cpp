@@ -10,6 +10,13 @@
 
 namespace opf::experiments {
 
+EstimatorSettings with_experiment_camera(EstimatorSettings settings,
+                                         const sim::ExperimentConfig& config) {
+  if (!settings.opf.occluder.camera_position)
+    settings.opf.occluder.camera_position = config.camera.position.homogeneous();
+  return settings;
+}
+
 Random measurement_noise(std::uint64_t run_seed) {
   return Random(derive_seed(run_seed, 0x6e6f697365));  // "noise"
 }

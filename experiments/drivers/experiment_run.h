@@ -65,6 +65,12 @@ struct ExperimentResults {
   double epsilon_safe = FeedbackOptions{}.epsilon_safe;
 };
 
+/// `settings` as an experiment runs them (`opf run`, `opf reproduce`, `opf sweep`): the occluder
+/// module's line of sight starts at the experiment's camera unless the settings place one
+/// themselves.
+EstimatorSettings with_experiment_camera(EstimatorSettings settings,
+                                         const sim::ExperimentConfig& config);
+
 /// Called before each (estimator, seed) run: a line for the progress display.
 using Progress = std::function<void(const std::string& line)>;
 

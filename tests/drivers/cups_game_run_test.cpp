@@ -22,8 +22,7 @@ TEST(CupsGame, TheOpfFollowsTheBallsCupThroughTheShuffle) {
   const Observation observation = observe_experiment(config);
   EstimatorSettings settings;  // the defaults, as `opf run` runs every experiment
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
-  settings.opf.occluder.camera_position =
-      config.camera.position.homogeneous();  // as `opf run` passes it
+  settings = with_experiment_camera(settings, config);
   const ExperimentResults r = run_open_loop(config, observation, {"opf", "pf"}, settings, 1, 9);
   const RunErrors& pf = r.runs.at("pf")[0];
   // The PF keeps the ball where it vanished, ~0.18 m from it on average while hidden. The OPF

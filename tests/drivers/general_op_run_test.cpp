@@ -19,8 +19,7 @@ TEST(GeneralOp, TheOpfKeepsTheBallWithinItsTableIError) {
   const Observation observation = observe_experiment(config);
   EstimatorSettings settings;  // the defaults, as `opf run` runs every experiment
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
-  settings.opf.occluder.camera_position =
-      config.camera.position.homogeneous();  // as `opf run` passes it
+  settings = with_experiment_camera(settings, config);
   const ExperimentResults r = run_open_loop(config, observation, {"opf"}, settings, 3, 7);
   double translation = 0.0, hidden = 0.0;
   for (const RunErrors& e : r.runs.at("opf")) {

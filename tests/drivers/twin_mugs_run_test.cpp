@@ -30,9 +30,7 @@ class TwinMugs : public ::testing::Test {
   static EstimatorSettings settings() {
     EstimatorSettings s;  // the defaults, as `opf run` runs every experiment
     s.pf.translation_particles = s.pf.rotation_particles = 1000;
-    s.opf.occluder.camera_position =
-        config_.camera.position.homogeneous();  // as `opf run` passes it
-    return s;
+    return with_experiment_camera(s, config_);
   }
   static inline sim::ExperimentConfig config_;
   static inline Observation observation_;
