@@ -43,9 +43,17 @@ def parse_missed(text):
     return probability
 
 
+MISSED = "missed"
+
+
 def missed_label(probability):
     """The gap column's word for logs with missed frames: 'missed0.3'."""
-    return f"missed{probability:g}"
+    return f"{MISSED}{probability:g}"
+
+
+def missed_probability(label):
+    """missed_label's probability back from the gap column's word, or None for another word."""
+    return float(label[len(MISSED):]) if label.startswith(MISSED) else None
 
 
 def parse_gaps(text):

@@ -470,8 +470,9 @@ def hiding_text(gap):
     """The gap column as the table prints it: '0.6 s', 'annotated', '30% missed'."""
     if gap == "occluded":
         return "annotated"
-    if gap.startswith("missed"):
-        return f"{100 * float(gap[len('missed'):]):g}% missed"
+    missed = convert.missed_probability(gap)
+    if missed is not None:
+        return f"{100 * missed:g}% missed"
     return f"{gap} s"
 
 

@@ -78,4 +78,6 @@ def test_a_clips_missed_detections_keep_their_rows_and_the_first_is_seen(tmp_pat
     bench.drop_detections(truth, tmp_path / "again.csv", 0.3, 5)
     assert (tmp_path / "again.csv").read_bytes() == log.read_bytes()  # seeded
     assert bench.hiding_text("missed0.3") == "30% missed"
+    assert bench.convert.missed_probability(bench.convert.missed_label(0.25)) == 0.25
+    assert bench.convert.missed_probability("0.6") is None
     assert bench.hiding_text("occluded") == "annotated" and bench.hiding_text("0.6") == "0.6 s"
