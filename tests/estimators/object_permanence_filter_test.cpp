@@ -788,12 +788,12 @@ std::function<Eigen::Quaterniond(double)> wandering_spin(std::uint64_t seed, dou
   return [path](double t) { return path[static_cast<std::size_t>(std::lround(t * 30))]; };
 }
 
-// The same for the orientation: a ball spinning at 1 rad/s whose spin wanders (0.5
-// rad/s^2/sqrt(Hz)), hidden for 1 s. The rotation particles spread by the rotation members' growth
-// of covariance (mixture_particle_motion.h), so 2 sqrt(trace) of the reported rotation covariance
-// covers the geodesic error in every hidden frame of four seeds, the median error / sqrt(trace)
-// 0.51. Turned without that spread, the cloud keeps its visible width: 36% of frames covered, the
-// median ratio 3.6.
+// HiddenUncertaintyCoversTheError for the orientation: a ball spinning at 1 rad/s whose spin
+// wanders (0.5 rad/s^2/sqrt(Hz)), hidden for 1 s. The rotation particles spread by the rotation
+// members' growth of covariance (mixture_particle_motion.h), so 2 sqrt(trace) of the reported
+// rotation covariance covers the geodesic error in every hidden frame of four seeds, the median
+// error / sqrt(trace) 0.51. Turned without that spread, the cloud keeps its visible width: 36% of
+// frames covered, the median ratio 3.6.
 TEST(ObjectPermanenceFilter, HiddenRotationUncertaintyCoversTheError) {
   int covered = 0, hidden = 0;
   std::vector<double> ratios;
