@@ -706,34 +706,55 @@ ScriptedObject wandering_ball(std::uint64_t seed, double intensity, int frames, 
   return ball;
 }
 
+// A ball wandering as wandering_ball's (0.1 m/s^2/sqrt(Hz)) for 130 frames, hidden from frame 70
+// to 99, turning by `orientation`.
+Scene hidden_wandering_ball(std::uint64_t seed,
+                            std::function<Eigen::Quaterniond(double)> orientation) {
+  Scene scene;
+  scene.frames = 130;
+  scene.objects.push_back(wandering_ball(seed, 0.1, scene.frames, 70, 100));
+  scene.objects.back().orientation = std::move(orientation);
+  return scene;
+}
+
+// The errors of hidden frames against the spread reported with them, sqrt(trace) of the
+// covariance: an honest spread covers 90% of them within twice itself, and is no useless caution
+// (the median error / spread at least 0.25).
+struct SpreadCoverage {
+  int covered = 0, frames = 0;
+  std::vector<double> ratios;
+
+  void add(double error, double spread) {
+    covered += error <= 2.0 * spread;
+    ++frames;
+    ratios.push_back(error / spread);
+  }
+  void expect_honest() {
+    std::nth_element(ratios.begin(), ratios.begin() + static_cast<long>(ratios.size() / 2),
+                     ratios.end());
+    EXPECT_GE(covered, 0.9 * frames) << covered << " of " << frames;
+    EXPECT_GE(ratios[ratios.size() / 2], 0.25);
+  }
+};
+
 // While hidden, the reported position covariance says how far off the estimate may be: over
 // seeds, 90% of the hidden frames lie within 2 sqrt(trace) (an honest 3-D Gaussian: 99%), with a
 // median error / sqrt(trace) of at least 0.25 (not useless caution). The ball turns as it rolls
 // and wanders (white random acceleration, 0.1 m/s^2/sqrt(Hz): its velocity drifts by ~0.1 m/s
 // in a second), so no line is exactly right.
 TEST(ObjectPermanenceFilter, HiddenUncertaintyCoversTheError) {
-  int covered = 0, hidden = 0;
-  std::vector<double> ratios;
+  SpreadCoverage coverage;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    Scene scene;
-    scene.frames = 130;
-    scene.objects.push_back(wandering_ball(seed, 0.1, scene.frames, 70, 100));
-    scene.objects.back().orientation = [](double t) {
-      return so3::exp(Eigen::Vector3d(2.0 * t, 0.0, 0.0));
-    };
+    const Scene scene = hidden_wandering_ball(
+        seed, [](double t) { return so3::exp(Eigen::Vector3d(2.0 * t, 0.0, 0.0)); });
     const SceneRun opf = run(scene, opf_factory(OpfOptions{}), seed);
     for (int k = 70; k < 100; ++k) {
       const double spread = position_spread(opf, "ball", k);
       const double error = error_at(opf, scene, "ball", k);
-      covered += error <= 2.0 * spread;
-      ++hidden;
-      ratios.push_back(error / spread);
+      coverage.add(error, spread);
     }
   }
-  std::nth_element(ratios.begin(), ratios.begin() + static_cast<long>(ratios.size() / 2),
-                   ratios.end());
-  EXPECT_GE(covered, 0.9 * hidden) << covered << " of " << hidden;
-  EXPECT_GE(ratios[ratios.size() / 2], 0.25);
+  coverage.expect_honest();
 }
 
 TEST(ObjectPermanenceFilter, AReacquisitionAfterAWideGapIsTheGaussianPosterior) {
@@ -795,28 +816,19 @@ std::function<Eigen::Quaterniond(double)> wandering_spin(std::uint64_t seed, dou
 // error / sqrt(trace) 0.51. Turned without that spread, the cloud keeps its visible width: 36% of
 // frames covered, the median ratio 3.6.
 TEST(ObjectPermanenceFilter, HiddenRotationUncertaintyCoversTheError) {
-  int covered = 0, hidden = 0;
-  std::vector<double> ratios;
+  SpreadCoverage coverage;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    Scene scene;
-    scene.frames = 130;
-    scene.objects.push_back(wandering_ball(seed, 0.1, scene.frames, 70, 100));
-    scene.objects.back().orientation = wandering_spin(seed + 100, 0.5, scene.frames);
+    const Scene scene = hidden_wandering_ball(seed, wandering_spin(seed + 100, 0.5, 130));
     const SceneRun opf = run(scene, opf_factory(OpfOptions{}), seed);
     for (int k = 70; k < 100; ++k) {
       const Estimate& e = opf.estimates[k].at("ball");
       const double spread = std::sqrt(e.pose.cov.asEigen().bottomRightCorner<3, 3>().trace());
       const double error =
           rotation_error_geodesic(e.pose.mean, truth_of(scene.objects[0], opf.t[k]));
-      covered += error <= 2.0 * spread;
-      ++hidden;
-      ratios.push_back(error / spread);
+      coverage.add(error, spread);
     }
   }
-  std::nth_element(ratios.begin(), ratios.begin() + static_cast<long>(ratios.size() / 2),
-                   ratios.end());
-  EXPECT_GE(covered, 0.9 * hidden) << covered << " of " << hidden;
-  EXPECT_GE(ratios[ratios.size() / 2], 0.25);
+  coverage.expect_honest();
 }
 
 // A car on a 25 m circle at 8 m/s, seen at 5 Hz and at 2 Hz (1.6 and 4 m a frame) with 2 mm
