@@ -1,5 +1,6 @@
 #include "drivers/experiment_run.h"
 
+#include "bundled_experiment.h"
 #include "drivers/observe_experiment.h"
 
 #include <gtest/gtest.h>
@@ -11,8 +12,7 @@ namespace {
 // particles, two seeds, with the defaults (as `opf run` runs it): the dynamics module's ballistic
 // members find the parabola.
 TEST(BaseballThrow, TheOpfFollowsTheParabolaThroughTheDropout) {
-  const sim::ExperimentConfig config =
-      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/baseball.yaml");
+  const sim::ExperimentConfig config = bundled_experiment("baseball");
   const Observation observation = observe_experiment(config);
   ASSERT_EQ(observation.camera.size(), 90u);
   // Measured outside the dropout, never inside it.

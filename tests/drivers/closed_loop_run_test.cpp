@@ -1,5 +1,6 @@
 #include "drivers/closed_loop_run.h"
 
+#include "bundled_experiment.h"
 #include "opf/core/pose_conversion.h"
 
 #include <gtest/gtest.h>
@@ -15,8 +16,7 @@ namespace {
 class SugarDropStart : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    sim::ExperimentConfig config =
-        sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
+    sim::ExperimentConfig config = bundled_experiment("sugar_drop");
     config.frames = 90;
     EstimatorSettings settings;  // the defaults, as `opf run` runs every experiment
     settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
@@ -37,8 +37,7 @@ ExperimentResults* SugarDropStart::results_ = nullptr;
 // What a closed loop's camera sees depends on the robot, so the check follows the run: with the
 // camera under the table no run estimates the mug, and none is scored as if it had.
 TEST(ClosedLoopRun, RefusesAnObjectOfInterestNoRunEstimates) {
-  sim::ExperimentConfig config =
-      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
+  sim::ExperimentConfig config = bundled_experiment("sugar_drop");
   config.frames = 5;
   config.camera.position.z() = -5.0;
   EstimatorSettings settings;
@@ -76,8 +75,7 @@ TEST_F(SugarDropStart, TheHandWaitsThenTracksTheMugAndHidesItItself) {
 }
 
 TEST_F(SugarDropStart, TheSameSeedGivesTheSameRun) {
-  sim::ExperimentConfig config =
-      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/sugar_drop.yaml");
+  sim::ExperimentConfig config = bundled_experiment("sugar_drop");
   config.frames = 90;
   EstimatorSettings settings;
   settings.pf.translation_particles = settings.pf.rotation_particles = 1000;

@@ -1,5 +1,6 @@
 #include "drivers/experiment_run.h"
 
+#include "bundled_experiment.h"
 #include "drivers/observe_experiment.h"
 #include "drivers/results_files.h"
 
@@ -17,12 +18,9 @@ namespace {
 // The cups game, seeded: 1000 + 1000 particles, one seed, the default settings. The ball
 // is hidden from ~1.5 s until cup B is lifted at ~8.2 s while B travels ~0.6 m through two swaps.
 TEST(CupsGame, TheOpfFollowsTheBallsCupThroughTheShuffle) {
-  const sim::ExperimentConfig config =
-      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/cups_game.yaml");
+  const sim::ExperimentConfig config = bundled_experiment("cups_game");
   const Observation observation = observe_experiment(config);
-  EstimatorSettings settings;  // the defaults, as `opf run` runs every experiment
-  settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
-  settings = with_experiment_camera(settings, config);
+  const EstimatorSettings settings = default_settings(config, 1000);
   const ExperimentResults r = run_open_loop(config, observation, {"opf", "pf"}, settings, 1, 9);
   const RunErrors& pf = r.runs.at("pf")[0];
   // The PF keeps the ball where it vanished, ~0.18 m from it on average while hidden. The OPF

@@ -1,5 +1,6 @@
 #include "drivers/experiment_run.h"
 
+#include "bundled_experiment.h"
 #include "drivers/observe_experiment.h"
 
 #include <gtest/gtest.h>
@@ -15,8 +16,7 @@ namespace {
 class GeneralOpStepOne : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    config_ = new sim::ExperimentConfig(
-        sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml"));
+    config_ = new sim::ExperimentConfig(bundled_experiment("general_op"));
     config_->frames = 160;
     observation_ = new Observation(observe_experiment(*config_));
     settings_ = new EstimatorSettings();  // the defaults, as `opf run` runs every experiment
@@ -38,8 +38,7 @@ EstimatorSettings* GeneralOpStepOne::settings_ = nullptr;
 // A camera under the table sees no ball: the run would track and score nothing, so it is
 // refused before any estimator runs, naming the object and what to check.
 TEST(ObserveExperiment, RefusesAnObjectOfInterestTheCameraNeverMeasures) {
-  sim::ExperimentConfig config =
-      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml");
+  sim::ExperimentConfig config = bundled_experiment("general_op");
   config.frames = 5;
   config.camera.position.z() = -5.0;
   try {
@@ -56,8 +55,7 @@ TEST(ObserveExperiment, RefusesAnObjectOfInterestTheCameraNeverMeasures) {
 // The experiment's min_area_pixels is the detector's: above the ball's blob (under a thousand
 // pixels: its 2.5 cm radius spans about 17 pixels from 0.47 m), the ball is never measured.
 TEST(ObserveExperiment, TheExperimentsMinimumAreaReachesTheDetector) {
-  sim::ExperimentConfig config =
-      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml");
+  sim::ExperimentConfig config = bundled_experiment("general_op");
   config.frames = 2;
   EXPECT_EQ(detection_of(config).min_area_pixels, 30);
   config.measurement.min_area_pixels = 29.5;

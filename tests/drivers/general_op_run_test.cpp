@@ -1,5 +1,6 @@
 #include "drivers/experiment_run.h"
 
+#include "bundled_experiment.h"
 #include "drivers/observe_experiment.h"
 
 #include <gtest/gtest.h>
@@ -14,12 +15,9 @@ namespace {
 // there, and neither had a test: the history restarts (it was carried, not moving on its own:
 // 0.0073 m without), and so do the motion-model banks (0.0082 m without).
 TEST(GeneralOp, TheOpfKeepsTheBallWithinItsTableIError) {
-  const sim::ExperimentConfig config =
-      sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/general_op.yaml");
+  const sim::ExperimentConfig config = bundled_experiment("general_op");
   const Observation observation = observe_experiment(config);
-  EstimatorSettings settings;  // the defaults, as `opf run` runs every experiment
-  settings.pf.translation_particles = settings.pf.rotation_particles = 1000;
-  settings = with_experiment_camera(settings, config);
+  const EstimatorSettings settings = default_settings(config, 1000);
   const ExperimentResults r = run_open_loop(config, observation, {"opf"}, settings, 3, 7);
   double translation = 0.0, hidden = 0.0;
   for (const RunErrors& e : r.runs.at("opf")) {

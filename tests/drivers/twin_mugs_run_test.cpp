@@ -1,5 +1,6 @@
 #include "drivers/experiment_run.h"
 
+#include "bundled_experiment.h"
 #include "drivers/observe_experiment.h"
 #include "drivers/results_files.h"
 
@@ -21,17 +22,13 @@ namespace {
 class TwinMugs : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    config_ = sim::load_experiment(std::string(OPF_SOURCE_DIR) + "/experiments/twin_mugs.yaml");
+    config_ = bundled_experiment("twin_mugs");
     observation_ = observe_experiment(config_);
   }
   static ExperimentResults run(const EstimatorSettings& settings) {
     return run_open_loop(config_, observation_, {"opf"}, settings, 3, 5);
   }
-  static EstimatorSettings settings() {
-    EstimatorSettings s;  // the defaults, as `opf run` runs every experiment
-    s.pf.translation_particles = s.pf.rotation_particles = 1000;
-    return with_experiment_camera(s, config_);
-  }
+  static EstimatorSettings settings() { return default_settings(config_, 1000); }
   static inline sim::ExperimentConfig config_;
   static inline Observation observation_;
 };
