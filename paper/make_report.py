@@ -424,7 +424,10 @@ def hand_scenes(out, directory):
                f"object's translation error while hidden [mm], mean $\\pm$ "
                f"{std_over(table.seeds)}; the OPF's hypothesis nearest the truth, over the "
                f"seeds' hidden frames; the reveals at which its main hypothesis, then its most "
-               f"probable one, was right (the target judges the most probable). "
+               f"probable one, was right (the target judges the most probable). A carry's "
+               f"floor: the error of an estimator that knows where each hypothesis puts the cube "
+               f"and takes the camera's evidence the first frame it shows (the place it left out "
+               f"from under the hand; the cube seen again after a put-down). "
                f"Targets (the project's): carried {bounds_text(TARGETS['carry_hidden_mm'], 'mm')}, "
                f"passed over at most the PF's + {TARGETS['pass_over_pf_mm'][1]:g} mm, cups' "
                f"nearest {bounds_text(TARGETS['cups_nearest_mm'], 'mm')}; right at reveal "
@@ -448,7 +451,7 @@ def hand_scene_row(table, scene):
 
 def hand_error_verdict(scene, by):
     """The scene's error target: the carried cube's error, the passed-over cube's over the PF's,
-    the cups' nearest hypothesis."""
+    the cups' nearest hypothesis; a carry's floor beside it, where the table has one."""
     opf_mm = 1000 * by.hidden_translation["opf"]
     value, bounds = {
         "carry": (opf_mm, TARGETS["carry_hidden_mm"]),
@@ -456,7 +459,8 @@ def hand_error_verdict(scene, by):
                  TARGETS["pass_over_pf_mm"]),
         "cups": (1000 * by.nearest_hidden_translation["opf"], TARGETS["cups_nearest_mm"]),
     }.get(scene, (math.nan, (None, None)))
-    return mark(value, bounds)
+    floor = by.get("floor_hidden_translation", {}).get("opf", math.nan)
+    return mark(value, bounds) + ("" if absent(floor) else f" (floor {1000 * floor:.1f})")
 
 
 def hand_reveal_verdict(scene, by):

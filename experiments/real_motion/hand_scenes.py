@@ -18,7 +18,8 @@ Occlusion comes from the rendered geometry; the truth is the scene's. Each scene
 experiment file and run by `opf run` with every estimator; the table gives, per scene and
 estimator, the hidden object's error while hidden (the main estimate's, and for the OPF the
 hypothesis nearest the truth), and how often the OPF's main hypothesis, and its most probable
-one, was the right one when it was seen again.
+one, was the right one when it was seen again. Under it, each carry's floor: what the camera lets
+any estimator reach under the OPF's rules (carry_floor).
 
 Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and hand_scenes.md. A
 scene that no window of its recording fits from --window-start on is not run: it is named, with
@@ -265,6 +266,73 @@ def is_right(row, moved, carriers):
     return mode == "left"
 
 
+def plate_covers(place, hand, yaw):
+    """Whether the hand's plate (PLATE, centred at `hand`, turned by `yaw` about the vertical)
+    stands on the line of sight from `place` to the camera: the segment between them, in the
+    plate's frame, crosses its box (the slab test)."""
+    camera = np.array([WORKSPACE[0], WORKSPACE[1], CAMERA_HEIGHT])
+    c, s = np.cos(yaw), np.sin(yaw)
+    into_plate = np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
+    start = into_plate @ (np.asarray(place, float) - hand)
+    along = into_plate @ (camera - hand) - start
+    half = np.array(PLATE) / 2
+    lo, hi = 0.0, 1.0
+    for k in range(3):
+        if abs(along[k]) < 1e-12:
+            if abs(start[k]) > half[k]:
+                return False
+            continue
+        t0, t1 = sorted(((-half[k] - start[k]) / along[k], (half[k] - start[k]) / along[k]))
+        lo, hi = max(lo, t0), min(hi, t1)
+        if lo > hi:
+            return False
+    return True
+
+
+def carry_floor(frames_csv, target="cube", hand="hand"):
+    """What the camera lets any estimator reach in a carry, under the OPF's rules (`left` is the
+    prior; a hypothesis changes only on evidence): the mean error over the target's hidden frames
+    [m] of an estimator that knows where each hypothesis puts it and takes the evidence the first
+    frame it shows. It says `left` until the target moves and the place it left is out from under
+    the plate (seen empty), then `carried` at the target's place on the hand, until the target is
+    seen again: after a put-down nothing the camera shows moves it off the hand. Returns (floor,
+    the pick-up's share: `left` while the target moves, the put-down's share: `carried` while it
+    stays), each over every seed's hidden frames of the OPF's run."""
+    truth = {}  # (seed, frame) -> {object: (position, yaw about the vertical, visible)}
+    with open(frames_csv) as f:
+        for r in csv.DictReader(f):
+            if r["estimator"] == "opf" and r["hypothesis"] == "0" and r["object"] in (target, hand):
+                position = np.array([float(r["true_x"]), float(r["true_y"]), float(r["true_z"])])
+                yaw = 2.0 * np.arctan2(float(r["true_qz"]), float(r["true_qw"]))
+                truth.setdefault((r["seed"], int(r["frame"])), {})[r["object"]] = (
+                    position, yaw, r["visible"] == "1")
+    pick_up = put_down = 0.0
+    hidden = 0
+    previous_seed = rest = previous = offset = None
+    for (seed, _), objects in sorted(truth.items()):
+        cube, _, seen = objects[target]
+        centre, yaw, _ = objects[hand]
+        turn = np.array([[np.cos(yaw), -np.sin(yaw), 0.0], [np.sin(yaw), np.cos(yaw), 0.0],
+                         [0.0, 0.0, 1.0]])
+        if seed != previous_seed or seen:  # a seed's start or a sighting: left where it is seen
+            previous_seed, rest, previous, offset, dismissed = seed, cube, cube, None, False
+        if np.linalg.norm(cube - previous) > 1e-6:  # it moves: on the hand, at this offset
+            offset = turn.T @ (cube - centre)
+        previous = cube
+        on_hand = offset is not None and np.linalg.norm(centre + turn @ offset - cube) < 1e-4
+        dismissed = dismissed or (on_hand and not plate_covers(rest, centre, yaw))
+        if seen:
+            continue
+        hidden += 1
+        if on_hand and not dismissed:
+            pick_up += np.linalg.norm(cube - rest)
+        elif offset is not None and not on_hand:
+            put_down += np.linalg.norm(centre + turn @ offset - cube)
+    if hidden == 0:
+        return 0.0, 0.0, 0.0
+    return (pick_up + put_down) / hidden, pick_up / hidden, put_down / hidden
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("out")
@@ -354,7 +422,8 @@ def build_scenes(recordings, start, count=None):
 
 def run_scene(args, experiment, text, target, carriers=None, out=None):
     """Writes the experiment file into `out` (args.out by default), runs every estimator on it
-    and returns the target's hidden errors (hidden_errors) and the OPF's reveals (reveals)."""
+    and returns the target's hidden errors (hidden_errors), the OPF's reveals (reveals) and, for
+    a carry, what the camera lets any estimator reach (carry_floor; None otherwise)."""
     out = out or args.out
     os.makedirs(out, exist_ok=True)
     scene = os.path.join(out, f"{experiment}.yaml")
@@ -367,15 +436,17 @@ def run_scene(args, experiment, text, target, carriers=None, out=None):
     if done.returncode != 0:
         sys.exit(f"hand_scenes: {' '.join(command)} failed ({done.returncode}):\n"
                  f"{done.stderr.strip() or '(it wrote no message)'}")
+    frames = os.path.join(run_dir, f"{experiment}_frames.csv")
+    floor = carry_floor(frames, target) if experiment.endswith("_carry") else None
     return (hidden_errors(os.path.join(run_dir, "summary.json"), experiment),
-            reveals(os.path.join(run_dir, f"{experiment}_frames.csv"), target, carriers))
+            reveals(frames, target, carriers), floor)
 
 
 def reveal_totals(table):
     """The line under the table: per scene kind, at how many of its reveals the OPF's most
     probable hypothesis was the right one ("" for no rows)."""
     counts = {}
-    for _, kind, _, (_, likeliest, total) in table:
+    for _, kind, _, (_, likeliest, total), *_ in table:
         right, all_ = counts.get(kind, (0, 0))
         counts[kind] = (right + likeliest, all_ + total)
     if not counts:
@@ -386,24 +457,26 @@ def reveal_totals(table):
 
 
 def write_results(out, table, skipped=()):
-    """hand_scenes.csv (tidy) and hand_scenes.md (the table, and the scenes not run), the table
-    also printed."""
+    """hand_scenes.csv (tidy) and hand_scenes.md (the table, the carries' floor, and the scenes not
+    run), the tables also printed. Each row of `table` is (recording, scene, hidden_errors,
+    reveals[, carry_floor or None])."""
     estimators = ESTIMATORS.split(",")
     with open(os.path.join(out, "hand_scenes.csv"), "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
         writer.writerow(["recording", "scene", "estimator", "hidden_frames", "hidden_translation",
                          "nearest_hidden_translation", "right_at_reveal",
-                         "most_probable_right_at_reveal", "reveals"])
-        for name, kind, errors, (right, likeliest, total) in table:
+                         "most_probable_right_at_reveal", "reveals", "floor_hidden_translation"])
+        for name, kind, errors, (right, likeliest, total), *floor in table:
+            floor = floor[0] if floor else None
             for e in estimators:
                 main_error, nearest, frames = errors[e]
                 revealed = [right, likeliest, total] if e == "opf" else ["", "", ""]
                 writer.writerow([name, kind, e, frames, f"{main_error:.6g}", f"{nearest:.6g}"] +
-                                revealed)
+                                revealed + ["" if floor is None else f"{floor[0]:.6g}"])
     lines = ["| recording | scene | hidden frames | " + " | ".join(estimators) +
              " | opf: nearest hypothesis | opf: right at reveal, main | most probable |",
              "|---|---|---|" + "---|" * (len(estimators) + 3)]
-    for name, kind, errors, (right, likeliest, total) in table:
+    for name, kind, errors, (right, likeliest, total), *_ in table:
         cells = [f"{errors[e][0] * 1000:.1f}" for e in estimators]
         lines.append(f"| {name} | {kind} | {errors['opf'][2]} | " + " | ".join(cells) +
                      f" | {errors['opf'][1] * 1000:.1f} | {right}/{total} | "
@@ -415,12 +488,32 @@ def write_results(out, table, skipped=()):
             "its hand, if the object moved while hidden; left otherwise).\n\n" +
             "\n".join(lines) + "\n")
     text += reveal_totals(table)
+    text += floor_table(table)
     if skipped:
         text += ("\nNot run, no window of the recording fits:\n\n" +
                  "".join(f"- {name} {kind}: {reason}\n" for name, kind, reason in skipped))
     with open(os.path.join(out, "hand_scenes.md"), "w") as f:
         f.write(text)
     print(text, end="")
+
+
+def floor_table(table):
+    """The carries' floor (carry_floor) beside the OPF's main estimate, in hand_scenes.md ("" for
+    no carry)."""
+    rows = [(name, errors["opf"][0], floor[0]) for name, _, errors, _, *floor in table
+            if floor and floor[0] is not None]
+    if not rows:
+        return ""
+    return ("\nThe carries' floor [mm]: the main estimate's error while hidden for an estimator "
+            "that knows where each hypothesis puts the cube and takes the camera's evidence the "
+            "first frame it shows: `left` until the place it left is out from under the plate, "
+            "then carried, also after a put-down until the cube is seen (pick-up and put-down: "
+            "their shares of the floor).\n\n"
+            "| recording | opf | floor | pick-up | put-down |\n|---|---|---|---|---|\n" +
+            "".join(f"| {name} | {opf * 1000:.1f} | {floor[0] * 1000:.1f} | "
+                    f"{floor[1] * 1000:.1f} | {floor[2] * 1000:.1f} |\n"
+                    for name, opf, floor in rows))
+
 
 if __name__ == "__main__":
     main()

@@ -56,16 +56,20 @@ def test_table_one_marks_the_opf_above_the_papers_error():
     assert report.table_one_verdict(general_op) == "met"
 
 
-def hand_scene(opf_mm, pf_mm, nearest_mm, right, reveals):
+def hand_scene(opf_mm, pf_mm, nearest_mm, right, reveals, floor_mm=math.nan):
     return pd.DataFrame({"hidden_translation": [opf_mm / 1000, pf_mm / 1000],
                          "nearest_hidden_translation": [nearest_mm / 1000, pf_mm / 1000],
-                         "right_at_reveal": [right, math.nan], "reveals": [reveals, math.nan]},
+                         "right_at_reveal": [right, math.nan], "reveals": [reveals, math.nan],
+                         "floor_hidden_translation": [floor_mm / 1000] * 2},
                         index=["opf", "pf"])
 
 
 def test_hand_scenes_mark_each_missed_target():
     assert report.hand_error_verdict("carry", hand_scene(20.8, 162.8, 13.5, 5, 5)) == MISSED
     assert report.hand_error_verdict("carry", hand_scene(9.9, 162.8, 8.0, 5, 5)) == "met"
+    # A carry's floor, where the table has one, stands beside its verdict.
+    assert report.hand_error_verdict("carry", hand_scene(20.8, 162.8, 13.5, 5, 5, 15.1)) == (
+        MISSED + " (floor 15.1)")
     assert report.hand_error_verdict("pass", hand_scene(6.6, 4.0, 6.0, 5, 5)) == MISSED
     assert report.hand_error_verdict("cups", hand_scene(54.5, 210.6, 15.5, 4, 5)) == MISSED
     assert report.hand_reveal_verdict("cups", hand_scene(9.9, 287.2, 5.3, 4, 5)) == "4/5 met"

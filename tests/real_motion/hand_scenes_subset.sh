@@ -5,7 +5,8 @@
 # within a fifth of the PF's error, and in the cups game the ball under cup B likewise; in the
 # pass-over it leaves the cube where it was, within 2 mm of the PF's error; and at every reveal
 # its main hypothesis is the right one (carried, by cup B or its hand in the cups game; left), and
-# its most probable one too.
+# its most probable one too. The carry's floor (what the camera lets any estimator reach) is
+# above zero and below the OPF's error, and only the carry has one.
 # Usage: hand_scenes_subset.sh REPO OPF WORK_DIR
 set -euo pipefail
 repo="$1" opf="$2" work="$3"
@@ -21,6 +22,9 @@ assert all(int(r["hidden_frames"]) > 0 for r in rows), rows
 assert error["carry", "opf"] < 0.2 * error["carry", "pf"], error
 assert error["cups", "opf"] < 0.2 * error["cups", "pf"], error
 assert error["pass", "opf"] <= error["pass", "pf"] + 0.002, error
+floor = {r["scene"]: r["floor_hidden_translation"] for r in rows}
+assert floor["pass"] == floor["cups"] == "", floor
+assert 0.0 < float(floor["carry"]) < error["carry", "opf"], (floor, error)
 for r in rows:
     if r["estimator"] == "opf":
         assert int(r["reveals"]) > 0 and r["right_at_reveal"] == r["reveals"], r
@@ -29,5 +33,5 @@ for r in rows:
         assert r["most_probable_right_at_reveal"] == r["reveals"], r
 print("hand scenes subset: " + "; ".join(
     f"{scene} opf {1000 * error[scene, 'opf']:.1f} mm, pf {1000 * error[scene, 'pf']:.1f} mm"
-    for scene in ("carry", "pass", "cups")))
+    for scene in ("carry", "pass", "cups")) + f"; carry floor {1000 * float(floor['carry']):.1f} mm")
 PY

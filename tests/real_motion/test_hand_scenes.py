@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "experiments" / "real_motion"))
@@ -251,3 +252,62 @@ def test_a_failing_run_stops_with_its_command_and_its_words(tmp_path):
     assert "failed (3):\nopf run: error: the scene is bad" in run.stderr
     assert "Traceback" not in run.stderr
     assert not (tmp_path / "out" / "hand_scenes.md").exists()
+
+
+def test_the_plate_covers_a_place_through_its_shadow_in_the_cameras_perspective():
+    # The camera looks down from 0.8 m over the workspace's centre; the plate's top, 0.14 m up,
+    # hides a place on the table up to 0.07 / (1 - 0.13 / 0.79) = 0.0838 m from under its centre
+    # along its side, and further along its diagonal.
+    cx, cy = hand_scenes.WORKSPACE
+    hand = np.array([cx, cy, hand_scenes.HOVER])
+    assert hand_scenes.plate_covers((cx, cy, 0.01), hand, 0.0)
+    assert hand_scenes.plate_covers((cx + 0.083, cy, 0.01), hand, 0.0)
+    assert not hand_scenes.plate_covers((cx + 0.085, cy, 0.01), hand, 0.0)
+    assert hand_scenes.plate_covers((cx + 0.085, cy, 0.01), hand, np.pi / 4)  # its corner
+    assert not hand_scenes.plate_covers((cx, cy + 0.2, 0.01), hand, np.pi / 4)
+
+
+FLOOR_FIELDS = ["frame", "object", "estimator", "seed", "hypothesis", "visible", "true_x",
+                "true_y", "true_z", "true_qz", "true_qw"]
+
+
+def test_the_carry_floor_counts_a_pick_up_until_the_place_is_seen_and_a_put_down_until_the_reveal(
+        tmp_path):
+    cx, cy = hand_scenes.WORKSPACE
+    # (hand x, cube x, cube seen): the cube seen, covered, picked up 5 cm with its place still
+    # under the plate (0.05 m off), carried out of it (the place seen empty: carried from here on,
+    # also back over the place), put down as the hand moves on 4 cm (0.04 m off), seen again.
+    steps = [(0.20, 0.00, 1), (0.00, 0.00, 0), (0.05, 0.05, 0), (0.15, 0.15, 0), (0.02, 0.02, 0),
+             (0.06, 0.02, 0), (0.20, 0.02, 1)]
+    rows = []
+    for frame, (hand_x, cube_x, seen) in enumerate(steps):
+        rows.append([frame, "hand", "opf", 0, 0, 1, cx + hand_x, cy, hand_scenes.HOVER, 0.0, 1.0])
+        rows.append([frame, "cube", "opf", 0, 0, seen, cx + cube_x, cy, 0.01, 0.0, 1.0])
+        # Another hypothesis and another estimator count not.
+        rows.append([frame, "cube", "opf", 0, 1, seen, cx + cube_x, cy, 0.01, 0.0, 1.0])
+        rows.append([frame, "cube", "pf", 0, 0, seen, cx + 0.5, cy, 0.01, 0.0, 1.0])
+    path = tmp_path / "frames.csv"
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(FLOOR_FIELDS)
+        writer.writerows(rows)
+    floor, pick_up, put_down = hand_scenes.carry_floor(path)
+    # Five hidden frames: 0.05 m in the pick-up, 0.04 m in the put-down.
+    assert pick_up == pytest.approx(0.05 / 5, abs=1e-9)
+    assert put_down == pytest.approx(0.04 / 5, abs=1e-9)
+    assert floor == pytest.approx(0.09 / 5, abs=1e-9)
+
+
+def test_the_floor_is_tabled_under_the_carries_and_in_the_csv(tmp_path):
+    errors = {e: (0.02, 0.015, 100) for e in hand_scenes.ESTIMATORS.split(",")}
+    table = [("room", "carry", errors, (5, 5, 5), (0.018, 0.01, 0.008)),
+             ("room", "pass", errors, (5, 5, 5), None)]
+    hand_scenes.write_results(str(tmp_path), table)
+    written = (tmp_path / "hand_scenes.md").read_text()
+    assert "| room | 20.0 | 18.0 | 10.0 | 8.0 |" in written
+    with open(tmp_path / "hand_scenes.csv") as f:
+        floors = {(r["scene"], r["estimator"]): r["floor_hidden_translation"]
+                  for r in csv.DictReader(f)}
+    assert floors[("carry", "pf")] == "0.018" and floors[("pass", "opf")] == ""
+    hand_scenes.write_results(str(tmp_path), table[1:])  # no carry: no floor table
+    assert "floor [mm]" not in (tmp_path / "hand_scenes.md").read_text()
