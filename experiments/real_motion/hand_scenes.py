@@ -18,8 +18,8 @@ Occlusion comes from the rendered geometry; the truth is the scene's. Each scene
 experiment file and run by `opf run` with every estimator; the table gives, per scene and
 estimator, the hidden object's error while hidden (the main estimate's, and for the OPF the
 hypothesis nearest the truth), and how often the OPF's main hypothesis, and its most probable
-one, was the right one when it was seen again. Under it, each carry's floor: what the camera lets
-any estimator reach under the OPF's rules (carry_floor).
+one, was the right one when it was seen again. Under it, each carry's floor: the error left to an
+estimator that waits for the camera's plain evidence (carry_floor).
 
 Writes the scenes and their runs into OUT_DIR, with hand_scenes.csv (tidy) and hand_scenes.md. A
 scene that no window of its recording fits from --window-start on is not run: it is named, with
@@ -290,12 +290,14 @@ def plate_covers(place, hand, yaw):
 
 
 def carry_floor(frames_csv, target="cube", hand="hand"):
-    """What the camera lets any estimator reach in a carry, under the OPF's rules (`left` is the
-    prior; a hypothesis changes only on evidence): the mean error over the target's hidden frames
-    [m] of an estimator that knows where each hypothesis puts it and takes the evidence the first
-    frame it shows. It says `left` until the target moves and the place it left is out from under
-    the plate (seen empty), then `carried` at the target's place on the hand, until the target is
-    seen again: after a put-down nothing the camera shows moves it off the hand. Returns (floor,
+    """The error left in a carry to an estimator that waits for the camera's plain evidence, under
+    the OPF's rules (`left` is the prior; a hypothesis changes only on evidence): the mean error
+    over the target's hidden frames [m] of one that knows where each hypothesis puts it and takes
+    the evidence the first frame it is plain. It says `left` until the target moves and the centre
+    of the place it left is out from under the plate (seen empty), then `carried` at the target's
+    place on the hand, until the target is seen again: after a put-down nothing the camera shows
+    moves it off the hand. (Evidence read sooner, from a place at the plate's edge, can beat it,
+    or mislead in a pass-over.) Returns (floor,
     the pick-up's share: `left` while the target moves, the put-down's share: `carried` while it
     stays), each over every seed's hidden frames of the OPF's run."""
     truth = {}  # (seed, frame) -> {object: (position, yaw about the vertical, visible)}
@@ -423,7 +425,8 @@ def build_scenes(recordings, start, count=None):
 def run_scene(args, experiment, text, target, carriers=None, out=None):
     """Writes the experiment file into `out` (args.out by default), runs every estimator on it
     and returns the target's hidden errors (hidden_errors), the OPF's reveals (reveals) and, for
-    a carry, what the camera lets any estimator reach (carry_floor; None otherwise)."""
+    a carry, the error left to an estimator that waits for plain evidence (carry_floor; None
+    otherwise)."""
     out = out or args.out
     os.makedirs(out, exist_ok=True)
     scene = os.path.join(out, f"{experiment}.yaml")
@@ -506,9 +509,9 @@ def floor_table(table):
         return ""
     return ("\nThe carries' floor [mm]: the main estimate's error while hidden for an estimator "
             "that knows where each hypothesis puts the cube and takes the camera's evidence the "
-            "first frame it shows: `left` until the place it left is out from under the plate, "
-            "then carried, also after a put-down until the cube is seen (pick-up and put-down: "
-            "their shares of the floor).\n\n"
+            "first frame it is plain: `left` until the centre of the place it left is out from "
+            "under the plate, then carried, also after a put-down until the cube is seen (pick-up "
+            "and put-down: their shares of the floor).\n\n"
             "| recording | opf | floor | pick-up | put-down |\n|---|---|---|---|---|\n" +
             "".join(f"| {name} | {opf * 1000:.1f} | {floor[0] * 1000:.1f} | "
                     f"{floor[1] * 1000:.1f} | {floor[2] * 1000:.1f} |\n"

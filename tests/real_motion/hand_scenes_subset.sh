@@ -5,8 +5,8 @@
 # within a fifth of the PF's error, and in the cups game the ball under cup B likewise; in the
 # pass-over it leaves the cube where it was, within 2 mm of the PF's error; and at every reveal
 # its main hypothesis is the right one (carried, by cup B or its hand in the cups game; left), and
-# its most probable one too. The carry's floor (what the camera lets any estimator reach) is
-# above zero and below the OPF's error, and only the carry has one.
+# its most probable one too. The carry's floor (the error left to an estimator waiting for plain
+# evidence) is above zero and below the OPF's error, and only the carry has one.
 # Usage: hand_scenes_subset.sh REPO OPF WORK_DIR
 set -euo pipefail
 repo="$1" opf="$2" work="$3"
@@ -33,5 +33,6 @@ for r in rows:
         assert r["most_probable_right_at_reveal"] == r["reveals"], r
 print("hand scenes subset: " + "; ".join(
     f"{scene} opf {1000 * error[scene, 'opf']:.1f} mm, pf {1000 * error[scene, 'pf']:.1f} mm"
-    for scene in ("carry", "pass", "cups")) + f"; carry floor {1000 * float(floor['carry']):.1f} mm")
+    for scene in ("carry", "pass", "cups")) +
+    f"; carry floor {1000 * float(floor['carry']):.1f} mm")
 PY
