@@ -266,13 +266,18 @@ def is_right(row, moved, carriers):
     return mode == "left"
 
 
+def yaw_turn(yaw):
+    """The rotation by `yaw` (rad) about the vertical."""
+    c, s = np.cos(yaw), np.sin(yaw)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
 def plate_covers(place, hand, yaw):
     """Whether the hand's plate (PLATE, centred at `hand`, turned by `yaw` about the vertical)
     stands on the line of sight from `place` to the camera: the segment between them, in the
     plate's frame, crosses its box (the slab test)."""
     camera = np.array([WORKSPACE[0], WORKSPACE[1], CAMERA_HEIGHT])
-    c, s = np.cos(yaw), np.sin(yaw)
-    into_plate = np.array([[c, s, 0.0], [-s, c, 0.0], [0.0, 0.0, 1.0]])
+    into_plate = yaw_turn(yaw).T
     start = into_plate @ (np.asarray(place, float) - hand)
     along = into_plate @ (camera - hand) - start
     half = np.array(PLATE) / 2
@@ -314,8 +319,7 @@ def carry_floor(frames_csv, target="cube", hand="hand"):
     for (seed, _), objects in sorted(truth.items()):
         cube, _, seen = objects[target]
         centre, yaw, _ = objects[hand]
-        turn = np.array([[np.cos(yaw), -np.sin(yaw), 0.0], [np.sin(yaw), np.cos(yaw), 0.0],
-                         [0.0, 0.0, 1.0]])
+        turn = yaw_turn(yaw)
         if seed != previous_seed or seen:  # a seed's start or a sighting: left where it is seen
             previous_seed, rest, previous, offset, dismissed = seed, cube, cube, None, False
         if np.linalg.norm(cube - previous) > 1e-6:  # it moves: on the hand, at this offset
@@ -449,7 +453,7 @@ def reveal_totals(table):
     """The line under the table: per scene kind, at how many of its reveals the OPF's most
     probable hypothesis was the right one ("" for no rows)."""
     counts = {}
-    for _, kind, _, (_, likeliest, total), *_ in table:
+    for _, kind, _, (_, likeliest, total), _ in table:
         right, all_ = counts.get(kind, (0, 0))
         counts[kind] = (right + likeliest, all_ + total)
     if not counts:
@@ -462,15 +466,14 @@ def reveal_totals(table):
 def write_results(out, table, skipped=()):
     """hand_scenes.csv (tidy) and hand_scenes.md (the table, the carries' floor, and the scenes not
     run), the tables also printed. Each row of `table` is (recording, scene, hidden_errors,
-    reveals[, carry_floor or None])."""
+    reveals, carry_floor or None)."""
     estimators = ESTIMATORS.split(",")
     with open(os.path.join(out, "hand_scenes.csv"), "w", newline="") as f:
         writer = csv.writer(f, lineterminator="\n")
         writer.writerow(["recording", "scene", "estimator", "hidden_frames", "hidden_translation",
                          "nearest_hidden_translation", "right_at_reveal",
                          "most_probable_right_at_reveal", "reveals", "floor_hidden_translation"])
-        for name, kind, errors, (right, likeliest, total), *floor in table:
-            floor = floor[0] if floor else None
+        for name, kind, errors, (right, likeliest, total), floor in table:
             for e in estimators:
                 main_error, nearest, frames = errors[e]
                 revealed = [right, likeliest, total] if e == "opf" else ["", "", ""]
@@ -479,7 +482,7 @@ def write_results(out, table, skipped=()):
     lines = ["| recording | scene | hidden frames | " + " | ".join(estimators) +
              " | opf: nearest hypothesis | opf: right at reveal, main | most probable |",
              "|---|---|---|" + "---|" * (len(estimators) + 3)]
-    for name, kind, errors, (right, likeliest, total), *_ in table:
+    for name, kind, errors, (right, likeliest, total), _ in table:
         cells = [f"{errors[e][0] * 1000:.1f}" for e in estimators]
         lines.append(f"| {name} | {kind} | {errors['opf'][2]} | " + " | ".join(cells) +
                      f" | {errors['opf'][1] * 1000:.1f} | {right}/{total} | "
@@ -503,8 +506,8 @@ def write_results(out, table, skipped=()):
 def floor_table(table):
     """The carries' floor (carry_floor) beside the OPF's main estimate, in hand_scenes.md ("" for
     no carry)."""
-    rows = [(name, errors["opf"][0], floor[0]) for name, _, errors, _, *floor in table
-            if floor and floor[0] is not None]
+    rows = [(name, errors["opf"][0], floor) for name, _, errors, _, floor in table
+            if floor is not None]
     if not rows:
         return ""
     return ("\nThe carries' floor [mm]: the main estimate's error while hidden for an estimator "

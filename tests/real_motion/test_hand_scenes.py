@@ -22,12 +22,12 @@ FIELDS = ["frame", "object", "estimator", "seed", "hypothesis", "visible", "mode
           "true_x", "true_y"]
 
 
-def write_frames(path, rows):
+def write_frames(path, rows, fields=FIELDS):
     with open(path, "w", newline="") as f:
-        writer = csv.DictWriter(f, FIELDS)
+        writer = csv.DictWriter(f, fields)
         writer.writeheader()
         for r in rows:
-            writer.writerow(dict(zip(FIELDS, r)))
+            writer.writerow(dict(zip(fields, r)))
 
 
 def test_each_reveal_is_judged_by_whether_the_cube_moved(tmp_path):
@@ -208,8 +208,8 @@ def test_the_unseen_scenes_leave_out_what_was_run_already(monkeypatch):
         (f"still@{start:g}", kind) for start in (2.0, 6.0, 12.0) for kind in kinds]
     assert all("still.csv" in why for _, _, why in skipped)
     # The table's line under it: the most probable hypothesis right at reveal, per scene kind.
-    table = [("room@6", "carry", {}, (5, 5, 5)), ("room@6", "pass", {}, (4, 3, 5)),
-             ("flight@2", "pass", {}, (5, 5, 5))]
+    table = [("room@6", "carry", {}, (5, 5, 5), None), ("room@6", "pass", {}, (4, 3, 5), None),
+             ("flight@2", "pass", {}, (5, 5, 5), None)]
     assert hand_scenes.reveal_totals(table) == (
         "\nThe most probable hypothesis right at reveal: carry 5 of 5; pass 8 of 10.\n")
     assert hand_scenes.reveal_totals([]) == ""
@@ -287,10 +287,7 @@ def test_the_carry_floor_counts_a_pick_up_until_the_place_is_seen_and_a_put_down
         rows.append([frame, "cube", "opf", 0, 1, seen, cx + cube_x, cy, 0.01, 0.0, 1.0])
         rows.append([frame, "cube", "pf", 0, 0, seen, cx + 0.5, cy, 0.01, 0.0, 1.0])
     path = tmp_path / "frames.csv"
-    with open(path, "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(FLOOR_FIELDS)
-        writer.writerows(rows)
+    write_frames(path, rows, FLOOR_FIELDS)
     floor, pick_up, put_down = hand_scenes.carry_floor(path)
     # Five hidden frames: 0.05 m in the pick-up, 0.04 m in the put-down.
     assert pick_up == pytest.approx(0.05 / 5, abs=1e-9)
