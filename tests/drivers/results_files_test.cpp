@@ -1,4 +1,5 @@
 #include "drivers/results_files.h"
+#include "io/scratch_directory.h"
 
 #include <gtest/gtest.h>
 
@@ -55,7 +56,7 @@ TEST(ResultsFiles, TheTableAndSummaryGiveTheSampleStandardDeviation) {
   EXPECT_NE(text.find("  opf        2.50000 +- 1.29e+00 "), std::string::npos) << text;
   EXPECT_EQ(text.find("seeds"), text.rfind("seeds"));  // said once
 
-  const auto path = std::filesystem::temp_directory_path() / "opf_results_files_summary.json";
+  const auto path = scratch_directory("opf_results_files") / "summary.json";
   write_summary_json(path, {x});
   std::ifstream in(path);
   std::stringstream json;

@@ -1,6 +1,7 @@
 // The ASL CSV (EuRoC's and TUM VI's ground truth and motion capture): read positionally, times in
 // nanoseconds, the quaternion w first, further columns and '#' lines skipped; one object.
 
+#include "io/scratch_directory.h"
 #include "opf/core/pose_conversion.h"
 #include "opf/io/input_error.h"
 #include "opf/io/log_format_detection.h"
@@ -30,8 +31,7 @@ const std::string kEurocGroundTruth =
     "-0.029272,0.033992,0.804594,-0.003172,0.021267,0.078502,-0.025266,0.136696,0.075593\n";
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "opf_asl_log_test";
-  fs::create_directories(dir);
+  const fs::path dir = scratch_directory("opf_asl_log_test");
   std::ofstream(dir / name) << text;
   return dir / name;
 }

@@ -2,6 +2,7 @@
 // its centre in the camera's frame with its extents, its track id the object, frame k at k / rate,
 // DontCare regions skipped.
 
+#include "io/scratch_directory.h"
 #include "opf/core/pose_conversion.h"
 #include "opf/io/input_error.h"
 #include "opf/io/log_format_detection.h"
@@ -31,8 +32,7 @@ const std::string kLabels =
     "1.766774 13.581085 -2.121565 0.93\n";
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "opf_kitti_tracking_log_test";
-  fs::create_directories(dir);
+  const fs::path dir = scratch_directory("opf_kitti_tracking_log_test");
   std::ofstream(dir / name) << text;
   return dir / name;
 }

@@ -2,6 +2,7 @@
 // caller's names, and what a file's format implies.
 
 #include "opf/io/log_read_arguments.h"
+#include "io/scratch_directory.h"
 
 #include <gtest/gtest.h>
 
@@ -83,7 +84,7 @@ TEST(LogReadArguments, AnAslFileIsOneObjectNamedAfterItTimedInNanoseconds) {
 }
 
 TEST(LogReadArguments, AMotChallengeFileTakesItsSequencesFrameRate) {
-  const fs::path sequence = fs::temp_directory_path() / "opf_log_read_arguments" / "MOT17-02";
+  const fs::path sequence = scratch_directory("opf_log_read_arguments") / "MOT17-02";
   fs::create_directories(sequence / "gt");
   std::ofstream(sequence / "seqinfo.ini") << "[Sequence]\r\nframeRate=14\r\n";
   LogArguments boxes;
