@@ -338,7 +338,7 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool 
                           stated_radius(ensemble, e.object)});
     candidate_estimates.push_back(&e);
   }
-  const TranslationMoments own = h.filter.translation_moments();
+  TranslationMoments own = h.filter.translation_moments();
   const OccluderChoice choice =
       choose_occluders(own.mean, own.covariance, candidates, options_.occluder);
   if (!choice.nearest) return false;
@@ -355,6 +355,9 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool 
   // The occluder's estimate is the last frame's, when this object was still seen.
   hiding_radius_ = hiding_radius(own.mean, candidates[k0].mean, options_.occluder);
   place_covariance_ = own.covariance;
+  // Still, it is left or carried from its place (the measured hiding radius above stays the offset
+  // between the two particle filters' estimates the ensemble held when it was last seen).
+  if (!beside_own_motion) own.mean = move_to_bank_place(h.filter, own.mean);
   const double carried_share = with_left ? 1.0 - kLeftPrior : 1.0;
   // The others copy the filter as it is at onset, before hypothesis 0 moves.
   const std::optional<PoseParticleFilter> at_onset =
@@ -386,6 +389,15 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool 
     most_probable_first();
   }
   return true;
+}
+
+Eigen::Vector3d ObjectPermanenceFilter::move_to_bank_place(PoseParticleFilter& filter,
+                                                           const Eigen::Vector3d& mean) const {
+  if (options_.dynamics.predictor != DynamicsPredictor::kBank || !translation_bank_.initialised())
+    return mean;
+  const Eigen::Vector3d place = translation_bank_.predict(0.0).mean();
+  filter.shift(place - mean, Eigen::Quaterniond::Identity());
+  return place;
 }
 
 void ObjectPermanenceFilter::keep_hypothesis_explaining(const Eigen::Vector3d& position) {

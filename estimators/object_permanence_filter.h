@@ -73,6 +73,11 @@ class ObjectPermanenceFilter final : public Estimator {
   /// hypothesis keeps the motion it has (a moving object's) in place of `left`, and every
   /// plausible occluder carries a further one.
   bool start_occluders(const EnsembleView& ensemble, bool beside_own_motion);
+  /// Moves `filter`'s particles, their mean at `mean`, to the still object's place, and returns
+  /// it: the translation bank's filtered position at the last detection, whose constant-position
+  /// members average the detections where the particles follow each one. With the paper's
+  /// predictor (no bank), `mean` stays.
+  Eigen::Vector3d move_to_bank_place(PoseParticleFilter& filter, const Eigen::Vector3d& mean) const;
   VirtualMeasurementMotion::Settings virtual_measurement_settings() const;
   /// The random walk, after a drift by the banks' velocity (one pass).
   void predict_with_bank_velocity(Hypothesis& hypothesis, double dt);

@@ -46,6 +46,21 @@ double horizontal_distance(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
   return (d - up * up.dot(d)).norm();
 }
 
+// The time in [from, to] at which `track` passes nearest `place` horizontally, to a hundredth of
+// the span: a cover's closest approach read from its smoothed track, where the least distance among
+// its noisy detections would pick one whose noise points at the object.
+double closest_approach(const TrajectoryModel& track, double from, double to,
+                        const Eigen::Vector3d& place, const Eigen::Vector3d& up) {
+  double at = from;
+  double least = horizontal_distance(track.position(from), place, up);
+  for (int k = 1; k <= 100; ++k) {
+    const double t = from + (to - from) * k / 100;
+    const double d = horizontal_distance(track.position(t), place, up);
+    if (d < least) least = d, at = t;
+  }
+  return at;
+}
+
 }  // namespace
 
 OccluderCarry::OccluderCarry(const Settings& settings, const OccluderOptions& options,
@@ -71,9 +86,11 @@ OccluderCarry::OccluderCarry(const Settings& settings, const OccluderOptions& op
   waits_ = wait;
   at_offset_ = options_.keep_offset || wait;
   closest_distance_ = horizontal_distance(reference.position, position_at_onset_, up_);
+  start_time_ = ensemble.frame.t;
+  if (ensemble.frame.find(occluder_)) record_around_start(start_time_, reference.position);
 }
 
-bool OccluderCarry::departed(const Eigen::Vector3d& position,
+bool OccluderCarry::departed(double t, const Eigen::Vector3d& position,
                              const Eigen::Quaterniond& orientation) {
   // Still closing in over the object: it stays where it was covered, and the carry will start
   // from the occluder's closest approach. Read from its measurements: its filtered estimate lags a
@@ -81,6 +98,8 @@ bool OccluderCarry::departed(const Eigen::Vector3d& position,
   const double d = horizontal_distance(position, position_at_onset_, up_);
   if (d <= closest_distance_) {
     closest_distance_ = d;
+    start_time_ = t;
+    start_fitted_ = false;
     occluder_position_at_onset_ = last_carrier_position_ = position;
     occluder_orientation_at_onset_ = last_carrier_orientation_ = orientation;
   }
@@ -91,6 +110,33 @@ bool OccluderCarry::departed(const Eigen::Vector3d& position,
   const bool moved =
       horizontal_distance(position, occluder_position_at_onset_, up_) > options_.departure_margin;
   return receding && moved;
+}
+
+void OccluderCarry::record_around_start(double t, const Eigen::Vector3d& detected_position) {
+  // Until the window after the start is complete; a frame counts once (the onset's comes twice).
+  if (t > start_time_ + speed_window_ || (!around_start_.empty() && t <= around_start_.back().t))
+    return;
+  around_start_.push_back({.t = t, .position = detected_position});
+  std::erase_if(around_start_,
+                [&](const TrajectorySample& s) { return s.t < start_time_ - speed_window_; });
+  start_fitted_ = false;
+}
+
+void OccluderCarry::fit_start() {
+  start_fitted_ = true;
+  if (around_start_.size() < 3) return;  // the detection stands
+  TrajectoryFitOptions quadratic;
+  quadratic.translation_order = 2;
+  quadratic.rotation_order = 0;
+  try {
+    const TrajectoryModel track = fit_trajectory(around_start_, quadratic);
+    const double at = waits_ ? closest_approach(track, around_start_.front().t,
+                                                around_start_.back().t, position_at_onset_, up_)
+                             : start_time_;
+    occluder_position_at_onset_ = track.position(at);
+  } catch (const std::exception&) {
+    // No usable fit: the detection stands.
+  }
 }
 
 double OccluderCarry::speed(double t, const Eigen::Vector3d& position) {
@@ -116,7 +162,10 @@ std::optional<VirtualMeasurementMotion::Measurement> OccluderCarry::measure(
   // Judged afresh every frame: a cover that comes closer again than where it seemed to depart
   // (its detection's jitter) is still closing in, and the carry restarts from its new closest
   // approach.
-  if (waits_ && !departed(occluder.position, occluder.orientation)) return std::nullopt;
+  const bool waiting = waits_ && !departed(t, occluder.position, occluder.orientation);
+  if (occluder_detection) record_around_start(t, occluder.position);
+  if (waiting) return std::nullopt;
+  if (!start_fitted_) fit_start();
   const Eigen::Quaterniond carried =
       occluder.orientation * occluder_orientation_at_onset_.conjugate();
   Measurement z;

@@ -5,12 +5,14 @@
 // from its closest approach at that offset; one above it (a hand, a lifted tray) is followed from
 // onset. The choice of occluder is occluder_selection.h's.
 
+#include "opf/fit/trajectory_fit.h"
 #include "opf/permanence/hidden_motion.h"
 #include "opf/permanence/occluder_selection.h"
 
 #include <deque>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace opf {
 
@@ -34,8 +36,15 @@ class OccluderCarry final : public VirtualMeasurementMotion {
  private:
   std::optional<Measurement> measure(double t, const EnsembleView& ensemble) override;
   /// Whether the carry has begun (a cover closing in is waited for until it departs).
-  bool departed(const Eigen::Vector3d& occluder_position, const Eigen::Quaterniond& orientation);
+  bool departed(double t, const Eigen::Vector3d& occluder_position,
+                const Eigen::Quaterniond& orientation);
   double speed(double t, const Eigen::Vector3d& position);
+  /// Adds the occluder's detected position at t to those around the carry's start.
+  void record_around_start(double t, const Eigen::Vector3d& detected_position);
+  /// Where the occluder was when the carry started, from those detections: at the start, or for a
+  /// cover at the fitted track's closest approach. Fitted once the carry runs (not while a cover
+  /// closes in, which moves the start), again after each new detection in the window.
+  void fit_start();
 
   OccluderOptions options_;
   bool stated_noise_;    ///< the carrier's partial views read as such
@@ -57,6 +66,12 @@ class OccluderCarry final : public VirtualMeasurementMotion {
   Eigen::Quaterniond last_carrier_orientation_;
   // Recent (t, position) of the occluder's estimate, spanning the speed window.
   std::deque<std::pair<double, Eigen::Vector3d>> carrier_track_;
+  // When the carry starts, and the occluder's detections within the speed window either side:
+  // where the occluder was then is their quadratic fit (a local polynomial smoother), since one
+  // detection's noise would offset the object for the whole carry.
+  double start_time_ = 0;
+  std::vector<TrajectorySample> around_start_;
+  bool start_fitted_ = false;
 };
 
 }  // namespace opf

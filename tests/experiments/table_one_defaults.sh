@@ -2,7 +2,7 @@
 # Table I and the baseball throw with the toolkit's defaults (the embedded experiment files, 5
 # runs each, 5000 + 5000 particles), as the main job runs them with --seed 1 and with three more
 # seeds. Each seed's mean translation error of the OPF is bounded: baseball within the paper's
-# 0.01 m; general_op (paper 0.0114 m) within 0.7x of the paper's (measured 0.45-0.52x over these
+# 0.01 m; general_op (paper 0.0114 m) within 0.7x of the paper's (measured 0.42-0.48x over these
 # seeds; 1.17-1.18x with the detections' stated extra noise ignored, opf.detector_noise: false);
 # sugar_drop (paper 0.0213 m, the cube landing in the moving mug) within 0.5x (measured
 # 0.38-0.44x; 1.22-3.28x with it ignored), with the cube in the mug in at least 4 of 5 runs
