@@ -218,7 +218,7 @@ TEST(ObjectPermanenceFilter, KeepOffsetPutsTheBallUnderTheMugNotAtItsCentre) {
   // The ball's offset from the mug at its closest approach (3 cm down) is kept. What remains is
   // the offset's error: the ball's place (its bank's, ~0.3 mm per axis) against the mug's
   // position then, fitted to its detections around it (~1 mm per axis, more where the mug turns
-  // from closing in to carrying), and the filtered final measurements: 0.6-7.6 mm over eight
+  // from closing in to carrying), and the filtered final measurements: 1.1-8.1 mm over eight
   // noise draws (one detection and the particles' mean instead: 3.2-10.2 mm).
   EXPECT_LT(error_at(opf, scene, "ball", 149), 0.0085);
 }
@@ -1275,10 +1275,9 @@ TEST(ObjectPermanenceFilter, PassedOverTheBallIsLeftAndPickedUpItIsCarried) {
   // Passed over: nothing says otherwise while the hand covers the place, and the ball is seen
   // there as soon as it does not. Left throughout, at its place (its bank's filtered position,
   // ~0.3 mm per axis) as the hidden cloud's random walk moves its mean (2.0 mm at most here,
-  // 3 mm allowed), and the more probable by the prior
-  // odds until the last hidden frame: there the ball is on the hand's edge (8.0 cm off its
-  // centre), and not seen there, carried is the more probable (0.6), short of the Bayes factor
-  // the main estimate needs to change hands.
+  // 3 mm allowed), and the more probable by the prior odds until the last hidden frame: there
+  // the ball is on the hand's edge (8.0 cm off its centre), and not seen there, carried is the
+  // more probable (0.6), short of the Bayes factor the main estimate needs to change hands.
   for (int k = passed.first; k <= passed.last; ++k) {
     ASSERT_EQ(over.estimates[k].at("ball").mode, EstimateMode::kLeft) << k;
     EXPECT_LT(error_at(over, pass, "ball", k), 0.003) << k;
