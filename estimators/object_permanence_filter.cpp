@@ -338,17 +338,11 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool 
                           stated_radius(ensemble, e.object)});
     candidate_estimates.push_back(&e);
   }
-  TranslationMoments own = h.filter.translation_moments();
+  const TranslationMoments own = h.filter.translation_moments();
   const OccluderChoice choice =
       choose_occluders(own.mean, own.covariance, candidates, options_.occluder);
   if (!choice.nearest) return false;
 
-  const Eigen::Quaterniond orientation = h.filter.rotation_moments().mean;
-  const auto carry = [&](std::size_t k) {
-    return std::make_unique<OccluderCarry>(virtual_measurement_settings(), options_.occluder,
-                                           options_.dynamics.up, own.mean, orientation,
-                                           candidates[k].object, *candidate_estimates[k], ensemble);
-  };
   const bool with_left = options_.occluder.gate;
   const std::vector<WeightedOccluder> occluders = hypothesis_occluders(choice, with_left);
   const std::size_t k0 = occluders[0].candidate;
@@ -357,7 +351,14 @@ bool ObjectPermanenceFilter::start_occluders(const EnsembleView& ensemble, bool 
   place_covariance_ = own.covariance;
   // Still, it is left or carried from its place (the measured hiding radius above stays the offset
   // between the two particle filters' estimates the ensemble held when it was last seen).
-  if (!beside_own_motion) own.mean = move_to_bank_place(h.filter, own.mean);
+  const Eigen::Quaterniond orientation = h.filter.rotation_moments().mean;
+  const Eigen::Vector3d place =
+      beside_own_motion ? own.mean : move_to_bank_place(h.filter, own.mean);
+  const auto carry = [&](std::size_t k) {
+    return std::make_unique<OccluderCarry>(virtual_measurement_settings(), options_.occluder,
+                                           options_.dynamics.up, place, orientation,
+                                           candidates[k].object, *candidate_estimates[k], ensemble);
+  };
   const double carried_share = with_left ? 1.0 - kLeftPrior : 1.0;
   // The others copy the filter as it is at onset, before hypothesis 0 moves.
   const std::optional<PoseParticleFilter> at_onset =
