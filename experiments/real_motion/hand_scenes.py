@@ -29,8 +29,11 @@ With --unseen it runs instead the scenes on motion they were not built on: every
 EuRoC flights' paths (MH_01, V1_01) as the hands', from 2, 6 and 12 s, leaving out any scene
 identical to a shipped one or to one already run; rows are named recording@start.
 
+With --unsized the detector states no body's size (the experiments' `state_sizes: false`), as
+most pose detectors do: the occluder module then measures how far each cover reaches.
+
 Usage: hand_scenes.py OUT_DIR [--opf build/bin/opf] [--seeds 5] [--recordings N]
-                       [--window-start S | --unseen]
+                       [--window-start S | --unseen] [--unsized]
 """
 
 import argparse
@@ -161,6 +164,14 @@ def scene_header(comment, experiment, frames, target, table_z):
             "  - name: table", "    shape: box", "    size: [1.4, 1.4, 0.02]",
             "    colour: [150, 150, 150]", "    tracked: false",
             f"    waypoints: [{{t: 0, position: [0.55, 0.0, {table_z}]}}]"]
+
+
+def without_sizes(text):
+    """The experiment file `text` with a detector that states no body's size: its measurement
+    section says `state_sizes: false`."""
+    if "\nmeasurement:\n" not in text:
+        raise ValueError("the experiment file has no measurement section")
+    return text.replace("\nmeasurement:\n", "\nmeasurement:\n  state_sizes: false\n", 1)
 
 
 def scene_yaml(name, kind, times, x, y, yaw):
@@ -352,6 +363,9 @@ def main():
                         help="the scenes on motion the shipped ones were not built on: the rooms "
                         "and two EuRoC flights as the hands' paths, from 2, 6 and 12 s, any "
                         "scene already run left out (rows recording@start)")
+    parser.add_argument("--unsized", action="store_true",
+                        help="a detector that states no body's size (the pose alone): the "
+                        "occluder module measures how far each cover reaches")
     args = parser.parse_args()
     if args.seeds < 1:
         parser.error(f"--seeds: {args.seeds} is not a number of seeds >= 1")
@@ -378,6 +392,7 @@ def main():
         sys.exit(f"hand_scenes: no scene can be built from {start:g} s into the recordings")
     table = []
     for name, begins, kind, text, target, carriers in built:
+        text = without_sizes(text) if args.unsized else text
         # Each start's scenes in a folder of their own: they share names.
         out = os.path.join(args.out, f"from_{begins:g}s") if args.unseen else args.out
         table.append((f"{name}@{begins:g}" if args.unseen else name, kind,

@@ -182,6 +182,7 @@ MeasurementSettings measurement_settings(YamlReader& measurement, const CameraSe
   measurement.require("min_area_pixels",
                       m.min_area_pixels <= static_cast<double>(camera.width) * camera.height,
                       "a pixel count up to the image's (640 x 480)");
+  measurement.get("state_sizes", m.state_sizes);
   return m;
 }
 

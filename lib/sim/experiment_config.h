@@ -43,6 +43,11 @@ struct MeasurementSettings {
   /// A largest blob smaller than this many pixels counts as no detection (the colour detector's
   /// ColourBlobDetectorOptions::min_area_pixels).
   double min_area_pixels = 30.0;
+  /// Whether each detection states the body's silhouette radius and bounding box
+  /// (Detection::radius, Detection::box), as a detector that knows the objects' models does;
+  /// false: the pose alone, as from most pose detectors, and the occluder module measures how far
+  /// a cover reaches (docs/occluder.md).
+  bool state_sizes = true;
 };
 
 /// A robot end-effector driven in closed loop by the cautious tracking controller (paper Eq. 16)

@@ -24,8 +24,9 @@ Frame noisy_measurement(const CameraFrame& camera, const SceneSnapshot& truth,
     const Eigen::Quaterniond orientation =
         truth.poses[index].orientation *
         so3::exp(settings.orientation_noise * Eigen::Vector3d(draws[3], draws[4], draws[5]));
-    frame.detections.push_back(
-        {s.object, make_pose(position, orientation), s.partial_view_offset, s.radius, s.box});
+    frame.detections.push_back({s.object, make_pose(position, orientation), s.partial_view_offset,
+                                settings.state_sizes ? s.radius : 0.0,
+                                settings.state_sizes ? s.box : Eigen::Vector3d::Zero()});
   }
   return frame;
 }

@@ -20,9 +20,9 @@ inline bool measured(const Sighting& s, const MeasurementSettings& settings) {
 /// Bodies whose sighting is undetected, or visible below settings.min_visible_fraction, are
 /// unobserved (absent from the frame). A partly covered body's detection states its partial view
 /// (Sighting::partial_view_offset) as its extra noise (Detection::extra_noise), and every detection
-/// its silhouette's radius (Sighting::radius, Detection::radius). Draws the same
-/// number of random numbers for every body and frame, seen or not, so one body's visibility never
-/// shifts another's noise.
+/// its silhouette's radius and box (Sighting::radius, ::box) unless settings.state_sizes is off.
+/// Draws the same number of random numbers for every body and frame, seen or not, so one body's
+/// visibility never shifts another's noise.
 Frame noisy_measurement(const CameraFrame& camera, const SceneSnapshot& truth,
                         const MeasurementSettings& settings, Random& noise);
 

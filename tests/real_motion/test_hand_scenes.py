@@ -225,6 +225,30 @@ def test_unseen_takes_its_own_starts_and_recordings(tmp_path):
                 "--recordings") in run.stderr
 
 
+def test_unsized_scenes_state_no_size_and_change_nothing_else(tmp_path):
+    (_, _, text, _, _), *_ = hand_scenes.build_scenes(hand_scenes.RECORDINGS, 2.0, 1)[0]
+    unsized = hand_scenes.without_sizes(text)
+    assert unsized.replace("  state_sizes: false\n", "", 1) == text
+    with pytest.raises(ValueError, match="no measurement section"):
+        hand_scenes.without_sizes("name: x\n")
+    # The detector of the file as written states no radius or box (the log has no such columns);
+    # as shipped, it states both.
+    opf = str(ROOT / "build" / "bin" / "opf")
+    for name, scene, stated in (("sized", text, True), ("unsized", unsized, False)):
+        path = tmp_path / f"{name}.yaml"
+        path.write_text(scene)
+        subprocess.run([opf, "run", str(path), "--estimators", "opf", "--seeds", "1",
+                        "--frames", "3", "--particles", "100", "--no-figures", "--quiet",
+                        "--measurements", "--out", str(tmp_path / name)], check=True,
+                       stdout=subprocess.DEVNULL)
+        (log,) = (tmp_path / name).glob("*_measurements_seed0.csv")
+        with open(log) as f:
+            rows = list(csv.DictReader(f))
+        assert rows
+        for r in rows:
+            assert (float(r.get("radius") or 0) > 0 and float(r.get("box_x") or 0) > 0) == stated
+
+
 def test_bad_arguments_are_refused_by_name(tmp_path):
     script = str(ROOT / "experiments" / "real_motion" / "hand_scenes.py")
     opf = str(ROOT / "build" / "bin" / "opf")

@@ -35,6 +35,7 @@ TEST(ExperimentConfig, ReadsAMinimalExperimentWithDefaults) {
   EXPECT_EQ(c.bodies[0].waypoints.size(), 2u);
   EXPECT_EQ(c.camera.position, Eigen::Vector3d(0.55, 0.0, 0.49));
   EXPECT_EQ(c.objects_of_interest, std::vector<std::string>{"ball"});
+  EXPECT_TRUE(c.measurement.state_sizes);
 }
 
 TEST(ExperimentConfig, TheBundledGeneralOpFollowsThePaper) {
@@ -97,6 +98,14 @@ InputError error_of(const std::string& yaml) {
   }
   ADD_FAILURE() << "no error for:\n" << yaml;
   return InputError("", 0, "", "");
+}
+
+TEST(ExperimentConfig, ADetectorMayStateNoSizes) {
+  EXPECT_FALSE(parse_experiment(kMinimal + "measurement: {state_sizes: false}\n", "tiny.yaml")
+                   .measurement.state_sizes);
+  const InputError e = error_of(kMinimal + "measurement:\n  state_sizes: 0.5\n");
+  EXPECT_EQ(e.field(), "measurement.state_sizes");
+  EXPECT_EQ(e.line(), 11u);
 }
 
 TEST(ExperimentConfig, ErrorsNameTheKeyAndLine) {

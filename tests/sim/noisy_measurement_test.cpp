@@ -55,6 +55,26 @@ TEST(NoisyMeasurement, EveryDetectionStatesItsSilhouettesRadius) {
   EXPECT_EQ(f.detections[1].radius, 0.045);
 }
 
+TEST(NoisyMeasurement, ADetectorThatStatesNoSizesGivesThePoseAndPartialViewAlone) {
+  CameraFrame camera{
+      1.0,
+      {{"ball", 0.5, true, {0.4, 0.0, 0.0}, 0.0125, 0.025, Eigen::Vector3d(0.05, 0.05, 0.05)}}};
+  MeasurementSettings settings;
+  settings.state_sizes = false;
+  Random sized_noise(1), unsized_noise(1);
+  const Frame sized = noisy_measurement(camera, two_bodies(), MeasurementSettings{}, sized_noise);
+  const Frame unsized = noisy_measurement(camera, two_bodies(), settings, unsized_noise);
+  ASSERT_EQ(sized.detections.size(), 1u);
+  ASSERT_EQ(unsized.detections.size(), 1u);
+  EXPECT_EQ(sized.detections[0].radius, 0.025);
+  EXPECT_EQ(sized.detections[0].box, Eigen::Vector3d(0.05, 0.05, 0.05));
+  EXPECT_EQ(unsized.detections[0].radius, 0.0);
+  EXPECT_EQ(unsized.detections[0].box, Eigen::Vector3d::Zero());
+  // The same draws: only the sizes differ.
+  EXPECT_EQ(unsized.detections[0].extra_noise, 0.0125);
+  EXPECT_EQ(unsized.detections[0].pose.asVectorVal(), sized.detections[0].pose.asVectorVal());
+}
+
 TEST(NoisyMeasurement, NoiseHasTheConfiguredSpread) {
   // Over many frames the position noise has std 2 mm per axis and the orientation noise 0.01 rad
   // per tangent axis around the truth: 5 standard errors of the variance estimate (sqrt(2/N)).
