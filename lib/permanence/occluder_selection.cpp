@@ -113,9 +113,15 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     }
     if (!std::isfinite(d)) continue;
     ++plausible;
-    if (options.gate)
-      weighted.push_back(
-          {d, {j, covering_probability(p * (c.mean - hidden_mean), hidden_sigma + sigma, reach)}});
+    if (options.gate) {
+      // A candidate of no stated size may reach anywhere up to `reach`, no extent more likely.
+      const Eigen::VectorXd across = p * (c.mean - hidden_mean);
+      const Eigen::MatrixXd spread = hidden_sigma + sigma;
+      weighted.push_back({d,
+                          {j, c.radius > 0.0 ? covering_probability(across, spread, c.radius)
+                                             : covering_probability_of_unknown_radius(
+                                                   across, spread, options.reach)}});
+    }
     if (d < best_d) {
       runner_up = best;
       runner_up_d = best_d;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 namespace opf {
@@ -16,16 +17,36 @@ double within_margin(double margin, double sigma) {
   return 0.5 * std::erfc(-margin / (sigma * std::sqrt(2.0)));
 }
 
+// The spread of `offset` along itself (along the first axis at a zero offset).
+double spread_along(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance) {
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(offset.size());
+  along(0) = 1.0;
+  if (offset.norm() > 0.0) along = offset / offset.norm();
+  return std::sqrt(std::max(along.dot(covariance * along), 1e-18));
+}
+
+// G(a) = a Phi(a) + phi(a), the antiderivative of Phi.
+double integrated_normal_cdf(double a) {
+  return a * 0.5 * std::erfc(-a / std::sqrt(2.0)) +
+         std::exp(-0.5 * a * a) * std::numbers::inv_sqrtpi / std::numbers::sqrt2;
+}
+
 }  // namespace
 
 double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance,
                             double radius) {
-  const double distance = offset.norm();
-  Eigen::VectorXd along = Eigen::VectorXd::Zero(offset.size());
-  along(0) = 1.0;
-  if (distance > 0.0) along = offset / distance;
-  const double sigma = std::sqrt(std::max(along.dot(covariance * along), 1e-18));
-  return within_margin(radius - distance, sigma);
+  return within_margin(radius - offset.norm(), spread_along(offset, covariance));
+}
+
+double covering_probability_of_unknown_radius(const Eigen::VectorXd& offset,
+                                              const Eigen::MatrixXd& covariance,
+                                              double max_radius) {
+  if (!(max_radius > 0.0)) return 0.0;
+  const double distance = offset.norm(), sigma = spread_along(offset, covariance);
+  return std::clamp(sigma / max_radius *
+                        (integrated_normal_cdf((max_radius - distance) / sigma) -
+                         integrated_normal_cdf(-distance / sigma)),
+                    0.0, 1.0);
 }
 
 namespace {

@@ -21,6 +21,13 @@ namespace opf {
 double covering_probability(const Eigen::VectorXd& offset, const Eigen::MatrixXd& covariance,
                             double radius);
 
+/// P(|x| <= rho) as covering_probability, for a radius rho unknown and uniform on
+/// [0, max_radius] (a cover whose size no detector states): the mean of Phi((rho - |m|) / sigma)
+/// over rho, (sigma / R) [G((R - |m|) / sigma) - G(-|m| / sigma)] with G(a) = a Phi(a) + phi(a),
+/// R the max_radius. A max_radius of 0: 0.
+double covering_probability_of_unknown_radius(const Eigen::VectorXd& offset,
+                                              const Eigen::MatrixXd& covariance, double max_radius);
+
 /// P(the place lies within a box's silhouette) for the box's centre at `offset` from the place
 /// +- `covariance` (their combined spread, m^2): the box (full extents `box`, m, in its own frame,
 /// turned by `orientation`) projected by `projection` onto the occlusion plane, a convex polygon;

@@ -1,11 +1,14 @@
 #include "opf/permanence/occluder_selection.h"
 
+#include "opf/permanence/place_visibility.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
 
 #include <limits>
+#include <numbers>
 #include <vector>
 
 namespace opf {
@@ -59,9 +62,11 @@ TEST(OccluderSelection, EpsilonOccDecidesBetweenOneAndTwo) {
 }
 
 // With the gate every plausible candidate is weighed by the probability that it hides the
-// object: its centre within reach (0.15 m) of the object's across the line of sight, the offset's
-// spread 1.4 cm (two 1 cm clouds). At 5 and 8 cm that is certain, at exactly 15 cm a half: 0.4,
-// 0.4 and 0.2 once normalised, nearest first; 0.4 m away the gate turns the candidate away.
+// object. These state no size: each may reach anywhere up to `reach` (0.15 m) across the line of
+// sight, no extent more likely, so a candidate 5 cm off covers the object with probability about
+// 1 - 5/15, one 8 cm off 1 - 8/15, one 15 cm off only by the offset's spread (1.4 cm: two 1 cm
+// clouds), (sigma / R) phi(0) = 0.038; normalised, nearest first. 0.4 m away the gate turns the
+// candidate away.
 TEST(OccluderSelection, EveryPlausibleCandidateIsWeighedByHowLikelyItHidesTheObject) {
   const std::vector<OccluderCandidate> candidates = {
       at("edge", 0.0, 0.15, 0.0), at("near", 0.05, 0.0, 0.03), at("far", 0.4, 0.0, 0.0),
@@ -71,14 +76,21 @@ TEST(OccluderSelection, EveryPlausibleCandidateIsWeighedByHowLikelyItHidesTheObj
   EXPECT_EQ(candidates[choice.weighted[0].candidate].object, "near");
   EXPECT_EQ(candidates[choice.weighted[1].candidate].object, "next");
   EXPECT_EQ(candidates[choice.weighted[2].candidate].object, "edge");
-  EXPECT_NEAR(choice.weighted[0].probability, 0.4, 1e-6);  // 8 cm: Phi(4.9) = 1 - 5e-7
-  EXPECT_NEAR(choice.weighted[1].probability, 0.4, 1e-6);
-  EXPECT_NEAR(choice.weighted[2].probability, 0.2, 1e-6);
-  // A floor of 25% leaves the two certain ones at a half each; at most one, the nearest alone.
+  const Eigen::Matrix2d spread = Eigen::Matrix2d::Identity() * 2e-4;
+  const auto covering = [&](double across) {
+    return covering_probability_of_unknown_radius(Eigen::Vector2d(across, 0), spread, 0.15);
+  };
+  const double near = covering(0.05), next = covering(0.08), edge = covering(0.15);
+  EXPECT_NEAR(near, 1.0 - 0.05 / 0.15, 1e-3);
+  EXPECT_NEAR(edge, std::sqrt(2e-4) / 0.15 * std::numbers::inv_sqrtpi / std::numbers::sqrt2, 1e-4);
+  EXPECT_NEAR(choice.weighted[0].probability, near / (near + next + edge), 1e-9);
+  EXPECT_NEAR(choice.weighted[1].probability, next / (near + next + edge), 1e-9);
+  EXPECT_NEAR(choice.weighted[2].probability, edge / (near + next + edge), 1e-9);
+  // A floor of 25% leaves the two nearer ones, renormalised; at most one, the nearest alone.
   const std::vector<WeightedOccluder> two = probable_occluders(choice, 0.25, 4);
   ASSERT_EQ(two.size(), 2u);
   EXPECT_NEAR(two[0].probability + two[1].probability, 1.0, 1e-12);
-  EXPECT_NEAR(two[1].probability, 0.5, 1e-6);
+  EXPECT_NEAR(two[1].probability, next / (near + next), 1e-9);
   const std::vector<WeightedOccluder> one = probable_occluders(choice, 0.0, 1);
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(candidates[one[0].candidate].object, "near");

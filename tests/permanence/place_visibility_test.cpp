@@ -26,6 +26,33 @@ TEST(PlaceVisibility, CoveringProbabilityIsPhiOfTheMarginOverTheSpreadAlongTheOf
   EXPECT_NEAR(covering_probability(Eigen::Vector2d::Zero(), spread, 0.01), phi(1.0), 1e-12);
 }
 
+// A cover of no stated size, its radius uniform on [0, R]: the mean of Phi((rho - |m|) / sigma)
+// over rho, here by the midpoint rule over 20000 radii. With no spread, the share of radii beyond
+// the offset, 1 - |m| / R.
+TEST(PlaceVisibility, AnUnknownRadiusCoversByTheShareOfRadiiThatReachThePlace) {
+  const Eigen::Matrix2d spread = Eigen::Vector2d(1e-4, 4e-4).asDiagonal();  // 1 cm along x, 2 on y
+  constexpr double kR = 0.15;
+  const auto by_midpoints = [&](const Eigen::Vector2d& offset) {
+    constexpr int kN = 20000;
+    double sum = 0.0;
+    for (int i = 0; i < kN; ++i) sum += covering_probability(offset, spread, (i + 0.5) * kR / kN);
+    return sum / kN;
+  };
+  for (const Eigen::Vector2d& offset :
+       {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(0.03, 0.0), Eigen::Vector2d(0.0, 0.1),
+        Eigen::Vector2d(0.15, 0.0), Eigen::Vector2d(0.2, 0.0)})
+    EXPECT_NEAR(covering_probability_of_unknown_radius(offset, spread, kR), by_midpoints(offset),
+                1e-7)
+        << offset.transpose();
+  const Eigen::Matrix2d none = Eigen::Matrix2d::Identity() * 1e-20;
+  EXPECT_NEAR(covering_probability_of_unknown_radius(Eigen::Vector2d(0.03, 0.0), none, kR), 0.8,
+              1e-9);
+  EXPECT_NEAR(covering_probability_of_unknown_radius(Eigen::Vector2d(0.0, 0.12), none, kR), 0.2,
+              1e-9);
+  EXPECT_EQ(covering_probability_of_unknown_radius(Eigen::Vector2d(0.2, 0.0), none, kR), 0.0);
+  EXPECT_EQ(covering_probability_of_unknown_radius(Eigen::Vector2d(0.0, 0.0), spread, 0.0), 0.0);
+}
+
 TEST(PlaceVisibility, APlaceIsSeenWhenNoTrackedObjectIsNearItsLineOfSight) {
   const OccluderOptions top_down;  // no camera: the line of sight is -z
   const auto seen = [&](const std::vector<ViewBlocker>& blockers) {
