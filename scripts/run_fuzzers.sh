@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Fuzzes the readers of user input with libFuzzer (clang, with AddressSanitizer and
 # UndefinedBehaviorSanitizer): the measurement log, the estimator settings file, the experiment
-# file, opf detect's segmentation spec and opf sweep's sweep file, each for SECONDS (default 60),
-# starting from tests/fuzz/corpus/<target>/ (the grown corpus goes to a scratch directory). A
-# crash stops the run; its input is kept as tests/fuzz/regressions/<target>/<crash file>
-# (replayed by the test suite from then on) and printed in hex, and the script exits 1.
+# file, opf detect's segmentation spec and opf sweep's sweep file, each for SECONDS (default 60)
+# of one core, two at a time, starting from tests/fuzz/corpus/<target>/ (the grown corpus goes to
+# a scratch directory). A crash fails the run; its input is kept as
+# tests/fuzz/regressions/<target>/<crash file> (replayed by the test suite from then on) and
+# printed in hex, and the script exits 1.
 #   bash scripts/run_fuzzers.sh [SECONDS]        (CI runs it after the tests)
 set -euo pipefail
 repo="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -20,10 +21,12 @@ if ! { cmake -S "$repo/fuzz" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ &
   grep -E "error|undefined reference" "$build/build.log" | head -n 20 >&2 || tail -n 40 "$build/build.log" >&2
   exit 1
 fi
-status=0
 # A sweep file names bundled experiments, read from the source tree's experiments/.
 export OPF_DATA_DIR="$repo"
-for target in measurement_log estimator_settings experiment_file segmentation_spec sweep_file; do
+# One target: SECONDS of fuzzing from its corpus; its verdict goes to $build/<target>.verdict, 0
+# for no crash.
+fuzz_target() {
+  local target="$1" scratch regressions log runs edges crash
   scratch="$(mktemp -d)"
   cp "$repo/tests/fuzz/corpus/$target/"* "$scratch/"
   regressions="$repo/tests/fuzz/regressions/$target"
@@ -32,15 +35,34 @@ for target in measurement_log estimator_settings experiment_file segmentation_sp
       -artifact_prefix="$regressions/" "$scratch" >"$log" 2>&1; then
     runs="$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')"
     edges="$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$')"
-    echo "fuzz $target: $runs inputs in ${seconds} s, $edges edges covered, no crash"
+    echo "fuzz $target: $runs inputs in ${seconds} s, $edges edges covered, no crash" \
+      >"$build/$target.verdict"
   else
-    status=1
-    echo "fuzz $target: CRASH; the input is kept in $regressions/ (commit it):" >&2
-    grep -E "ERROR|SUMMARY|runtime error|Test unit written" "$log" >&2 || tail -n 20 "$log" >&2
-    for crash in "$regressions"/crash-* "$regressions"/leak-* "$regressions"/timeout-*; do
-      [ -f "$crash" ] && { echo "  $crash:" >&2; od -An -tx1 "$crash" | head -n 20 >&2; }
-    done
+    {
+      echo "fuzz $target: CRASH; the input is kept in $regressions/ (commit it):"
+      grep -E "ERROR|SUMMARY|runtime error|Test unit written" "$log" || tail -n 20 "$log"
+      for crash in "$regressions"/crash-* "$regressions"/leak-* "$regressions"/timeout-*; do
+        [ -f "$crash" ] && { echo "  $crash:"; od -An -tx1 "$crash" | head -n 20; }
+      done
+    } >"$build/$target.verdict"
   fi
   rm -rf "$scratch"
+}
+# Two targets at a time, one per core: each still gets SECONDS of one core.
+targets=(measurement_log estimator_settings experiment_file segmentation_spec sweep_file)
+for target in "${targets[@]}"; do
+  rm -f "$build/$target.verdict"
+  while (($(jobs -rp | wc -l) >= 2)); do wait -n || true; done
+  fuzz_target "$target" &
+done
+wait
+status=0
+for target in "${targets[@]}"; do
+  if grep -q "no crash$" "$build/$target.verdict" 2>/dev/null; then
+    cat "$build/$target.verdict"
+  else
+    status=1
+    cat "$build/$target.verdict" >&2 2>/dev/null || echo "fuzz $target: no verdict" >&2
+  fi
 done
 exit "$status"

@@ -234,16 +234,22 @@ def hidden_errors(summary_json, experiment):
             for e, r in runs.items()}
 
 
-def reveals(frames_csv, target="cube", carriers=None):
-    """The OPF's reveals of the target: for each hidden span of every seed that ends in a
-    detection, whether the main hypothesis in its last hidden frame was the right one, and
-    whether the most probable one was: `carried` (by one of `carriers`, when given) if the target
-    moved more than 1 cm over the span (the truth), `left` otherwise. Returns (main right, most
-    probable right, reveals)."""
+def opf_rows(frames_csv):
+    """The OPF's rows of `opf run`'s frames CSV (every object, seed and hypothesis), read once
+    for both reveals and carry_floor."""
+    with open(frames_csv) as f:
+        return [r for r in csv.DictReader(f) if r["estimator"] == "opf"]
+
+
+def reveals(rows, target="cube", carriers=None):
+    """The OPF's reveals of the target (`rows`: opf_rows): for each hidden span of every seed
+    that ends in a detection, whether the main hypothesis in its last hidden frame was the right
+    one, and whether the most probable one was: `carried` (by one of `carriers`, when given) if
+    the target moved more than 1 cm over the span (the truth), `left` otherwise. Returns (main
+    right, most probable right, reveals)."""
     spans = {}  # seed -> list of [first row, last row] of the hidden spans, in frame order
     frames = {}  # (seed, frame) -> every hypothesis's row
-    with open(frames_csv) as f:
-        rows = [r for r in csv.DictReader(f) if r["object"] == target and r["estimator"] == "opf"]
+    rows = [r for r in rows if r["object"] == target]
     for r in rows:
         frames.setdefault((r["seed"], r["frame"]), []).append(r)
     right = likeliest_right = total = 0
@@ -305,7 +311,7 @@ def plate_covers(place, hand, yaw):
     return True
 
 
-def carry_floor(frames_csv, target="cube", hand="hand"):
+def carry_floor(rows, target="cube", hand="hand"):
     """The error left in a carry to an estimator that waits for the camera's plain evidence, under
     the OPF's rules (`left` is the prior; a hypothesis changes only on evidence): the mean error
     over the target's hidden frames [m] of one that knows where each hypothesis puts it and takes
@@ -315,15 +321,14 @@ def carry_floor(frames_csv, target="cube", hand="hand"):
     moves it off the hand. (Evidence read sooner, from a place at the plate's edge, can beat it,
     or mislead in a pass-over.) Returns (floor,
     the pick-up's share: `left` while the target moves, the put-down's share: `carried` while it
-    stays), each over every seed's hidden frames of the OPF's run."""
+    stays), each over every seed's hidden frames of the OPF's run (`rows`: opf_rows)."""
     truth = {}  # (seed, frame) -> {object: (position, yaw about the vertical, visible)}
-    with open(frames_csv) as f:
-        for r in csv.DictReader(f):
-            if r["estimator"] == "opf" and r["hypothesis"] == "0" and r["object"] in (target, hand):
-                position = np.array([float(r["true_x"]), float(r["true_y"]), float(r["true_z"])])
-                yaw = 2.0 * np.arctan2(float(r["true_qz"]), float(r["true_qw"]))
-                truth.setdefault((r["seed"], int(r["frame"])), {})[r["object"]] = (
-                    position, yaw, r["visible"] == "1")
+    for r in rows:
+        if r["hypothesis"] == "0" and r["object"] in (target, hand):
+            position = np.array([float(r["true_x"]), float(r["true_y"]), float(r["true_z"])])
+            yaw = 2.0 * np.arctan2(float(r["true_qz"]), float(r["true_qw"]))
+            truth.setdefault((r["seed"], int(r["frame"])), {})[r["object"]] = (
+                position, yaw, r["visible"] == "1")
     pick_up = put_down = 0.0
     hidden = 0
     previous_seed = rest = previous = offset = None
@@ -458,7 +463,7 @@ def run_scene(args, experiment, text, target, carriers=None, out=None):
     if done.returncode != 0:
         sys.exit(f"hand_scenes: {' '.join(command)} failed ({done.returncode}):\n"
                  f"{done.stderr.strip() or '(it wrote no message)'}")
-    frames = os.path.join(run_dir, f"{experiment}_frames.csv")
+    frames = opf_rows(os.path.join(run_dir, f"{experiment}_frames.csv"))
     floor = carry_floor(frames, target) if experiment.endswith("_carry") else None
     return (hidden_errors(os.path.join(run_dir, "summary.json"), experiment),
             reveals(frames, target, carriers), floor)

@@ -75,8 +75,9 @@ OccluderCarry::OccluderCarry(const Settings& settings, const OccluderOptions& op
       occluder_(std::move(occluder)),
       position_at_onset_(position_at_onset),
       orientation_at_onset_(orientation_at_onset) {
-  const CarrierPose reference = carrier_pose(ensemble.frame.find(occluder_), &occluder_estimate,
-                                             ensemble, options_, settings.stated_noise);
+  const Detection* occluder_detection = ensemble.frame.find(occluder_);
+  const CarrierPose reference = carrier_pose(occluder_detection, &occluder_estimate, ensemble,
+                                             options_, settings.stated_noise);
   occluder_position_at_onset_ = last_carrier_position_ = reference.position;
   occluder_orientation_at_onset_ = last_carrier_orientation_ = reference.orientation;
   // A cover at the object's level (a cup slid over a ball) moves it only by pushing it: it waits
@@ -87,7 +88,7 @@ OccluderCarry::OccluderCarry(const Settings& settings, const OccluderOptions& op
   at_offset_ = options_.keep_offset || wait;
   closest_distance_ = horizontal_distance(reference.position, position_at_onset_, up_);
   start_time_ = ensemble.frame.t;
-  if (ensemble.frame.find(occluder_)) record_around_start(start_time_, reference.position);
+  if (occluder_detection) record_around_start(start_time_, reference.position);
 }
 
 bool OccluderCarry::departed(double t, const Eigen::Vector3d& position,

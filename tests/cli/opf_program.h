@@ -2,6 +2,8 @@
 // The fixture of the end-to-end tests of the `opf` program: a fresh directory per test and a way
 // to run the built binary with its output captured.
 
+#include "io/scratch_directory.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -17,13 +19,7 @@ namespace opf {
 inline const std::string kOpf = OPF_CLI_PATH;
 class OpfProgram : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ =
-        std::filesystem::temp_directory_path() /
-        ("opf_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = empty_scratch_directory("opf_cli"); }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
   /// Runs `opf ARGS`, stdout and stderr to files; returns the exit status.

@@ -50,7 +50,7 @@ def test_each_reveal_is_judged_by_whether_the_cube_moved(tmp_path):
         rows.append((frame, "cube", "opf", 1, 0, visible, mode, 0.3, 0.1))
     write_frames(path, rows)
     # Without a probability column every row counts as certain: the main one is the likeliest.
-    assert hand_scenes.reveals(path) == (2, 2, 3)
+    assert hand_scenes.reveals(hand_scenes.opf_rows(path)) == (2, 2, 3)
 
 
 def test_in_the_cups_game_only_the_right_carrier_counts(tmp_path):
@@ -68,8 +68,9 @@ def test_in_the_cups_game_only_the_right_carrier_counts(tmp_path):
         writer.writeheader()
         for r in rows:
             writer.writerow(dict(zip(FIELDS + ["model"], r)))
-    assert hand_scenes.reveals(path, "ball", {"cup_b", "hand_b"}) == (1, 1, 2)
-    assert hand_scenes.reveals(path, "ball") == (2, 2, 2)
+    rows = hand_scenes.opf_rows(path)
+    assert hand_scenes.reveals(rows, "ball", {"cup_b", "hand_b"}) == (1, 1, 2)
+    assert hand_scenes.reveals(rows, "ball") == (2, 2, 2)
 
 
 def test_the_most_probable_hypothesis_may_differ_from_the_main_one(tmp_path):
@@ -91,7 +92,7 @@ def test_the_most_probable_hypothesis_may_differ_from_the_main_one(tmp_path):
         writer.writeheader()
         for r in rows:
             writer.writerow(dict(zip(fields, r)))
-    assert hand_scenes.reveals(path) == (2, 1, 2)
+    assert hand_scenes.reveals(hand_scenes.opf_rows(path)) == (2, 1, 2)
 
 
 def test_a_window_whose_path_leaves_the_view_is_refused():
@@ -312,7 +313,7 @@ def test_the_carry_floor_counts_a_pick_up_until_the_place_is_seen_and_a_put_down
         rows.append([frame, "cube", "pf", 0, 0, seen, cx + 0.5, cy, 0.01, 0.0, 1.0])
     path = tmp_path / "frames.csv"
     write_frames(path, rows, FLOOR_FIELDS)
-    floor, pick_up, put_down = hand_scenes.carry_floor(path)
+    floor, pick_up, put_down = hand_scenes.carry_floor(hand_scenes.opf_rows(path))
     # Five hidden frames: 0.05 m in the pick-up, 0.04 m in the put-down.
     assert pick_up == pytest.approx(0.05 / 5, abs=1e-9)
     assert put_down == pytest.approx(0.04 / 5, abs=1e-9)

@@ -1,5 +1,6 @@
 #include "opf/vision/frame_source.h"
 
+#include "io/scratch_directory.h"
 #include "opf/io/input_error.h"
 #include "vision/damaged_video.h"
 
@@ -19,13 +20,7 @@ namespace fs = std::filesystem;
 
 class VisionFrameSource : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("opf_frames_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = empty_scratch_directory("opf_frames"); }
   void TearDown() override { fs::remove_all(dir_); }
 
   /// A 32x24 image of one grey level.

@@ -1,5 +1,6 @@
 #include "opf/vision/video_detection.h"
 
+#include "io/scratch_directory.h"
 #include "opf/io/input_error.h"
 #include "opf/io/measurement_log.h"
 #include "vision/damaged_video.h"
@@ -25,12 +26,7 @@ namespace fs = std::filesystem;
 class VisionVideoDetection : public ::testing::Test {
  protected:
   void SetUp() override {
-    // One directory per test: ctest runs the tests of this suite in parallel.
-    dir_ = fs::temp_directory_path() /
-           ("opf_video_detection_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = empty_scratch_directory("opf_video_detection");
     for (int k = 0; k < 6; ++k) {
       cv::Mat frame = test::plain_frame(test::kBackground, {320, 240});
       if (k != 3)
