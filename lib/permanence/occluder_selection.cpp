@@ -13,6 +13,33 @@
 #include <vector>
 
 namespace opf {
+namespace {
+
+// The gate: a candidate at `offset` from the hidden object can hide it only if its centre lies
+// within its reach plus gate_sigmas of their combined spread (`spread`, in the occlusion plane)
+// across the line of sight, and at most `reach` behind the object along it.
+bool within_gate(const Eigen::Vector3d& offset, const Eigen::MatrixXd& projection,
+                 const Eigen::MatrixXd& spread, double reach,
+                 const std::optional<Eigen::Vector3d>& ray, const OccluderOptions& options) {
+  const double sigma = std::sqrt(
+      std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(spread, Eigen::EigenvaluesOnly)
+                        .eigenvalues()
+                        .maxCoeff()));
+  const bool across = (projection * offset).norm() <= reach + options.gate_sigmas * sigma;
+  const bool in_front = !ray || offset.dot(*ray) <= options.reach;
+  return across && in_front;
+}
+
+// How probably a candidate `across` from the hidden object (in the occlusion plane, `spread`
+// their combined covariance) hides it: within its stated radius, or, of no stated size, within a
+// reach anywhere up to options.reach, no extent more likely.
+double hiding_probability(const Eigen::VectorXd& across, const Eigen::MatrixXd& spread,
+                          double radius, const OccluderOptions& options) {
+  return radius > 0.0 ? covering_probability(across, spread, radius)
+                      : covering_probability_of_unknown_radius(across, spread, options.reach);
+}
+
+}  // namespace
 
 std::optional<Eigen::Vector3d> line_of_sight(const Eigen::Vector3d& hidden_mean,
                                              const OccluderOptions& options) {
@@ -91,19 +118,10 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     const Eigen::MatrixXd sigma = p * c.covariance * p.transpose();
     // It hides the object within its own silhouette where its size is stated.
     const double reach = c.radius > 0.0 ? c.radius : options.reach;
-    if (options.gate) {
-      const Eigen::Vector3d offset = c.mean - hidden_mean;
-      const double spread =
-          std::sqrt(std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
-                                      hidden_sigma + sigma, Eigen::EigenvaluesOnly)
-                                      .eigenvalues()
-                                      .maxCoeff()));
-      const bool across = (p * offset).norm() <= reach + options.gate_sigmas * spread;
-      const bool in_front = !ray || offset.dot(*ray) <= options.reach;
-      if (!across || !in_front) {
-        ++choice.implausible;
-        continue;
-      }
+    if (options.gate &&
+        !within_gate(c.mean - hidden_mean, p, hidden_sigma + sigma, reach, ray, options)) {
+      ++choice.implausible;
+      continue;
     }
     double d = std::numeric_limits<double>::infinity();
     try {
@@ -113,15 +131,10 @@ OccluderChoice choose_occluders(const Eigen::Vector3d& hidden_mean,
     }
     if (!std::isfinite(d)) continue;
     ++plausible;
-    if (options.gate) {
-      // A candidate of no stated size may reach anywhere up to `reach`, no extent more likely.
-      const Eigen::VectorXd across = p * (c.mean - hidden_mean);
-      const Eigen::MatrixXd spread = hidden_sigma + sigma;
+    if (options.gate)
       weighted.push_back({d,
-                          {j, c.radius > 0.0 ? covering_probability(across, spread, c.radius)
-                                             : covering_probability_of_unknown_radius(
-                                                   across, spread, options.reach)}});
-    }
+                          {j, hiding_probability(p * (c.mean - hidden_mean), hidden_sigma + sigma,
+                                                 c.radius, options)}});
     if (d < best_d) {
       runner_up = best;
       runner_up_d = best_d;
