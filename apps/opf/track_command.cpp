@@ -12,6 +12,7 @@
 #include "opf/io/input_file.h"
 #include "opf/io/measurement_log.h"
 #include "output_paths.h"
+#include "unsized_log_note.h"
 
 #include <cerrno>
 #include <cstring>
@@ -101,17 +102,21 @@ class EstimateWriter {
         on_objects_(std::move(on_objects)) {}
 
   void write(std::ostream& out, const Frame& frame) {
-    for (const Detection& detection : frame.detections)
+    for (const Detection& detection : frame.detections) {
       if (objects_.insert(detection.object).second) on_objects_(objects_.size());
+      unsized_.saw(detection);
+    }
     for (Estimate estimate : tracker_.step(frame)) {
       estimate.recovery.frame_filled = frame.filled;
       write_estimate_row(out, estimate, epsilon_safe_, columns_);
+      unsized_.saw(estimate);
       ++rows_;
     }
     // Further hypotheses (the OPF's virtual objects) follow as extra rows, hypothesis >= 1.
     for (Estimate hypothesis : tracker_.hypotheses()) {
       hypothesis.recovery.frame_filled = frame.filled;
       write_estimate_row(out, hypothesis, epsilon_safe_, columns_);
+      unsized_.saw(hypothesis);
       ++rows_;
     }
     ++frames_;
@@ -119,6 +124,7 @@ class EstimateWriter {
   std::size_t rows() const { return rows_; }
   std::size_t frames() const { return frames_; }
   std::size_t objects() const { return objects_.size(); }
+  const UnsizedLogWatch& unsized() const { return unsized_; }
 
  private:
   Tracker& tracker_;
@@ -128,6 +134,7 @@ class EstimateWriter {
   std::set<std::string> objects_;
   std::size_t rows_ = 0;
   std::size_t frames_ = 0;
+  UnsizedLogWatch unsized_;
 };
 
 // Flushes, then checks, errno still the flush's.
@@ -159,16 +166,21 @@ bool tum_output(const Arguments& args, const std::string& out) {
 // The TUM output: each object's main estimates, kept until the whole run succeeded, then one
 // file per object (tum_paths), none of them the input. Returns the paths written.
 std::vector<fs::path> track_to_tum(Tracker& tracker, const MeasurementLog& log,
-                                   const std::string& in, const std::string& out) {
+                                   const std::string& in, const std::string& out,
+                                   UnsizedLogWatch& unsized) {
   if (out == "-" && log.objects.size() > 1)
     throw UsageError{
         "--out-format tum writes one file per object: standard output holds one, "
         "and the log has " +
         std::to_string(log.objects.size())};
   std::map<std::string, std::ostringstream> rows;
-  for (const Frame& frame : log.frames)
-    for (const Estimate& estimate : tracker.step(frame))
+  for (const Frame& frame : log.frames) {
+    for (const Detection& detection : frame.detections) unsized.saw(detection);
+    for (const Estimate& estimate : tracker.step(frame)) {
       write_tum_row(rows[estimate.object], estimate);
+      unsized.saw(estimate);
+    }
+  }
   const std::vector<fs::path> paths = tum_paths(out, log.objects);
   for (const fs::path& path : paths)
     refuse_output_over_input({"--out", path.string()}, {{"--in", in}});
@@ -289,13 +301,15 @@ int track_command(const std::vector<std::string>& raw) {
 
   FrameAssemblyReport assembly;
   std::string written;  // what the closing line says was written, and where
-  if (tum_output(args, out)) {
+  UnsizedLogWatch tum_unsized;
+  const bool tum = tum_output(args, out);
+  if (tum) {
     if (stream)
       throw UsageError{"--out-format tum is written when the log is read whole, not from a stream"};
     const MeasurementLog log = read_whole_log(in, log_options, "track", quiet);
     assembly = log.report;
     std::string names;
-    for (const fs::path& path : track_to_tum(tracker, log, in, out))
+    for (const fs::path& path : track_to_tum(tracker, log, in, out, tum_unsized))
       names += (names.empty() ? "" : ", ") + path.string();
     written = std::to_string(log.frames.size()) + " frames, " + std::to_string(log.objects.size()) +
               " objects: main estimates written as TUM to " + names;
@@ -308,6 +322,7 @@ int track_command(const std::vector<std::string>& raw) {
   }
   if (quiet) return 0;
   report_filled_gaps(assembly);
+  if ((tum ? tum_unsized : writer.unsized()).note_due()) std::cerr << unsized_log_note("track");
   if (written.empty())
     written = std::to_string(writer.frames()) + " frames, " + std::to_string(writer.objects()) +
               " objects: " + std::to_string(writer.rows()) + " estimates written to " + out;

@@ -275,6 +275,51 @@ TEST_F(OpfProgram, TrackTakesTheCameraAndWarnsWithoutOne) {
   EXPECT_NE(out().find("camera_position: [0.4, 0, 0.8]"), std::string::npos) << out();
 }
 
+// A log that states no sizes, once the occluder module has taken an object (carried or left): a
+// note naming the columns that state them, once, in CSV and TUM output; none for another
+// estimator, for the same log with a radius column, or under --quiet.
+TEST_F(OpfProgram, TrackNotesThatTheOccluderModuleWorkedWithoutSizes) {
+  const std::string track = "track --camera 0.4,0,0.8 --particles 500 --seed 2 --in ";
+  const std::string example = kData + "example_log.csv";
+  const std::string note =
+      "opf track: note: the occluder module took a hidden object (carried or left) and no "
+      "detection states a size (the radius or box_x,box_y,box_z columns)";
+  const auto notes = [&] {
+    std::size_t count = 0;
+    for (auto at = err().find(note); at != std::string::npos; at = err().find(note, at + 1))
+      ++count;
+    return count;
+  };
+  const auto taken = [&](const fs::path& est) {
+    std::size_t count = 0;
+    for (const EstimateRecord& r : read_estimate_csv(est))
+      count += r.mode.starts_with("carried") || r.mode.starts_with("left");
+    return count;
+  };
+  ASSERT_EQ(run(track + example + " --out " + (dir_ / "est.csv").string()), 0) << err();
+  EXPECT_GT(taken(dir_ / "est.csv"), 0u);
+  EXPECT_EQ(notes(), 1u) << err();
+  ASSERT_EQ(run(track + example + " --out " + (dir_ / "est.tum").string()), 0) << err();
+  EXPECT_EQ(notes(), 1u) << err();
+  ASSERT_EQ(run(track + example + " --out " + (dir_ / "cv.csv").string() + " --estimator cvkf"), 0)
+      << err();
+  EXPECT_EQ(notes(), 0u) << err();
+  ASSERT_EQ(run(track + example + " --out " + (dir_ / "quiet.csv").string() + " --quiet"), 0);
+  EXPECT_EQ(err(), "");
+  // The same log with each detection's radius stated (12 cm: the mug still hides the ball once).
+  std::ifstream in(example);
+  std::ofstream sized(dir_ / "sized.csv");
+  std::string line;
+  for (bool header = true; std::getline(in, line); header = false)
+    sized << line << (header ? ",radius" : ",0.12") << "\n";
+  sized.close();
+  const fs::path sized_est = dir_ / "sized_est.csv";
+  ASSERT_EQ(run(track + (dir_ / "sized.csv").string() + " --out " + sized_est.string()), 0)
+      << err();
+  EXPECT_GT(taken(sized_est), 0u);
+  EXPECT_EQ(err().find("note:"), std::string::npos) << err();
+}
+
 // The version and the commit built: "opf 0.1.0 (commit 1a2b3c4d5e6f)", or "unknown" outside git.
 TEST_F(OpfProgram, VersionNamesTheVersionAndTheCommit) {
   for (const char* flag : {"--version", "version"}) {

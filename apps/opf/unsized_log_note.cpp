@@ -1,0 +1,12 @@
+#include "unsized_log_note.h"
+
+namespace opf::cli {
+
+std::string unsized_log_note(const std::string& command) {
+  return "opf " + command +
+         ": note: the occluder module took a hidden object (carried or left) and no detection "
+         "states a size (the radius or box_x,box_y,box_z columns): how far each cover reaches is "
+         "then unknown, and carried and left are told apart less often (docs/formats.md)\n";
+}
+
+}  // namespace opf::cli
