@@ -23,8 +23,8 @@ if ! { cmake -S "$repo/fuzz" -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++ &
 fi
 # A sweep file names bundled experiments, read from the source tree's experiments/.
 export OPF_DATA_DIR="$repo"
-# One target: SECONDS of fuzzing from its corpus; its verdict goes to $build/<target>.verdict, 0
-# for no crash.
+# One target: SECONDS of fuzzing from its corpus; its verdict (a line ending in "no crash", or
+# the crash's report) goes to $build/<target>.verdict.
 fuzz_target() {
   local target="$1" scratch regressions log runs edges crash
   scratch="$(mktemp -d)"
