@@ -95,11 +95,12 @@ constexpr const char* kSummary =
 class EstimateWriter {
  public:
   EstimateWriter(Tracker& tracker, double epsilon_safe, EstimateColumns columns,
-                 std::function<void(std::size_t objects)> on_objects)
+                 std::function<void(std::size_t objects)> on_objects, UnsizedLogWatch& unsized)
       : tracker_(tracker),
         epsilon_safe_(epsilon_safe),
         columns_(columns),
-        on_objects_(std::move(on_objects)) {}
+        on_objects_(std::move(on_objects)),
+        unsized_(unsized) {}
 
   void write(std::ostream& out, const Frame& frame) {
     for (const Detection& detection : frame.detections) {
@@ -124,7 +125,6 @@ class EstimateWriter {
   std::size_t rows() const { return rows_; }
   std::size_t frames() const { return frames_; }
   std::size_t objects() const { return objects_.size(); }
-  const UnsizedLogWatch& unsized() const { return unsized_; }
 
  private:
   Tracker& tracker_;
@@ -134,7 +134,7 @@ class EstimateWriter {
   std::set<std::string> objects_;
   std::size_t rows_ = 0;
   std::size_t frames_ = 0;
-  UnsizedLogWatch unsized_;
+  UnsizedLogWatch& unsized_;
 };
 
 // Flushes, then checks, errno still the flush's.
@@ -293,23 +293,23 @@ int track_command(const std::vector<std::string>& raw) {
   const bool warn_camera = !quiet && estimator == "opf" && assumes_top_down_camera(settings);
   Tracker tracker(make_estimator_factory(estimator, settings), seed_from(args), threads_from(args));
   const EstimateColumns columns{.covariance = args.has("covariance")};
-  EstimateWriter writer(tracker, settings.opf.feedback.epsilon_safe, columns,
-                        [&](std::size_t objects) {
-                          if (warn_camera && objects == 2)
-                            std::cerr << missing_camera_warning("track");
-                        });
+  UnsizedLogWatch unsized;  // for unsized_log_note, whichever output is written
+  EstimateWriter writer(
+      tracker, settings.opf.feedback.epsilon_safe, columns,
+      [&](std::size_t objects) {
+        if (warn_camera && objects == 2) std::cerr << missing_camera_warning("track");
+      },
+      unsized);
 
   FrameAssemblyReport assembly;
   std::string written;  // what the closing line says was written, and where
-  UnsizedLogWatch tum_unsized;
-  const bool tum = tum_output(args, out);
-  if (tum) {
+  if (tum_output(args, out)) {
     if (stream)
       throw UsageError{"--out-format tum is written when the log is read whole, not from a stream"};
     const MeasurementLog log = read_whole_log(in, log_options, "track", quiet);
     assembly = log.report;
     std::string names;
-    for (const fs::path& path : track_to_tum(tracker, log, in, out, tum_unsized))
+    for (const fs::path& path : track_to_tum(tracker, log, in, out, unsized))
       names += (names.empty() ? "" : ", ") + path.string();
     written = std::to_string(log.frames.size()) + " frames, " + std::to_string(log.objects.size()) +
               " objects: main estimates written as TUM to " + names;
@@ -322,7 +322,7 @@ int track_command(const std::vector<std::string>& raw) {
   }
   if (quiet) return 0;
   report_filled_gaps(assembly);
-  if ((tum ? tum_unsized : writer.unsized()).note_due()) std::cerr << unsized_log_note("track");
+  if (unsized.note_due()) std::cerr << unsized_log_note("track");
   if (written.empty())
     written = std::to_string(writer.frames()) + " frames, " + std::to_string(writer.objects()) +
               " objects: " + std::to_string(writer.rows()) + " estimates written to " + out;
