@@ -5,6 +5,7 @@
 #include "opf/core/tracker.h"
 #include "opf/estimators/registry.h"
 #include "opf/io/measurement_log.h"
+#include "opf/io/unsized_log_note.h"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -96,22 +97,30 @@ py::dict track_log(const TrackLogArguments& arguments) {
   require_camera_for_line_of_sight(settings);
   const LogReadOptions options = log_options_from(arguments.log, arguments.path);
   ColumnTable table(settings.opf.feedback.epsilon_safe, arguments.covariance);
+  UnsizedLogWatch unsized;
   {
     const py::gil_scoped_release release;
     Tracker tracker(make_estimator_factory(arguments.estimator, settings), arguments.seed);
     const MeasurementLog log = read_measurement_log(arguments.path, options);
     // As opf track: each object's row, then the further hypotheses, marked in filled frames.
     for (const Frame& frame : log.frames) {
+      for (const Detection& detection : frame.detections) unsized.saw(detection);
       for (Estimate estimate : tracker.step(frame)) {
         estimate.recovery.frame_filled = frame.filled;
+        unsized.saw(estimate);
         table.add(estimate);
       }
       for (Estimate hypothesis : tracker.hypotheses()) {
         hypothesis.recovery.frame_filled = frame.filled;
+        unsized.saw(hypothesis);
         table.add(hypothesis);
       }
     }
   }
+  // opf track's note, as a warning at the caller of opf.track_log (stack level 2: past the
+  // module's own wrapper); the warnings module silences it or makes it an error.
+  if (unsized.note_due() && PyErr_WarnEx(PyExc_UserWarning, unsized_log_note().c_str(), 2) != 0)
+    throw py::error_already_set();
   return table.to_dict();
 }
 

@@ -11,8 +11,8 @@
 #include "opf/io/estimate_tum.h"
 #include "opf/io/input_file.h"
 #include "opf/io/measurement_log.h"
+#include "opf/io/unsized_log_note.h"
 #include "output_paths.h"
-#include "unsized_log_note.h"
 
 #include <cerrno>
 #include <cstring>
@@ -322,7 +322,7 @@ int track_command(const std::vector<std::string>& raw) {
   }
   if (quiet) return 0;
   report_filled_gaps(assembly);
-  if (unsized.note_due()) std::cerr << unsized_log_note("track");
+  if (unsized.note_due()) std::cerr << "opf track: note: " << unsized_log_note() << "\n";
   if (written.empty())
     written = std::to_string(writer.frames()) + " frames, " + std::to_string(writer.objects()) +
               " objects: " + std::to_string(writer.rows()) + " estimates written to " + out;

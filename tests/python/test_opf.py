@@ -11,6 +11,7 @@ import os
 import re
 import subprocess
 import threading
+import warnings
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -23,6 +24,8 @@ OPF = os.environ.get("OPF")
 EXAMPLE_LOG = os.path.join(SOURCE, "experiments", "data", "example_log.csv")
 PARTICLES = 500
 TEXT_COLUMNS = ("object", "mode", "model")
+# The example log states no sizes: track_log's note on that is tested once, below.
+pytestmark = pytest.mark.filterwarnings("ignore:the occluder module took:UserWarning")
 
 
 def program():
@@ -565,3 +568,34 @@ def test_a_stated_box_reaches_the_tracker_as_the_logs_box_columns_do(tmp_path):
         if name == "cube":
             from_log.setdefault(t, []).append((mode, p))
     assert [from_log[t] for t, _, _ in frames] == with_box
+
+
+UNSIZED_NOTE = ("the occluder module took a hidden object (carried or left) and no detection "
+                "states a size (the radius or box_x,box_y,box_z columns)")
+
+
+def test_track_log_warns_where_opf_track_notes_a_log_that_states_no_sizes(tmp_path):
+    # The example's mug hides the ball, and the log states no sizes: opf track's note, as one
+    # UserWarning. None for another estimator or a log that states a size (12 cm: the mug still
+    # hides the ball once); a filter that makes warnings errors makes it one.
+    options = {"camera": "0.4,0,0.8", "particles": PARTICLES, "seed": 2, "dataframe": False}
+
+    def taken(columns):
+        return sum(mode.startswith(("carried", "left")) for mode in columns["mode"])
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        columns = opf.track_log(EXAMPLE_LOG, **options)
+    assert taken(columns) > 0
+    assert [(w.category, str(w.message)[:len(UNSIZED_NOTE)], w.filename) for w in caught] == \
+        [(UserWarning, UNSIZED_NOTE, __file__)]
+    sized = tmp_path / "sized.csv"
+    with open(EXAMPLE_LOG) as f, open(sized, "w") as out:
+        for i, line in enumerate(f):
+            out.write(line.rstrip("\n") + (",radius\n" if i == 0 else ",0.12\n"))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        assert taken(opf.track_log(EXAMPLE_LOG, estimator="cvkf", **options)) == 0
+        assert taken(opf.track_log(sized, **options)) > 0
+        with pytest.raises(UserWarning, match=re.escape(UNSIZED_NOTE)):
+            opf.track_log(EXAMPLE_LOG, **options)

@@ -3,14 +3,15 @@
 // taken a hidden object (carried or left): without sizes the module weighs each candidate cover by
 // a reach it does not know and judges a place hidden by where the cover last let it be seen,
 // which tells carried from left less often than stated sizes do (docs/results.md, the hand scenes
-// with --unsized). The note names the columns that state them.
+// with --unsized). The note names the columns that state them. `opf track` prints it, the Python
+// module's track_log gives it as a warning.
 
 #include "opf/core/estimate.h"
 #include "opf/core/frame.h"
 
 #include <string>
 
-namespace opf::cli {
+namespace opf {
 
 class UnsizedLogWatch {
  public:
@@ -29,7 +30,7 @@ class UnsizedLogWatch {
   bool occluder_took_ = false;
 };
 
-/// The note, one line; `command` names the sender.
-std::string unsized_log_note(const std::string& command);
+/// The note: one sentence, without its sender's name or a line end.
+std::string unsized_log_note();
 
-}  // namespace opf::cli
+}  // namespace opf
