@@ -102,18 +102,14 @@ py::dict track_log(const TrackLogArguments& arguments) {
     const py::gil_scoped_release release;
     Tracker tracker(make_estimator_factory(arguments.estimator, settings), arguments.seed);
     const MeasurementLog log = read_measurement_log(arguments.path, options);
-    // As opf track: each object's row, then the further hypotheses, marked in filled frames.
+    // The rows opf track writes: each object's, then the further hypotheses.
+    std::vector<Estimate> rows;
     for (const Frame& frame : log.frames) {
       for (const Detection& detection : frame.detections) unsized.saw(detection);
-      for (Estimate estimate : tracker.step(frame)) {
-        estimate.recovery.frame_filled = frame.filled;
-        unsized.saw(estimate);
-        table.add(estimate);
-      }
-      for (Estimate hypothesis : tracker.hypotheses()) {
-        hypothesis.recovery.frame_filled = frame.filled;
-        unsized.saw(hypothesis);
-        table.add(hypothesis);
+      step_into_rows(tracker, frame, rows);
+      for (const Estimate& row : rows) {
+        unsized.saw(row);
+        table.add(row);
       }
     }
   }

@@ -27,6 +27,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace opf::cli {
 namespace {
@@ -107,19 +108,13 @@ class EstimateWriter {
       if (objects_.insert(detection.object).second) on_objects_(objects_.size());
       unsized_.saw(detection);
     }
-    for (Estimate estimate : tracker_.step(frame)) {
-      estimate.recovery.frame_filled = frame.filled;
-      write_estimate_row(out, estimate, epsilon_safe_, columns_);
-      unsized_.saw(estimate);
-      ++rows_;
+    // The further hypotheses (the OPF's virtual objects) follow as extra rows, hypothesis >= 1.
+    step_into_rows(tracker_, frame, frame_rows_);
+    for (const Estimate& row : frame_rows_) {
+      write_estimate_row(out, row, epsilon_safe_, columns_);
+      unsized_.saw(row);
     }
-    // Further hypotheses (the OPF's virtual objects) follow as extra rows, hypothesis >= 1.
-    for (Estimate hypothesis : tracker_.hypotheses()) {
-      hypothesis.recovery.frame_filled = frame.filled;
-      write_estimate_row(out, hypothesis, epsilon_safe_, columns_);
-      unsized_.saw(hypothesis);
-      ++rows_;
-    }
+    rows_ += frame_rows_.size();
     ++frames_;
   }
   std::size_t rows() const { return rows_; }
@@ -132,6 +127,7 @@ class EstimateWriter {
   EstimateColumns columns_;
   std::function<void(std::size_t)> on_objects_;
   std::set<std::string> objects_;
+  std::vector<Estimate> frame_rows_;  // step_into_rows's, kept from frame to frame
   std::size_t rows_ = 0;
   std::size_t frames_ = 0;
   UnsizedLogWatch& unsized_;

@@ -104,4 +104,10 @@ void Tracker::remember_radii(const Frame& frame) {
   }
 }
 
+void step_into_rows(Tracker& tracker, const Frame& frame, std::vector<Estimate>& rows) {
+  rows = tracker.step(frame);
+  rows.insert(rows.end(), tracker.hypotheses().begin(), tracker.hypotheses().end());
+  for (Estimate& row : rows) row.recovery.frame_filled = frame.filled;
+}
+
 }  // namespace opf

@@ -60,4 +60,9 @@ class Tracker {
   std::unique_ptr<WorkerPool> pool_;
 };
 
+/// Steps `tracker` through `frame` and gives the frame's rows as an estimate file lists them:
+/// every object's main estimate, then the further hypotheses, each marked when the frame was
+/// filled inside a gap. `rows` is cleared and refilled (its capacity kept from frame to frame).
+void step_into_rows(Tracker& tracker, const Frame& frame, std::vector<Estimate>& rows);
+
 }  // namespace opf

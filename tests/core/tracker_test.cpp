@@ -61,6 +61,41 @@ EstimatorFactory recording_into(std::map<std::string, RecordingEstimator::Log>& 
   };
 }
 
+// Holds a second hypothesis beside its estimate, as the OPF's occluder module does: `left` at
+// the first position it was shown, with probability 0.25.
+class TwoHypothesesEstimator final : public Estimator {
+ public:
+  std::string_view name() const override { return "two hypotheses"; }
+  Estimate initialise(double t, const mrpt::poses::CPose3D& z) override {
+    first_ = last_ = z;
+    t_ = t;
+    return at(t, last_);
+  }
+  Estimate step(double t, const mrpt::poses::CPose3D* z, const EnsembleView&) override {
+    if (z) last_ = *z;
+    t_ = t;
+    return at(t, last_);
+  }
+  std::vector<Estimate> extra_hypotheses() const override {
+    Estimate left = at(t_, first_);
+    left.mode = EstimateMode::kLeft;
+    left.hypothesis = 1;
+    left.probability = 0.25;
+    return {left};
+  }
+
+ private:
+  Estimate at(double t, const mrpt::poses::CPose3D& pose) const {
+    Estimate e;
+    e.t = t;
+    e.pose = mrpt::poses::CPose3DPDFGaussian(pose);
+    e.probability = 0.75;
+    return e;
+  }
+  double t_ = 0.0;
+  mrpt::poses::CPose3D first_, last_;
+};
+
 TEST(Tracker, CreatesEstimatorsAtFirstDetectionInOrderOfAppearance) {
   std::map<std::string, RecordingEstimator::Log> logs;
   Tracker tracker(recording_into(logs), 99);
@@ -176,6 +211,34 @@ TEST(Tracker, RefusesEachNonFiniteFieldByName) {
             std::string::npos);
   EXPECT_NE(message_for([](Estimate& e) { e.pose.mean.z(-HUGE_VAL); }).find("a pose"),
             std::string::npos);
+}
+
+// A frame's rows as an estimate file lists them: every object's main estimate in order of first
+// appearance, then the further hypotheses in the same order, all marked in a frame filled inside
+// a gap; the vector is refilled, not appended to.
+TEST(Tracker, StepIntoRowsListsMainEstimatesThenFurtherHypotheses) {
+  Tracker tracker(
+      [](const std::string&, std::uint64_t) { return std::make_unique<TwoHypothesesEstimator>(); },
+      7);
+  std::vector<Estimate> rows(3);
+  step_into_rows(tracker, frame(0.0, {{"mug", 1.0}, {"ball", 2.0}}), rows);
+  Frame filled = frame(0.1, {{"ball", 3.0}});
+  filled.filled = true;
+  for (const bool is_filled : {false, true}) {
+    if (is_filled) step_into_rows(tracker, filled, rows);
+    ASSERT_EQ(rows.size(), 4u);
+    const std::vector<std::pair<std::string, int>> order = {
+        {"mug", 0}, {"ball", 0}, {"mug", 1}, {"ball", 1}};
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      EXPECT_EQ(rows[i].object, order[i].first) << i;
+      EXPECT_EQ(rows[i].hypothesis, order[i].second) << i;
+      EXPECT_DOUBLE_EQ(rows[i].probability, order[i].second == 0 ? 0.75 : 0.25) << i;
+      EXPECT_EQ(rows[i].recovery.frame_filled, is_filled) << i;
+      EXPECT_DOUBLE_EQ(rows[i].t, is_filled ? 0.1 : 0.0) << i;
+    }
+  }
+  EXPECT_DOUBLE_EQ(rows[1].pose.mean.x(), 3.0);  // the ball's main estimate, at its detection
+  EXPECT_DOUBLE_EQ(rows[3].pose.mean.x(), 2.0);  // its hypothesis, where it was first seen
 }
 
 }  // namespace
