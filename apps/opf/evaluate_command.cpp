@@ -16,6 +16,7 @@
 #include "opf/io/csv.h"
 #include "opf/io/json_text.h"
 #include "opf/io/measurement_log.h"
+#include "opf/io/unsized_log_note.h"
 #include "output_paths.h"
 #include "provenance.h"
 
@@ -110,12 +111,25 @@ struct HypothesisTally {
   }
 };
 
-/// The errors of one run, and how many estimates of filled frames had no truth to compare with.
+/// What the runs leave to say after the tables: how many estimates of filled frames had no truth
+/// to compare with (the most of any run), and whether the occluder module took an object in a log
+/// that states no sizes (unsized_log_note).
+struct RunNotes {
+  std::size_t unscored = 0;
+  bool unsized = false;
+
+  void add(const RunNotes& run) {
+    unscored = std::max(unscored, run.unscored);
+    unsized = unsized || run.unsized;
+  }
+};
+
+/// The errors of one run, and its notes.
 struct ScoredRun {
   RunErrors errors;
   std::vector<GapError> gaps;
   HypothesisTally hypotheses;
-  std::size_t unscored = 0;
+  RunNotes notes;
 };
 
 ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const std::string& name,
@@ -124,12 +138,15 @@ ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const st
   Tracker tracker(make_estimator_factory(name, settings), seed, threads);
   ErrorAccumulator errors(settings.opf.feedback.epsilon_safe, alert_distance);
   GapErrors gaps;
+  UnsizedLogWatch unsized;
   ScoredRun run;
   for (const Frame& frame : log.frames) {
+    for (const Detection& detection : frame.detections) unsized.saw(detection);
     for (const Estimate& estimate : tracker.step(frame)) {
+      unsized.saw(estimate);
       const std::optional<mrpt::poses::CPose3D> pose = truth.at(estimate.object, frame.t);
       if (!pose && frame.filled) {
-        ++run.unscored;  // a frame the log never had: no truth there is no fault
+        ++run.notes.unscored;  // a frame the log never had: no truth there is no fault
         continue;
       }
       if (!pose)
@@ -140,7 +157,9 @@ ScoredRun run_once(const MeasurementLog& log, const GroundTruth& truth, const st
                rotation_error_geodesic(estimate.pose.mean, *pose));
       run.hypotheses.add(estimate, translation, tracker.hypotheses(), *pose);
     }
+    for (const Estimate& hypothesis : tracker.hypotheses()) unsized.saw(hypothesis);
   }
+  run.notes.unsized = unsized.note_due();
   run.errors = errors.result();
   run.gaps = gaps.gaps();
   return run;
@@ -454,7 +473,7 @@ GroundTruth read_truth(const Arguments& args, const std::string& truth_path,
 
 /// Every estimator over every seed, each printed as its seeds end: the first table.
 std::vector<Row> run_every_estimator(const EvaluateRequest& r, const MeasurementLog& log,
-                                     const GroundTruth& truth, std::size_t& unscored) {
+                                     const GroundTruth& truth, RunNotes& notes) {
   if (r.seeds == 1)
     std::printf("errors against the truth, each run's mean over frames (1 seed: no spread)\n");
   else
@@ -470,7 +489,7 @@ std::vector<Row> run_every_estimator(const EvaluateRequest& r, const Measurement
     for (std::size_t k = 0; k < r.seeds; ++k) {
       const ScoredRun run = run_once(log, truth, name, r.settings, derive_seed(r.base_seed, k),
                                      r.threads, r.truth_path, r.alert_distance);
-      unscored = std::max(unscored, run.unscored);
+      notes.add(run.notes);
       row.add(run);
     }
     std::printf("%-10s %-22s %-22s %-22s %-22s\n", name.c_str(),
@@ -526,8 +545,8 @@ int evaluate_command(const std::vector<std::string>& raw) {
               r.in.c_str(), log.frames.size(), log.objects.size(), r.seeds,
               r.seeds == 1 ? "seed" : "seeds", r.settings.pf.translation_particles,
               r.settings.pf.rotation_particles);
-  std::size_t unscored = 0;
-  const std::vector<Row> rows = run_every_estimator(r, log, truth, unscored);
+  RunNotes notes;
+  const std::vector<Row> rows = run_every_estimator(r, log, truth, notes);
   print_hidden_and_visible(rows);
   print_calibration(rows, r.alert_distance);
   print_hypotheses(rows);
@@ -536,11 +555,12 @@ int evaluate_command(const std::vector<std::string>& raw) {
   if (const auto path = args.get("out"))
     write_evaluation(*path, rows,
                      provenance_json(command_line("evaluate", raw), {{"", r.settings}}, 2));
-  if (unscored > 0)
+  if (notes.unscored > 0)
     std::printf(
         "%zu estimates of frames filled inside gaps of the log had no ground truth and "
         "were not scored\n",
-        unscored);
+        notes.unscored);
+  if (notes.unsized) std::cerr << "opf evaluate: note: " << unsized_log_note() << "\n";
   return 0;
 }
 

@@ -3,8 +3,8 @@
 // taken a hidden object (carried or left): without sizes the module weighs each candidate cover by
 // a reach it does not know and judges a place hidden by where the cover last let it be seen,
 // which tells carried from left less often than stated sizes do (docs/results.md, the hand scenes
-// with --unsized). The note names the columns that state them. `opf track` prints it, the Python
-// module's track_log gives it as a warning.
+// with --unsized). The note names the columns that state them. `opf track` and `opf evaluate`
+// print it, the Python module's track_log gives it as a warning.
 
 #include "opf/core/estimate.h"
 #include "opf/core/frame.h"

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -127,17 +128,47 @@ TEST_F(OpfProgram, SeedsAreBoundedByTheRunsTheyMake) {
 
 TEST_F(OpfProgram, EvaluateWarnsAsTrackDoesWhenTheOpfHasNoCamera) {
   // The example log has two objects: the OPF without a camera takes the line of sight as
-  // straight down, and says so once; with a camera, or without the OPF, nothing is assumed.
+  // straight down, and says so once, first; with a camera, or without the OPF, nothing is assumed.
+  const std::string warning =
+      "opf evaluate: warning: no camera position (--camera X,Y,Z, or X,Y,Z,0 for a camera "
+      "infinitely far in that direction, or opf.occluder.camera_position): the occluder "
+      "module takes the line of sight as straight down (-z); a log of `opf detect`, whose z "
+      "is the depth, wants --camera 0,0,-1,0\n";
   ASSERT_EQ(run("evaluate --seeds 1 --particles 100 --estimators opf,cvkf"), 0) << err();
-  EXPECT_EQ(err(),
-            "opf evaluate: warning: no camera position (--camera X,Y,Z, or X,Y,Z,0 for a camera "
-            "infinitely far in that direction, or opf.occluder.camera_position): the occluder "
-            "module takes the line of sight as straight down (-z); a log of `opf detect`, whose z "
-            "is the depth, wants --camera 0,0,-1,0\n");
+  EXPECT_EQ(err().substr(0, warning.size()), warning) << err();
+  EXPECT_EQ(err().find("warning:", warning.size()), std::string::npos) << err();
   ASSERT_EQ(run("evaluate --seeds 1 --particles 100 --estimators opf --camera 0.4,0,0.8"), 0)
       << err();
-  EXPECT_EQ(err(), "");
+  EXPECT_EQ(err().find("warning:"), std::string::npos) << err();
   ASSERT_EQ(run("evaluate --seeds 1 --estimators cvkf"), 0) << err();
+  EXPECT_EQ(err(), "");
+}
+
+TEST_F(OpfProgram, EvaluateNotesAsTrackDoesThatTheOccluderModuleWorkedWithoutSizes) {
+  // The example log states no sizes and the occluder module takes the ball under the mug: one
+  // note after every run, not one a run; none for an estimator without the module, or where the
+  // detections state a radius (12 cm: the mug still hides the ball).
+  const std::string note =
+      "opf evaluate: note: the occluder module took a hidden object (carried or left) and no "
+      "detection states a size (the radius or box_x,box_y,box_z columns)";
+  const std::string evaluate = "evaluate --camera 0.4,0,0.8 --particles 500 --seeds 2 ";
+  ASSERT_EQ(run(evaluate + "--estimators opf,cvkf"), 0) << err();
+  EXPECT_EQ(err().find(note), 0u) << err();
+  EXPECT_EQ(err().find(note, 1), std::string::npos) << err();
+  EXPECT_EQ(err().back(), '\n');
+  ASSERT_EQ(run(evaluate + "--estimators cvkf"), 0) << err();
+  EXPECT_EQ(err(), "");
+  const std::string data = std::string(OPF_SOURCE_DIR) + "/experiments/data/";
+  std::ifstream in(data + "example_log.csv");
+  std::ofstream sized(dir_ / "sized.csv");
+  std::string line;
+  for (bool header = true; std::getline(in, line); header = false)
+    sized << line << (header ? ",radius" : ",0.12") << "\n";
+  sized.close();
+  ASSERT_EQ(run(evaluate + "--estimators opf --in " + (dir_ / "sized.csv").string() + " --truth " +
+                data + "example_truth.csv"),
+            0)
+      << err();
   EXPECT_EQ(err(), "");
 }
 
