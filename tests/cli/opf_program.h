@@ -38,6 +38,18 @@ class OpfProgram : public ::testing::Test {
   std::string out() const { return read(dir_ / "stdout"); }
   std::string err() const { return read(dir_ / "stderr"); }
 
+  /// A copy of the CSV log `from` in the test's directory with a `radius` column stated on
+  /// every row; returns its path.
+  std::filesystem::path with_radius(const std::string& from, const std::string& radius) const {
+    std::ifstream in(from);
+    const std::filesystem::path path = dir_ / "sized.csv";
+    std::ofstream sized(path);
+    std::string line;
+    for (bool header = true; std::getline(in, line); header = false)
+      sized << line << (header ? ",radius" : "," + radius) << "\n";
+    return path;
+  }
+
   std::filesystem::path dir_;
 };
 

@@ -307,14 +307,8 @@ TEST_F(OpfProgram, TrackNotesThatTheOccluderModuleWorkedWithoutSizes) {
   ASSERT_EQ(run(track + example + " --out " + (dir_ / "quiet.csv").string() + " --quiet"), 0);
   EXPECT_EQ(err(), "");
   // The same log with each detection's radius stated (12 cm: the mug still hides the ball once).
-  std::ifstream in(example);
-  std::ofstream sized(dir_ / "sized.csv");
-  std::string line;
-  for (bool header = true; std::getline(in, line); header = false)
-    sized << line << (header ? ",radius" : ",0.12") << "\n";
-  sized.close();
   const fs::path sized_est = dir_ / "sized_est.csv";
-  ASSERT_EQ(run(track + (dir_ / "sized.csv").string() + " --out " + sized_est.string()), 0)
+  ASSERT_EQ(run(track + with_radius(example, "0.12").string() + " --out " + sized_est.string()), 0)
       << err();
   EXPECT_GT(taken(sized_est), 0u);
   EXPECT_EQ(err().find("note:"), std::string::npos) << err();
