@@ -114,7 +114,8 @@ void bind_tracker(py::module_& m) {
            "in that direction, as opf track --camera")
       .def("step", &PyTracker::step, py::arg("t"), py::arg("detections"),
            "t in seconds (increasing); detections: {object: [x, y, z, qx, qy, qz, qw] or None}, "
-           "an eighth number the detection's stated extra noise (m), a ninth the object's stated "
+           "or [x, y, z] for a position alone (at the identity orientation); an eighth number the "
+           "detection's stated extra noise (m), a ninth the object's stated "
            "radius (m), a tenth to twelfth its box's full extents box_x, box_y, box_z (m, each "
            "> 0, all three or none). Returns {object: Estimate} "
            "for every object seen so far. A non-finite or malformed "

@@ -21,8 +21,10 @@ namespace opf::python {
 namespace {
 
 constexpr std::array<const char*, 7> kPoseFields = {"x", "y", "z", "qx", "qy", "qz", "qw"};
-// The pose; with extra_noise; with the radius; with the box's three extents.
-constexpr std::array<std::size_t, 4> kFieldCounts = {7, 8, 9, 12};
+// A position alone (at the identity orientation, as a log of positions reads); the pose; with
+// extra_noise; with the radius; with the box's three extents.
+constexpr std::size_t kPositionFields = 3;
+constexpr std::array<std::size_t, 5> kFieldCounts = {kPositionFields, 7, 8, 9, 12};
 // The measurement log's tolerance (io/log_row_reader.cpp), and its wording below.
 constexpr double kQuaternionNormTolerance = 0.01;
 
@@ -44,11 +46,13 @@ std::vector<double> pose_fields(const std::string& object, const py::object& pos
   }
   if (std::find(kFieldCounts.begin(), kFieldCounts.end(), p.size()) == kFieldCounts.end())
     throw std::invalid_argument(where +
-                                ": expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with "
-                                "extra_noise, 9 with radius, 12 with box_x, box_y, box_z), got " +
+                                ": expected 7 pose fields [x, y, z, qx, qy, qz, qw] (3 for a "
+                                "position alone, 8 with extra_noise, 9 with radius, 12 with "
+                                "box_x, box_y, box_z), got " +
                                 std::to_string(p.size()));
-  for (std::size_t i = 0; i < kPoseFields.size(); ++i)
+  for (std::size_t i = 0; i < p.size() && i < kPoseFields.size(); ++i)
     require_finite(p[i], where + ", field '" + kPoseFields[i] + "'");
+  if (p.size() == kPositionFields) p.insert(p.end(), {0.0, 0.0, 0.0, 1.0});
   // An eighth number: the detector's stated extra noise (m), as the log's extra_noise column; a
   // ninth: the object's stated radius (m), as its radius column; the tenth to twelfth: its box's
   // full extents (m), as the box_x, box_y, box_z columns, all three or none.

@@ -4,6 +4,7 @@
 
 #include "opf/core/tracker.h"
 #include "opf/estimators/registry.h"
+#include "opf/io/log_row_reader.h"
 #include "opf/io/measurement_log.h"
 #include "opf/io/unsized_log_note.h"
 
@@ -98,10 +99,12 @@ py::dict track_log(const TrackLogArguments& arguments) {
   const LogReadOptions options = log_options_from(arguments.log, arguments.path);
   ColumnTable table(settings.opf.feedback.epsilon_safe, arguments.covariance);
   UnsizedLogWatch unsized;
+  bool positions_only = false;
   {
     const py::gil_scoped_release release;
     Tracker tracker(make_estimator_factory(arguments.estimator, settings), arguments.seed);
     const MeasurementLog log = read_measurement_log(arguments.path, options);
+    positions_only = !log.states_orientation;
     // The rows opf track writes: each object's, then the further hypotheses.
     std::vector<Estimate> rows;
     for (const Frame& frame : log.frames) {
@@ -113,10 +116,13 @@ py::dict track_log(const TrackLogArguments& arguments) {
       }
     }
   }
-  // opf track's note, as a warning at the caller of opf.track_log (stack level 2: past the
-  // module's own wrapper); the warnings module silences it or makes it an error.
-  if (unsized.note_due() && PyErr_WarnEx(PyExc_UserWarning, unsized_log_note().c_str(), 2) != 0)
-    throw py::error_already_set();
+  // opf track's notes, as warnings at the caller of opf.track_log (stack level 2: past the
+  // module's own wrapper); the warnings module silences them or makes them errors.
+  const auto warn = [](const std::string& note) {
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 2) != 0) throw py::error_already_set();
+  };
+  if (positions_only) warn(arguments.path + ": " + positions_only_note());
+  if (unsized.note_due()) warn(unsized_log_note());
   return table.to_dict();
 }
 

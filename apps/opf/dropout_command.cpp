@@ -16,7 +16,9 @@ namespace {
 
 std::vector<OptionSpec> specs() {
   return {
-      {"in", "LOG.csv", "measurement log: CSV with columns t,object,x,y,z,qx,qy,qz,qw (required)"},
+      {"in", "LOG.csv",
+       "measurement log: CSV with columns t,object,x,y,z,qx,qy,qz,qw, or t,object,x,y,z "
+       "(required)"},
       {"out", "LOG.csv", "the log with the detections in the windows removed (required)"},
       {"length", "S", "length of each window in seconds, shorter than the period (required)"},
       {"period", "S", "seconds from one window's start to the next (default 2)"},

@@ -467,8 +467,10 @@ GroundTruth read_truth(const Arguments& args, const std::string& truth_path,
   truth_options.fill_gaps = false;
   // The rate fills gaps, which a truth never is, except where it times a box file's frame numbers.
   if (!is_frame_numbered_format(truth_options.format)) truth_options.rate.reset();
-  return GroundTruth(read_measurement_log(truth_path, truth_options).frames,
-                     std::max(log.report.frame_tolerance, kExactTimeTolerance));
+  const MeasurementLog truth = read_measurement_log(truth_path, truth_options);
+  if (!truth.states_orientation && log.states_orientation)  // the log's own note says it else
+    note_positions_only("evaluate", truth_path);
+  return GroundTruth(truth.frames, std::max(log.report.frame_tolerance, kExactTimeTolerance));
 }
 
 /// Every estimator over every seed, each printed as its seeds end: the first table.

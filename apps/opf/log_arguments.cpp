@@ -68,11 +68,16 @@ LogReadOptions log_options_from(const Arguments& args, const std::string& path) 
 MeasurementLog read_whole_log(const std::string& path, const LogReadOptions& options,
                               const std::string& command, bool quiet) {
   MeasurementLog log = read_measurement_log(path, options);
-  if (!quiet)
-    for (const std::string& object : objects_with_w_first_quaternions(log))
-      std::cerr << "opf " << command << ": warning: " << path << ": "
-                << w_first_warning(object, options.format) << "\n";
+  if (quiet) return log;
+  for (const std::string& object : objects_with_w_first_quaternions(log))
+    std::cerr << "opf " << command << ": warning: " << path << ": "
+              << w_first_warning(object, options.format) << "\n";
+  if (!log.states_orientation) note_positions_only(command, path);
   return log;
+}
+
+void note_positions_only(const std::string& command, const std::string& path) {
+  std::cerr << "opf " << command << ": note: " << path << ": " << positions_only_note() << "\n";
 }
 
 }  // namespace opf::cli

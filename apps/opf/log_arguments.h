@@ -19,9 +19,12 @@ std::vector<OptionSpec> log_option_specs();
 LogReadOptions log_options_from(const Arguments& args, const std::string& path);
 
 /// The log at `path` read whole, with a warning on standard error ("opf COMMAND: warning: ...")
-/// for each object whose quaternions look written w first (io/quaternion_order_check.h) unless
-/// `quiet`.
+/// for each object whose quaternions look written w first (io/quaternion_order_check.h), and
+/// note_positions_only's note for a log of positions alone, unless `quiet`.
 MeasurementLog read_whole_log(const std::string& path, const LogReadOptions& options,
                               const std::string& command, bool quiet);
+
+/// "opf COMMAND: note: PATH: " and positions_only_note() on standard error.
+void note_positions_only(const std::string& command, const std::string& path);
 
 }  // namespace opf::cli

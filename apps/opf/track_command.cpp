@@ -56,7 +56,8 @@ void check_written(const std::ostream& os, const std::string& out) {
 std::vector<OptionSpec> specs() {
   std::vector<OptionSpec> s = {
       {"in", "LOG.csv",
-       "measurement log: CSV with columns t,object,x,y,z,qx,qy,qz,qw (required); - reads "
+       "measurement log: CSV with columns t,object,x,y,z,qx,qy,qz,qw, or t,object,x,y,z for "
+       "positions alone (read at the identity orientation, with a note) (required); - reads "
        "standard input as a stream"},
       {"out", "EST.csv",
        "estimates: t,object,x,y,z,qx,qy,qz,qw,trace,mode,... (required); - writes standard output"},
@@ -202,11 +203,13 @@ std::vector<fs::path> track_to_tum(Tracker& tracker, const MeasurementLog& log,
 // A stream: each frame's rows written and flushed as soon as the next frame begins.
 FrameAssemblyReport track_stream(const std::string& in, const std::string& out,
                                  const LogReadOptions& log_options, const EstimateColumns& columns,
-                                 EstimateWriter& writer) {
+                                 EstimateWriter& writer, bool quiet) {
   std::optional<std::ifstream> file;
   if (in != "-") file = open_input_file(in, "measurement log");
   std::istream& input = file ? static_cast<std::istream&>(*file) : std::cin;
-  MeasurementStream frames(input, in == "-" ? "<stdin>" : in, log_options);
+  const std::string source = in == "-" ? "<stdin>" : in;
+  MeasurementStream frames(input, source, log_options);
+  if (!quiet && !frames.states_orientation()) note_positions_only("track", source);
   std::optional<std::ofstream> out_file;
   if (out != "-") {
     out_file.emplace(out, std::ios::binary);
@@ -310,7 +313,7 @@ int track_command(const std::vector<std::string>& raw) {
     written = std::to_string(log.frames.size()) + " frames, " + std::to_string(log.objects.size()) +
               " objects: main estimates written as TUM to " + names;
   } else if (stream) {
-    assembly = track_stream(in, out, log_options, columns, writer);
+    assembly = track_stream(in, out, log_options, columns, writer, quiet);
   } else {
     const MeasurementLog log = read_whole_log(in, log_options, "track", quiet);
     assembly = log.report;

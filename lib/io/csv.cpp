@@ -72,6 +72,12 @@ void refuse_control_bytes(std::string_view line, const std::string& source, std:
   }
 }
 
+std::vector<std::string> concatenated(std::vector<std::string> a,
+                                      const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 std::string join_quoted(const std::vector<std::string>& names) {
   std::string text;
   for (const auto& name : names) text += (text.empty() ? "'" : ", '") + name + "'";
@@ -162,35 +168,57 @@ std::string quote_if_needed(std::string_view text) {
 }
 
 Reader::Reader(std::istream& in, std::string source,
-               std::span<const std::string_view> required_columns)
+               std::span<const std::string_view> required_columns, const ColumnGroup& group)
     : in_(in), source_(std::move(source)) {
   std::vector<std::string> required(required_columns.begin(), required_columns.end());
+  const auto joined = [](const std::vector<std::string>& names) {
+    std::string text;
+    for (const auto& name : names) text += (text.empty() ? "" : ",") + name;
+    return text;
+  };
   if (!read_line(header_)) {
-    std::string names;
-    for (const auto& name : required) names += (names.empty() ? "" : ",") + name;
+    const std::string optional =
+        group.names.empty() || group.required ? "" : " and, all or none, " + joined(group.names);
     throw InputError(source_, 0, "",
-                     "empty file: expected a header line with the columns " + names);
+                     "empty file: expected a header line with the columns " +
+                         joined(group.required ? concatenated(required, group.names) : required) +
+                         optional);
   }
   header_line_ = line_;
 
-  std::vector<std::string> missing;
-  for (const auto& name : required) {
-    const auto count = std::count(header_.begin(), header_.end(), name);
-    if (count == 0) missing.push_back(name);
-    if (count > 1) fail("column '" + name + "' appears more than once in the header");
-  }
+  const auto absent = [&](const std::vector<std::string>& names) {
+    std::vector<std::string> missing;
+    for (const auto& name : names) {
+      const auto count = std::count(header_.begin(), header_.end(), name);
+      if (count == 0) missing.push_back(name);
+      if (count > 1) fail("column '" + name + "' appears more than once in the header");
+    }
+    return missing;
+  };
+  const std::vector<std::string> required_missing = absent(required);
+  const std::vector<std::string> group_missing = absent(group.names);
+  const bool partial_group = !group_missing.empty() && group_missing.size() < group.names.size();
+  const std::vector<std::string> missing = partial_group || group.required
+                                               ? concatenated(required_missing, group_missing)
+                                               : required_missing;
   if (!missing.empty()) {
     // A log without a header has numbers where the names should be: say so.
-    const bool none_found = missing.size() == required.size();
+    const bool none_found =
+        required_missing.size() == required.size() && group_missing.size() == group.names.size();
     // A header of one field holding ';' or a tab was written with another delimiter: say which.
     std::string hint = none_found ? "; is the header line missing?" : "";
     if (header_.size() == 1 && header_[0].find(';') != std::string::npos)
       hint = "; the header is separated by ';': columns must be separated by commas";
     else if (header_.size() == 1 && header_[0].find('\t') != std::string::npos)
       hint = "; the header is separated by tabs: columns must be separated by commas";
+    if (partial_group) hint += "; " + joined(group.names) + " come together: all of them or none";
     fail("missing required column" + std::string(missing.size() > 1 ? "s " : " ") +
          join_quoted(missing) + " (the header has " + join_quoted(header_) + ")" + hint);
   }
+}
+
+bool Reader::has_column(std::string_view name) const {
+  return std::find(header_.begin(), header_.end(), name) != header_.end();
 }
 
 Reader::Reader(std::istream& in, std::string source, Headerless format)

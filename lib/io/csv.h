@@ -40,14 +40,22 @@ std::string quote_if_needed(std::string_view text);
 /// an allocation of the whole file.
 inline constexpr std::size_t kMaxLineBytes = std::size_t{1} << 20;
 
+/// Columns a file has all of or none of (a quaternion's four, which a log of positions leaves
+/// out); with `required`, all of them.
+struct ColumnGroup {
+  std::vector<std::string> names;
+  bool required = false;
+};
+
 /// Reads a CSV stream row by row against its header (the first non-blank line), keeping the line
 /// numbers for error messages.
 class Reader {
  public:
-  /// Reads the header and checks it has every one of `required_columns` (other columns are
-  /// allowed). Throws InputError when the input has no non-blank line, when required columns are
-  /// missing (listing them all) or when one appears more than once.
-  Reader(std::istream& in, std::string source, std::span<const std::string_view> required_columns);
+  /// Reads the header and checks it has every one of `required_columns` and all or none of
+  /// `group`'s (other columns are allowed). Throws InputError when the input has no non-blank
+  /// line, when columns are missing (listing them all) or when one appears more than once.
+  Reader(std::istream& in, std::string source, std::span<const std::string_view> required_columns,
+         const ColumnGroup& group = {});
 
   /// A file with no header line: `columns` names its first fields, in order. Whitespace-separated
   /// with '#' comment lines (the TUM trajectory format), or comma-separated with further fields
@@ -64,6 +72,8 @@ class Reader {
 
   const std::string& source() const { return source_; }
   const std::vector<std::string>& header() const { return header_; }
+  /// Whether the header has column `name`.
+  bool has_column(std::string_view name) const;
 
   /// Header index of the column `name`; throws std::out_of_range when the header lacks it (pass it
   /// as a required column to get an InputError instead).

@@ -19,6 +19,8 @@ namespace opf {
 namespace {
 
 constexpr std::size_t kPoseFields = 7;  // x, y, z, qx, qy, qz, qw: kLogColumns[2..8]
+constexpr std::size_t kPositionFields = 3;
+constexpr std::size_t kFirstQuaternionColumn = 5;  // qx in kLogColumns
 constexpr double kQuaternionNormTolerance = 0.01;
 
 // The file's names of t, object, x, y, z, qx, qy, qz, qw; the object's empty when the log has no
@@ -63,13 +65,26 @@ csv::Reader open_reader(std::istream& in, const std::string& source, const LogRe
     return csv::Reader(
         in, source,
         csv::Reader::Headerless{{kEurocColumns.begin(), kEurocColumns.end()}, false, true});
+  // A log of positions leaves out all four of the quaternion's columns, unless --columns names one.
   std::vector<std::string_view> required;
-  for (const std::string& name : names)
-    if (!name.empty()) required.push_back(name);
-  return csv::Reader(in, source, required);
+  for (std::size_t i = 0; i < kFirstQuaternionColumn; ++i)
+    if (!names[i].empty()) required.push_back(names[i]);
+  csv::ColumnGroup quaternion;
+  quaternion.names.assign(names.begin() + kFirstQuaternionColumn, names.end());
+  const auto first = kLogColumns.begin() + kFirstQuaternionColumn;
+  quaternion.required = std::any_of(options.columns.begin(), options.columns.end(), [&](auto& c) {
+    return std::find(first, kLogColumns.end(), c.first) != kLogColumns.end();
+  });
+  return csv::Reader(in, source, required, quaternion);
 }
 
 }  // namespace
+
+std::string positions_only_note() {
+  return "it states positions only (no qx, qy, qz, qw columns): every detection's orientation is "
+         "read as the identity, so the estimated orientations and rotation errors say nothing "
+         "about the objects";
+}
 
 LogRowReader::LogRowReader(std::istream& in, const std::string& source,
                            const LogReadOptions& options)
@@ -96,6 +111,10 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
     throw InputError(source, reader_.line(), object_column,
                      "the log has an object column, so every row names its object: drop the "
                      "object's name (--object) or the column");
+  if (options.format == LogFormat::kCsv && !reader_.has_column(names_[kFirstQuaternionColumn])) {
+    states_orientation_ = false;
+    for (std::size_t i = kFirstQuaternionColumn; i < names_.size(); ++i) names_[i].clear();
+  }
   for (std::size_t i = 0; i < names_.size(); ++i)
     if (!names_[i].empty()) column_[i] = reader_.column(names_[i]);
   const auto optional_column = [&](std::string_view name) -> std::optional<std::size_t> {
@@ -204,20 +223,24 @@ bool LogRowReader::next(LogRow& row) {
   row.radius = optional_length(radius_column_, "a radius", std::numeric_limits<double>::max());
   row.box = read_box();
 
+  const std::size_t fields = states_orientation_ ? kPoseFields : kPositionFields;
   std::size_t empty_fields = 0;
-  for (std::size_t i = 0; i < kPoseFields; ++i)
+  for (std::size_t i = 0; i < fields; ++i)
     if (reader_.field(column_[2 + i]).empty()) ++empty_fields;
-  if (empty_fields == kPoseFields) return true;  // explicitly unobserved
+  if (empty_fields == fields) return true;  // explicitly unobserved
   if (empty_fields > 0) {
-    for (std::size_t i = 0; i < kPoseFields; ++i)
+    for (std::size_t i = 0; i < fields; ++i)
       if (reader_.field(column_[2 + i]).empty())
-        reader_.fail(column_[2 + i],
-                     "empty while other pose fields are set; leave all seven of x,y,z,qx,qy,qz,qw "
-                     "empty to mark the object unobserved");
+        reader_.fail(column_[2 + i], states_orientation_
+                                         ? "empty while other pose fields are set; leave all "
+                                           "seven of x,y,z,qx,qy,qz,qw empty to mark the object "
+                                           "unobserved"
+                                         : "empty while other position fields are set; leave all "
+                                           "three of x,y,z empty to mark the object unobserved");
   }
 
-  std::array<double, kPoseFields> pose{};
-  for (std::size_t i = 0; i < kPoseFields; ++i) pose[i] = reader_.number(column_[2 + i]);
+  std::array<double, kPoseFields> pose{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0};  // identity unless read
+  for (std::size_t i = 0; i < fields; ++i) pose[i] = reader_.number(column_[2 + i]);
   const Eigen::Vector3d translation = Eigen::Vector3d(pose[0], pose[1], pose[2]) * metres_per_unit_;
   Eigen::Quaterniond orientation(pose[6], pose[3], pose[4], pose[5]);  // Eigen takes w first
   const double norm = orientation.norm();

@@ -21,7 +21,7 @@ namespace opf {
 struct LogRow {
   double t = 0.0;  ///< seconds
   std::string object;
-  /// Empty when all seven pose fields are: the object is unobserved at t.
+  /// Empty when all its pose fields are: the object is unobserved at t.
   std::optional<mrpt::poses::CPose3D> pose;
   /// m: the extra noise the detector states for the detection (column kExtraNoiseColumn, scaled
   /// by the length unit; empty: 0), Detection::extra_noise.
@@ -35,6 +35,10 @@ struct LogRow {
   std::size_t line = 0;  ///< 1-based line in the file, for error messages
 };
 
+/// What a program says of a log of positions alone (LogRowReader::states_orientation): one
+/// sentence, without a trailing full stop.
+std::string positions_only_note();
+
 class LogRowReader {
  public:
   /// Reads the header (a TUM file has none); throws InputError when a (mapped) column is missing.
@@ -47,6 +51,9 @@ class LogRowReader {
   bool next(LogRow& row);
 
   const std::string& source() const { return reader_.source(); }
+  /// False for a CSV log of positions alone (no qx, qy, qz, qw column): every row's orientation
+  /// is the identity, as a MOTChallenge box's is.
+  bool states_orientation() const { return states_orientation_; }
 
  private:
   /// The current row of a MOTChallenge file into `row`; false for a box gt.txt flags as ignored.
@@ -68,6 +75,7 @@ class LogRowReader {
   Eigen::Vector3d read_box() const;
   double seconds_per_unit_ = 1.0;
   double metres_per_unit_ = 1.0;
+  bool states_orientation_ = true;
 };
 
 }  // namespace opf

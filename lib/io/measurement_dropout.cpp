@@ -13,8 +13,8 @@ namespace opf {
 
 namespace {
 
-constexpr std::array<std::string_view, 9> kColumns = {"t",  "object", "x",  "y", "z",
-                                                      "qx", "qy",     "qz", "qw"};
+constexpr std::array<std::string_view, 5> kRequiredColumns = {"t", "object", "x", "y", "z"};
+constexpr std::array<std::string_view, 4> kQuaternionColumns = {"qx", "qy", "qz", "qw"};
 
 void write_fields(std::ostream& out, const std::vector<std::string>& fields) {
   for (std::size_t i = 0; i < fields.size(); ++i)
@@ -48,12 +48,16 @@ DropoutCounts apply_dropout(std::istream& in, const std::string& source, std::os
                             const std::vector<std::string>& objects,
                             const DropoutWindows& windows) {
   check_dropout_windows(windows);
-  csv::Reader reader(in, source, kColumns);
+  csv::Reader reader(in, source, kRequiredColumns);
   const std::size_t t_column = reader.column("t");
   const std::size_t object_column = reader.column("object");
-  std::array<std::size_t, 7> pose_columns{};
-  for (std::size_t i = 0; i < pose_columns.size(); ++i)
-    pose_columns[i] = reader.column(kColumns[2 + i]);
+  // The position's, and the quaternion's where the log has them (a log of positions has none).
+  std::vector<std::size_t> pose_columns;
+  for (const std::string_view name : {"x", "y", "z"}) pose_columns.push_back(reader.column(name));
+  const std::vector<std::string>& header = reader.header();
+  for (const std::string_view name : kQuaternionColumns)
+    if (std::find(header.begin(), header.end(), name) != header.end())
+      pose_columns.push_back(reader.column(name));
 
   write_fields(out, reader.header());
   std::vector<bool> seen(objects.size(), false);

@@ -47,6 +47,7 @@ MeasurementLog parse_measurement_log(std::istream& in, const std::string& source
   assembler.finish();
   collect();
   log.report = assembler.report();
+  log.states_orientation = reader.states_orientation();
   return log;
 }
 

@@ -24,6 +24,9 @@ struct MeasurementLog {
   /// Every detected object once, in order of first detection (by time, then row order).
   std::vector<std::string> objects;
   FrameAssemblyReport report;
+  /// False for a log of positions alone: every detection's orientation is the identity
+  /// (LogRowReader::states_orientation).
+  bool states_orientation = true;
 };
 
 /// Reads the log at `path`. Throws InputError naming the file, line and column of the first
@@ -49,6 +52,8 @@ class MeasurementStream {
   std::optional<Frame> next();
 
   const FrameAssemblyReport& report() const { return assembler_.report(); }
+  /// As MeasurementLog::states_orientation.
+  bool states_orientation() const { return rows_.states_orientation(); }
 
  private:
   LogRowReader rows_;

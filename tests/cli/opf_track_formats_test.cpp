@@ -4,6 +4,7 @@
 
 #include "cli/opf_program.h"
 #include "opf/io/estimate_csv.h"
+#include "opf/io/log_row_reader.h"
 #include "opf/io/measurement_log.h"
 
 #include "opf/core/pose_conversion.h"
@@ -123,6 +124,49 @@ TEST_F(OpfProgram, AnAslCsvTracksWithNoOptionAsItsTumTwin) {
             0)
       << err();
   EXPECT_NE(read(dir_ / "scores.csv").find("cvkf"), std::string::npos);
+}
+
+// A copy of the CSV log `from` at `to` with each row's t,object,x,y,z alone.
+void write_positions_only(const std::string& from, const fs::path& to) {
+  std::ifstream in(from);
+  std::ofstream out(to);
+  for (std::string line; std::getline(in, line);) {
+    std::size_t end = 0;
+    for (int field = 0; field < 5; ++field) end = line.find(',', end) + 1;
+    out << line.substr(0, end - 1) << "\n";
+  }
+}
+
+// A detector of positions alone: its log tracks at the identity orientation, each position as
+// from the whole pose (cvkf's translation filter never reads the orientation), with a note that
+// the orientations say nothing; from a stream the same, and of a truth of positions in evaluate.
+TEST_F(OpfProgram, ALogOfPositionsAloneTracksAtTheIdentityOrientationWithANote) {
+  const fs::path positions = dir_ / "positions.csv", truth = dir_ / "truth_positions.csv";
+  write_positions_only(kExampleLog, positions);
+  write_positions_only(std::string(OPF_SOURCE_DIR) + "/experiments/data/example_truth.csv", truth);
+  const std::string note = ": note: " + positions.string() + ": " + positions_only_note() + "\n";
+  const std::string full = (dir_ / "full.csv").string(), est = (dir_ / "est.csv").string();
+  const std::string track = "track --estimator cvkf --in ";
+  ASSERT_EQ(run(track + kExampleLog + " --out " + full), 0) << err();
+  ASSERT_EQ(run(track + positions.string() + " --out " + est), 0) << err();
+  EXPECT_EQ(err(), "opf track" + note);
+  const std::vector<EstimateRecord> a = read_estimate_csv(full), b = read_estimate_csv(est);
+  ASSERT_EQ(b.size(), 360u);  // 2 objects, 180 frames
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(translation_of(b[i].pose), translation_of(a[i].pose)) << "row " << i;
+    EXPECT_EQ(orientation_of(b[i].pose).coeffs(), Eigen::Quaterniond::Identity().coeffs())
+        << "row " << i;
+  }
+  ASSERT_EQ(run(track + positions.string() + " --stream --out " + est), 0) << err();
+  EXPECT_EQ(err(), "opf track" + note);
+  ASSERT_EQ(run(track + positions.string() + " --quiet --out " + est), 0) << err();
+  EXPECT_EQ(err(), "");
+  const std::string evaluate = "evaluate --estimators cvkf --seeds 1 --in ";
+  ASSERT_EQ(run(evaluate + kExampleLog + " --truth " + truth.string()), 0) << err();
+  EXPECT_EQ(err(), "opf evaluate: note: " + truth.string() + ": " + positions_only_note() + "\n");
+  ASSERT_EQ(run(evaluate + positions.string() + " --truth " + truth.string()), 0) << err();
+  EXPECT_EQ(err(), "opf evaluate" + note);  // the log's note says it of both
 }
 
 TEST_F(OpfProgram, TumOutputIsOneFilePerObjectAndNeedsTheWholeLog) {

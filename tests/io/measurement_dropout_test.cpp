@@ -91,6 +91,19 @@ TEST(MeasurementDropout, BlanksExactlyTheChosenRowsAndCopiesTheRest) {
   EXPECT_EQ(log.frames[4].detections.size(), 1u);
 }
 
+// A log of positions alone: its three fields blanked, and it stays one.
+TEST(MeasurementDropout, BlanksALogOfPositionsAlone) {
+  std::istringstream in("t,object,x,y,z\n0.9,box,1,2,3\n1.0,box,1.5,2,3\n1.3,box,1.7,2,3\n");
+  std::ostringstream out;
+  EXPECT_EQ(apply_dropout(in, "log.csv", out, {"box"}, {1.0, 2.0, 0.3}).blanked, 1u);
+  EXPECT_EQ(out.str(), "t,object,x,y,z\n0.9,box,1,2,3\n1.0,box,,,\n1.3,box,1.7,2,3\n");
+  std::istringstream written(out.str());
+  const MeasurementLog log = parse_measurement_log(written, "out.csv");
+  EXPECT_FALSE(log.states_orientation);
+  ASSERT_EQ(log.frames.size(), 3u);
+  EXPECT_TRUE(log.frames[1].detections.empty());
+}
+
 TEST(MeasurementDropout, ErrorsNameTheLog) {
   std::istringstream in(kLog);
   std::ostringstream out;

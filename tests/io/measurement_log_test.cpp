@@ -71,6 +71,59 @@ TEST(MeasurementLog, ReadsPoseAsTranslationAndXyzwQuaternion) {
   EXPECT_NEAR(pose.roll(), 0.0, 1e-9);
 }
 
+// A detector of positions alone: no quaternion column, every orientation the identity (as a
+// MOTChallenge box's), an object unobserved where its three fields are empty.
+TEST(MeasurementLog, ReadsALogOfPositionsAloneWithTheIdentityOrientation) {
+  const MeasurementLog log = parse(
+      "t,object,x,y,z,radius\n0,ball,0.1,-0.2,0.3,0.02\n0,mug,1,2,3,\n0.1,ball,,,,\n"
+      "0.1,mug,1.5,2,3,\n");
+  EXPECT_FALSE(log.states_orientation);
+  ASSERT_EQ(log.frames.size(), 2u);
+  ASSERT_EQ(log.frames[0].detections.size(), 2u);
+  const Detection& ball = log.frames[0].detections[0];
+  EXPECT_EQ(ball.pose.x(), 0.1);
+  EXPECT_EQ(ball.pose.y(), -0.2);
+  EXPECT_EQ(ball.pose.z(), 0.3);
+  EXPECT_EQ(ball.radius, 0.02);
+  for (const Frame& frame : log.frames)
+    for (const Detection& detection : frame.detections)
+      EXPECT_EQ(orientation_of(detection.pose).coeffs(), Eigen::Quaterniond::Identity().coeffs());
+  EXPECT_EQ(log.frames[1].find("ball"), nullptr);
+  EXPECT_EQ(log.frames[1].find("mug")->pose.x(), 1.5);
+  EXPECT_TRUE(parse(std::string(kHeader) + "0,ball,0,0,0,0,0,0,1\n").states_orientation);
+
+  std::istringstream in("t,object,x,y,z\n0,ball,0,0,0\n");
+  EXPECT_FALSE(MeasurementStream(in, "log.csv").states_orientation());
+}
+
+TEST(MeasurementLogErrors, APartlyEmptyPositionInALogOfPositions) {
+  const InputError e = parse_error("t,object,x,y,z\n0,ball,1,,3\n");
+  EXPECT_STREQ(e.what(),
+               "log.csv:2: column 'y': empty while other position fields are set; leave all "
+               "three of x,y,z empty to mark the object unobserved");
+}
+
+// Some of the quaternion's columns, or --columns naming them in a file that has none: a mistake,
+// not a log of positions.
+TEST(MeasurementLogErrors, AnOrientationWantsAllFourColumns) {
+  InputError e = parse_error("t,object,x,y,z,qw\n0,ball,1,2,3,1\n");
+  EXPECT_STREQ(e.what(),
+               "log.csv:1: missing required columns 'qx', 'qy', 'qz' (the header has 't', "
+               "'object', 'x', 'y', 'z', 'qw'); qx,qy,qz,qw come together: all of them or none");
+  LogReadOptions renamed;
+  renamed.columns = {{"qw", "rw"}};
+  std::istringstream in("t,object,x,y,z\n0,ball,1,2,3\n");
+  try {
+    parse_measurement_log(in, "log.csv", renamed);
+    ADD_FAILURE() << "a renamed quaternion column that the file lacks was read as positions";
+  } catch (const InputError& error) {
+    EXPECT_TRUE(error.message().starts_with("missing required columns 'qx', 'qy', 'qz', 'rw' ("))
+        << error.what();
+  }
+  e = parse_error("t,object,x,y,z,qx,qy,qz,qw,qx\n0,ball,1,2,3,0,0,0,1,0\n");
+  EXPECT_STREQ(e.what(), "log.csv:1: column 'qx' appears more than once in the header");
+}
+
 TEST(MeasurementLog, AcceptsAnyColumnOrderAndIgnoresExtraColumns) {
   const MeasurementLog log = parse(
       "qw,source,object,t,note,z,y,x,qx,qy,qz\n"
@@ -274,8 +327,9 @@ TEST(MeasurementLogErrors, EmptyFileOrNoHeader) {
     const InputError e = parse_error(text);
     EXPECT_EQ(e.file(), "log.csv");
     EXPECT_EQ(e.line(), 0u);
-    EXPECT_TRUE(contains(e.message(), "empty")) << e.what();
-    EXPECT_TRUE(contains(e.message(), "t,object,x,y,z,qx,qy,qz,qw")) << e.what();
+    EXPECT_EQ(e.message(),
+              "empty file: expected a header line with the columns t,object,x,y,z and, all or "
+              "none, qx,qy,qz,qw");
   }
   const InputError e = parse_error("0,ball,1,2,3,0,0,0,1\n");
   EXPECT_EQ(e.line(), 1u);
@@ -314,7 +368,9 @@ TEST(MeasurementLog, ReadsALongLogInFull) {
 TEST(MeasurementLogErrors, MissingColumnsAreListed) {
   const InputError e = parse_error("\n\nt,object,x,y,z,qx,qy\n0,ball,0,0,0,0,0\n");
   EXPECT_EQ(e.line(), 3u);
-  EXPECT_TRUE(e.message().starts_with("missing required columns 'qz', 'qw' (")) << e.what();
+  EXPECT_EQ(e.message(),
+            "missing required columns 'qz', 'qw' (the header has 't', 'object', 'x', 'y', 'z', "
+            "'qx', 'qy'); qx,qy,qz,qw come together: all of them or none");
 }
 
 TEST(MeasurementLogErrors, WrongNumberOfFields) {

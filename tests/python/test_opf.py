@@ -85,6 +85,22 @@ def test_a_detection_stating_extra_noise_moves_the_estimate_less():
     assert abs(x_after_jump(0.1)) < 0.1 * unstated
 
 
+def test_a_position_alone_steps_as_the_pose_at_the_identity_orientation():
+    # [x, y, z], as a log of positions reads: the OPF's estimates, seeded, through a gap, are
+    # those of the same positions given with the identity quaternion, number for number.
+    def estimates(pose_of):
+        tracker = opf.Tracker("opf", seed=4, particles=PARTICLES)
+        out = []
+        for k in range(20):
+            estimate = tracker.step(k / 30.0, {"cup": None if 8 <= k < 12 else pose_of(k)})["cup"]
+            out.append((estimate.mode, tuple(estimate.position), tuple(estimate.quaternion)))
+        return out
+
+    positions = estimates(lambda k: [0.01 * k, 0.1, 0.5])
+    assert positions == estimates(lambda k: [0.01 * k, 0.1, 0.5, 0.0, 0.0, 0.0, 1.0])
+    assert [mode for mode, _, _ in positions].count("measured") == 16
+
+
 def test_a_tracker_follows_what_it_is_shown_and_extrapolates_through_a_gap():
     tracker = opf.Tracker("opf", seed=3, particles=PARTICLES)
     dt = 1.0 / 30.0
@@ -191,20 +207,24 @@ CUP = [0.1, 0.2, 0.3, 0.0, 0.0, 0.0, 1.0]
      "object 'cup', field 'qw': expected a finite number, got nan"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 0], "object 'cup', fields 'qx,qy,qz,qw': expected a unit "
                                         "quaternion (norm within 0.01 of 1), got norm 0"),
+    (NEXT, [0.1, 0.2],
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (3 for a position alone, 8 "
+     "with extra_noise, 9 with radius, 12 with box_x, box_y, box_z), got 2"),
+    (NEXT, [0.1, math.nan, 0.3], "object 'cup', field 'y': expected a finite number, got nan"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 1],
-     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
-     "radius, 12 with box_x, box_y, box_z), got 6"),
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (3 for a position alone, 8 "
+     "with extra_noise, 9 with radius, 12 with box_x, box_y, box_z), got 6"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, -0.05],
      "object 'cup', field 'radius': expected a radius >= 0, got -0.05"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 1.0],
-     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
-     "radius, 12 with box_x, box_y, box_z), got 10"),
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (3 for a position alone, 8 "
+     "with extra_noise, 9 with radius, 12 with box_x, box_y, box_z), got 10"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.1],
-     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
-     "radius, 12 with box_x, box_y, box_z), got 11"),
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (3 for a position alone, 8 "
+     "with extra_noise, 9 with radius, 12 with box_x, box_y, box_z), got 11"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.1, 0.1, 0.1],
-     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (8 with extra_noise, 9 with "
-     "radius, 12 with box_x, box_y, box_z), got 13"),
+     "object 'cup': expected 7 pose fields [x, y, z, qx, qy, qz, qw] (3 for a position alone, 8 "
+     "with extra_noise, 9 with radius, 12 with box_x, box_y, box_z), got 13"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.0, 0.1],
      "object 'cup', field 'box_y': expected an extent > 0, got 0"),
     (NEXT, [0.1, 0.2, 0.3, 0, 0, 0, 1, 0.0, 0.05, 0.1, 0.1, math.inf],
@@ -599,3 +619,26 @@ def test_track_log_warns_where_opf_track_notes_a_log_that_states_no_sizes(tmp_pa
         assert taken(opf.track_log(sized, **options)) > 0
         with pytest.raises(UserWarning, match=re.escape(UNSIZED_NOTE)):
             opf.track_log(EXAMPLE_LOG, **options)
+
+
+def test_track_log_warns_where_opf_track_notes_a_log_of_positions_alone(tmp_path):
+    # A log without qx, qy, qz, qw reads every orientation as the identity: opf track's note, as
+    # one UserWarning naming the file. cvkf's positions are those of the whole log's.
+    positions = tmp_path / "positions.csv"
+    with open(EXAMPLE_LOG) as f, open(positions, "w") as out:
+        for line in f:
+            out.write(",".join(line.rstrip("\n").split(",")[:5]) + "\n")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        columns = opf.track_log(positions, estimator="cvkf", dataframe=False)
+    note = (f"{positions}: it states positions only (no qx, qy, qz, qw columns): every "
+            "detection's orientation is read as the identity, so the estimated orientations and "
+            "rotation errors say nothing about the objects")
+    assert [(w.category, str(w.message), w.filename) for w in caught] == \
+        [(UserWarning, note, __file__)]
+    whole = opf.track_log(EXAMPLE_LOG, estimator="cvkf", dataframe=False)
+    assert len(columns["t"]) == len(whole["t"]) == 360
+    for name in ("t", "x", "y", "z"):
+        assert list(columns[name]) == list(whole[name]), name
+    assert {tuple(q) for q in zip(*(columns[c] for c in ("qx", "qy", "qz", "qw")))} == \
+        {(0.0, 0.0, 0.0, 1.0)}
