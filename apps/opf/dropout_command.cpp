@@ -30,8 +30,8 @@ std::vector<OptionSpec> specs() {
 constexpr const char* kSummary =
     "Copies a measurement log and removes the detections of the chosen objects whose t lies in\n"
     "a window [start + k period, start + k period + length), k = 0, 1, 2, ... (times within\n"
-    "1e-9 s of an edge count as on it). A removed detection keeps its row with the seven pose\n"
-    "fields empty, so that its frame stays in the log: the object is unobserved there. Every\n"
+    "1e-9 s of an edge count as on it). A removed detection keeps its row with its pose fields\n"
+    "empty, so that its frame stays in the log: the object is unobserved there. Every\n"
     "other row, and the row order, are copied unchanged, so the input log is the ground truth\n"
     "of the removed frames (opf evaluate --in OUT --truth IN). Deterministic.";
 

@@ -34,13 +34,13 @@ struct DropoutCounts {
   std::size_t blanked = 0;  ///< rows whose pose was removed (rows already without one not counted)
 };
 
-/// Copies the measurement log `in` (named `source` in errors) to `out`, emptying the seven pose
-/// fields x,y,z,qx,qy,qz,qw of every row of `objects` (of every object when empty) whose t lies in
-/// a window. The row itself stays, so its frame stays in the log even when the object is the only
-/// one there; the object is unobserved at that t either way (measurement_log.h). Everything else,
-/// the header, the row order and any further columns, is copied field by field. Throws InputError
-/// for a malformed log or an object of `objects` with no row in it, std::invalid_argument for bad
-/// windows.
+/// Copies the measurement log `in` (named `source` in errors) to `out`, emptying the pose fields
+/// x,y,z,qx,qy,qz,qw (x,y,z in a log of positions) of every row of `objects` (of every object when
+/// empty) whose t lies in a window. The row itself stays, so its frame stays in the log even when
+/// the object is the only one there; the object is unobserved at that t either way
+/// (measurement_log.h). Everything else, the header, the row order and any further columns, is
+/// copied field by field. Throws InputError for a malformed log or an object of `objects` with no
+/// row in it, std::invalid_argument for bad windows.
 DropoutCounts apply_dropout(std::istream& in, const std::string& source, std::ostream& out,
                             const std::vector<std::string>& objects, const DropoutWindows& windows);
 
