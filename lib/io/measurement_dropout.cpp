@@ -54,10 +54,8 @@ DropoutCounts apply_dropout(std::istream& in, const std::string& source, std::os
   // The position's, and the quaternion's where the log has them (a log of positions has none).
   std::vector<std::size_t> pose_columns;
   for (const std::string_view name : {"x", "y", "z"}) pose_columns.push_back(reader.column(name));
-  const std::vector<std::string>& header = reader.header();
   for (const std::string_view name : kQuaternionColumns)
-    if (std::find(header.begin(), header.end(), name) != header.end())
-      pose_columns.push_back(reader.column(name));
+    if (reader.has_column(name)) pose_columns.push_back(reader.column(name));
 
   write_fields(out, reader.header());
   std::vector<bool> seen(objects.size(), false);
