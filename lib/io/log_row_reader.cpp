@@ -118,10 +118,7 @@ LogRowReader::LogRowReader(std::istream& in, const std::string& source,
   for (std::size_t i = 0; i < names_.size(); ++i)
     if (!names_[i].empty()) column_[i] = reader_.column(names_[i]);
   const auto optional_column = [&](std::string_view name) -> std::optional<std::size_t> {
-    const auto& header = reader_.header();
-    if (options.format != LogFormat::kCsv ||
-        std::find(header.begin(), header.end(), name) == header.end())
-      return std::nullopt;
+    if (options.format != LogFormat::kCsv || !reader_.has_column(name)) return std::nullopt;
     return reader_.column(name);
   };
   extra_noise_column_ = optional_column(kExtraNoiseColumn);

@@ -14,7 +14,6 @@ namespace opf {
 namespace {
 
 constexpr std::array<std::string_view, 5> kRequiredColumns = {"t", "object", "x", "y", "z"};
-constexpr std::array<std::string_view, 4> kQuaternionColumns = {"qx", "qy", "qz", "qw"};
 
 void write_fields(std::ostream& out, const std::vector<std::string>& fields) {
   for (std::size_t i = 0; i < fields.size(); ++i)
@@ -48,14 +47,16 @@ DropoutCounts apply_dropout(std::istream& in, const std::string& source, std::os
                             const std::vector<std::string>& objects,
                             const DropoutWindows& windows) {
   check_dropout_windows(windows);
-  csv::Reader reader(in, source, kRequiredColumns);
+  // The quaternion's columns all or none, as the tracker reads a log (a log of positions: none).
+  const csv::ColumnGroup quaternion{{"qx", "qy", "qz", "qw"}};
+  csv::Reader reader(in, source, kRequiredColumns, quaternion);
   const std::size_t t_column = reader.column("t");
   const std::size_t object_column = reader.column("object");
-  // The position's, and the quaternion's where the log has them (a log of positions has none).
   std::vector<std::size_t> pose_columns;
-  for (const std::string_view name : {"x", "y", "z"}) pose_columns.push_back(reader.column(name));
-  for (const std::string_view name : kQuaternionColumns)
-    if (reader.has_column(name)) pose_columns.push_back(reader.column(name));
+  for (std::size_t i = 2; i < kRequiredColumns.size(); ++i)
+    pose_columns.push_back(reader.column(kRequiredColumns[i]));
+  if (reader.has_column(quaternion.names.front()))
+    for (const std::string& name : quaternion.names) pose_columns.push_back(reader.column(name));
 
   write_fields(out, reader.header());
   std::vector<bool> seen(objects.size(), false);

@@ -102,6 +102,16 @@ TEST(MeasurementDropout, BlanksALogOfPositionsAlone) {
   EXPECT_FALSE(log.states_orientation);
   ASSERT_EQ(log.frames.size(), 3u);
   EXPECT_TRUE(log.frames[1].detections.empty());
+  // Some of the quaternion's columns without the others: refused, as the tracker refuses them.
+  std::istringstream partial("t,object,x,y,z,qw\n0.9,box,1,2,3,1\n");
+  try {
+    apply_dropout(partial, "log.csv", out, {"box"}, {1.0, 2.0, 0.3});
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 1u);
+    EXPECT_NE(e.message().find("missing required columns 'qx', 'qy', 'qz'"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(MeasurementDropout, ErrorsNameTheLog) {
